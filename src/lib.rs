@@ -1,0 +1,4 @@
+//! wearlab: sliding contact with friction and wear — the physics, the preset files and the
+//! reports. No terminal code lives here.
+
+pub mod physics;

@@ -1,0 +1,158 @@
+//! Transfer functions of an elastic strip (layer) bonded to a rigid base, shared by the plane and
+//! the spatial problems.
+//!
+//! Plane strain, paper 001 eq. (3.2) with the corrections of `physics/plane.md` section 2
+//! (ch 2X in K12). Everything is evaluated with e = exp(-2X) after dividing the numerator and the
+//! denominator by ch 2X, so no term overflows for any X >= 0, including X = +inf (half-plane).
+
+use crate::physics::quadrature::gauss_legendre;
+
+/// Plane-strain constant kappa = 3 - 4 nu (dimensionless).
+pub fn kappa(nu: f64) -> f64 {
+    3.0 - 4.0 * nu
+}
+
+/// chi = (1 - 2 nu) / (2 (1 - nu)) = (kappa - 1)/(kappa + 1) (dimensionless, 0 at nu = 1/2).
+pub fn chi(nu: f64) -> f64 {
+    (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
+}
+
+/// m = pi E / (2 (1 - nu^2)) [Pa], the modulus of the plane problem (paper 001, after (3.1)).
+pub fn plane_modulus(youngs_modulus: f64, nu: f64) -> f64 {
+    std::f64::consts::PI * youngs_modulus / (2.0 * (1.0 - nu * nu))
+}
+
+/// Beyond this X the strip functions equal their half-plane limits to better than 1e-18.
+const X_HALF_PLANE: f64 = 30.0;
+
+/// The strip transfer functions at one dimensionless wavenumber X = |k| h (all dimensionless).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StripTransfer {
+    /// K1(X): u from q1; -> 1 for the half-plane, ~ 4X/(kappa+1) as X -> 0.
+    pub k1: f64,
+    /// K2(X): v from q2; -> 1 for the half-plane, ~ 4(kappa-1)X/(kappa+1)^2 as X -> 0.
+    pub k2: f64,
+    /// chi K12(X): the coupling of u with q2 and of v with q1; -> chi for the half-plane.
+    /// Written with chi folded in so that it stays finite at nu = 1/2.
+    pub chi_k12: f64,
+    /// chi L12(X) = chi (K12 - 1), the part of the coupling that decays with X.
+    pub chi_l12: f64,
+}
+
+/// D, K1, K2, chi K12 of (3.2) at X = |k| h >= 0 (X = +inf gives the half-plane values).
+pub fn strip_transfer(nu: f64, x: f64) -> StripTransfer {
+    let kap = kappa(nu);
+    let chi = chi(nu);
+    if x > X_HALF_PLANE {
+        return StripTransfer {
+            k1: 1.0,
+            k2: 1.0,
+            chi_k12: chi,
+            chi_l12: 0.0,
+        };
+    }
+    let e = (-2.0 * x).exp();
+    let e2 = e * e;
+    let sech = 2.0 * e / (1.0 + e2); // 1 / ch 2X
+    let th = (1.0 - e2) / (1.0 + e2); // th 2X
+    let x2 = x * x;
+    let d = 2.0 * kap + (4.0 * x2 + 1.0 + kap * kap) * sech; // D / ch 2X
+    StripTransfer {
+        k1: (2.0 * kap * th + 4.0 * x * sech) / d,
+        k2: (2.0 * kap * th - 4.0 * x * sech) / d,
+        chi_k12: (2.0 * kap * chi * (1.0 - sech) - 8.0 * x2 * sech / (kap + 1.0)) / d,
+        chi_l12: -(4.0 * x2 + kap * kap - 1.0) * sech / d,
+    }
+}
+
+/// K2(X)/X (dimensionless), finite as X -> 0 where it tends to 4(kappa-1)/(kappa+1)^2.
+/// Used for the layer compliance (1 - nu) K2/(G k) = (1 - nu) h (K2/X)/G.
+pub fn k2_over_x(nu: f64, x: f64) -> f64 {
+    if x < 1e-6 {
+        let kap = kappa(nu);
+        4.0 * (kap - 1.0) / ((kap + 1.0) * (kap + 1.0))
+    } else {
+        strip_transfer(nu, x).k2 / x
+    }
+}
+
+/// chi c12(nu) = chi * integral_0^inf L12(X) dX (dimensionless, negative), the constant of the
+/// wide-strip kernel (4.1). c12 alone diverges as nu -> 1/2; chi c12 stays finite.
+///
+/// chi L12 decays like X^2 e^{-2X}: composite Gauss–Legendre over [0, 40] in unit panels gives
+/// the integral to about 1e-15.
+pub fn chi_c12(nu: f64) -> f64 {
+    let rule = gauss_legendre(16);
+    (0..40)
+        .map(|panel| {
+            let x0 = panel as f64;
+            rule.integrate(x0, x0 + 1.0, |x| strip_transfer(nu, x).chi_l12)
+        })
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn half_plane_limits() {
+        for nu in [0.0, 0.3, 0.5] {
+            let t = strip_transfer(nu, f64::INFINITY);
+            assert_eq!((t.k1, t.k2, t.chi_k12, t.chi_l12), (1.0, 1.0, chi(nu), 0.0));
+            let t = strip_transfer(nu, 25.0);
+            assert!((t.k1 - 1.0).abs() < 1e-15 && (t.chi_k12 - chi(nu)).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn small_x_limits_give_the_winkler_constants() {
+        // plane.md section 2: K1 ~ 4X/(kappa+1), K2 ~ 4(kappa-1)X/(kappa+1)^2, K12 = O(X^2).
+        let nu: f64 = 0.3;
+        let kap = kappa(nu);
+        let x = 1e-5;
+        let t = strip_transfer(nu, x);
+        assert!((t.k1 / x - 4.0 / (kap + 1.0)).abs() < 1e-8);
+        assert!((t.k2 / x - 4.0 * (kap - 1.0) / ((kap + 1.0) * (kap + 1.0))).abs() < 1e-8);
+        assert!(t.chi_k12.abs() < 1e-8);
+        assert!((k2_over_x(nu, 1e-7) - k2_over_x(nu, 1e-5)).abs() < 1e-8);
+    }
+
+    #[test]
+    fn direct_hyperbolic_form_agrees_at_moderate_x() {
+        // (3.2) written with sh and ch directly, where nothing overflows yet.
+        let nu: f64 = 0.27;
+        let kap = kappa(nu);
+        for x in [0.05, 0.7, 3.0, 9.0] {
+            let d = 2.0 * kap * (2.0 * x).cosh() + 4.0 * x * x + 1.0 + kap * kap;
+            let k1 = (2.0 * kap * (2.0 * x).sinh() + 4.0 * x) / d;
+            let k2 = (2.0 * kap * (2.0 * x).sinh() - 4.0 * x) / d;
+            let k12 = (2.0 * kap * ((2.0 * x).cosh() - 1.0) - 8.0 * x * x / (kap - 1.0)) / d;
+            let t = strip_transfer(nu, x);
+            assert!((t.k1 - k1).abs() < 1e-14);
+            assert!((t.k2 - k2).abs() < 1e-14);
+            assert!((t.chi_k12 - chi(nu) * k12).abs() < 1e-14);
+            assert!((t.chi_l12 - chi(nu) * (k12 - 1.0)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn chi_c12_matches_the_reference_table() {
+        // Values of physics/plane.md section 2 (independent high-precision computation).
+        let table = [
+            (0.0, -0.749076675679),
+            (0.2, -0.680127589496),
+            (0.3, -0.649992028667),
+            (0.4, -0.630273314782),
+            (0.45, -0.628754393011),
+            (0.5, -0.637734487685),
+        ];
+        for (nu, expected) in table {
+            let got = chi_c12(nu);
+            assert!(
+                (got - expected).abs() < 1e-12,
+                "nu={nu}: {got} vs {expected}"
+            );
+        }
+    }
+}

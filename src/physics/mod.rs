@@ -1,0 +1,84 @@
+//! The physics: pure functions of validated parameter structs, SI units throughout.
+
+pub mod elastic;
+pub mod plane;
+pub mod quadrature;
+pub mod roots;
+
+use thiserror::Error;
+
+/// The elastic strip (plane problem) or layer (spatial problem), bonded to a rigid base.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Young's modulus E [Pa], > 0.
+    pub youngs_modulus: f64,
+    /// Poisson's ratio nu, 0 <= nu < 1/2.
+    pub poisson_ratio: f64,
+    /// Thickness h [m], > 0; `f64::INFINITY` is the half-plane (half-space).
+    pub thickness: f64,
+}
+
+impl Material {
+    /// m = pi E / (2 (1 - nu^2)) [Pa].
+    pub fn plane_modulus(&self) -> f64 {
+        elastic::plane_modulus(self.youngs_modulus, self.poisson_ratio)
+    }
+    /// chi = (1 - 2 nu)/(2 (1 - nu)).
+    pub fn chi(&self) -> f64 {
+        elastic::chi(self.poisson_ratio)
+    }
+    /// Shear modulus G = E / (2 (1 + nu)) [Pa].
+    pub fn shear_modulus(&self) -> f64 {
+        self.youngs_modulus / (2.0 * (1.0 + self.poisson_ratio))
+    }
+    /// True for the half-plane / half-space (h = inf).
+    pub fn is_half_space(&self) -> bool {
+        self.thickness.is_infinite()
+    }
+}
+
+/// Coulomb friction with adhesion: q1 = mu q2 + tau0 (paper 001 (3.10), paper 000 (1.1)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Friction {
+    /// Sliding friction coefficient mu (dimensionless), >= 0.
+    pub coefficient: f64,
+    /// Adhesive shear stress tau0 [Pa], >= 0.
+    pub adhesion: f64,
+}
+
+/// Why a solver could not answer. The text is meant for the user.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum SolveError {
+    /// A parameter is outside the range where the model is defined.
+    #[error("invalid input: {0}")]
+    InvalidInput(String),
+    /// The model has no physical solution for these inputs.
+    #[error("{0}")]
+    NoSolution(String),
+}
+
+/// How the points of a sweep are spaced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Spacing {
+    /// Evenly in the logarithm (min > 0).
+    Log,
+    /// Evenly.
+    Linear,
+}
+
+impl Spacing {
+    /// `points` values from `min` to `max`, both included (points >= 2).
+    pub fn points(self, min: f64, max: f64, points: usize) -> Vec<f64> {
+        let n = points.max(2);
+        (0..n)
+            .map(|i| {
+                let t = i as f64 / (n - 1) as f64;
+                match self {
+                    Spacing::Log => (min.ln() + t * (max / min).ln()).exp(),
+                    Spacing::Linear => min + t * (max - min),
+                }
+            })
+            .collect()
+    }
+}

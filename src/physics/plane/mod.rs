@@ -1,0 +1,197 @@
+//! The plane problem (paper 001, Soldatenkov 2007; verified formulas in `physics/plane.md`):
+//! a rigid parabolic punch g(x) = x^2/(2R) slides with Coulomb friction and adhesion over an
+//! elastic strip bonded to a rigid base; the strip wears, W' = -k q2.
+//!
+//! Conventions (plane.md section 1): x along the surface, positive in the punch's direction of
+//! motion, origin at the punch tip; contact zone [-a, b] with b the leading edge; q2 > 0 pressure;
+//! q1 shear on the strip, positive in +x.
+
+pub mod energy;
+pub mod narrow;
+pub mod profile;
+pub mod sweep;
+pub mod validity;
+pub mod wide;
+
+use serde::{Deserialize, Serialize};
+
+use crate::physics::{Friction, Material, SolveError};
+
+/// Which asymptotic model of the strip to solve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Model {
+    /// Wide strip, (a+b)/h -> 0: half-plane kernel plus the thickness correction c12 (section 4).
+    Wide,
+    /// Narrow strip, (a+b)/h -> inf: Winkler foundation (section 5).
+    Narrow,
+}
+
+impl Model {
+    /// Every model, in the order the explorer cycles through them.
+    pub const ALL: [Model; 2] = [Model::Wide, Model::Narrow];
+
+    /// The name used in preset files and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Wide => "wide",
+            Model::Narrow => "narrow",
+        }
+    }
+}
+
+/// The inputs of one plane solve at one load.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlaneInputs {
+    /// The elastic strip.
+    pub material: Material,
+    /// Friction law q1 = mu q2 + tau0.
+    pub friction: Friction,
+    /// Wear coefficient k [1/Pa], >= 0: W' = -k q2, wear depth per unit sliding distance per Pa.
+    pub wear: f64,
+    /// Punch radius of curvature R [m], > 0: g(x) = x^2/(2R).
+    pub radius: f64,
+    /// Normal load per unit length P [N/m], > 0.
+    pub load: f64,
+}
+
+impl PlaneInputs {
+    /// The same inputs at another load.
+    pub fn with_load(&self, load: f64) -> PlaneInputs {
+        PlaneInputs { load, ..*self }
+    }
+
+    /// Checks every field against its allowed range.
+    pub fn validate(&self) -> Result<(), SolveError> {
+        let m = &self.material;
+        let checks = [
+            (
+                m.youngs_modulus > 0.0 && m.youngs_modulus.is_finite(),
+                "Young's modulus E must be a finite number > 0 Pa",
+            ),
+            (
+                (0.0..0.5).contains(&m.poisson_ratio),
+                "Poisson's ratio nu must satisfy 0 <= nu < 0.5",
+            ),
+            (
+                m.thickness > 0.0,
+                "thickness h must be > 0 m (inf for a half-plane)",
+            ),
+            (
+                self.friction.coefficient >= 0.0 && self.friction.coefficient.is_finite(),
+                "friction coefficient mu must be >= 0",
+            ),
+            (
+                self.friction.adhesion >= 0.0 && self.friction.adhesion.is_finite(),
+                "adhesion tau0 must be >= 0 Pa",
+            ),
+            (
+                self.wear >= 0.0 && self.wear.is_finite(),
+                "wear coefficient k must be >= 0 1/Pa",
+            ),
+            (
+                self.radius > 0.0 && self.radius.is_finite(),
+                "punch radius R must be a finite number > 0 m",
+            ),
+            (
+                self.load > 0.0 && self.load.is_finite(),
+                "load P must be a finite number > 0 N/m",
+            ),
+        ];
+        match checks.iter().find(|(ok, _)| !ok) {
+            Some((_, why)) => Err(SolveError::InvalidInput((*why).to_string())),
+            None => Ok(()),
+        }
+    }
+}
+
+/// How q2(x) is evaluated for a solved operating point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum PressureLaw {
+    /// q2 = c (a + x)^{1/2 - theta} (b - x)^{1/2 + theta}, (4.4) with the corrected prefactor.
+    Wide { c: f64, theta: f64 },
+    /// The Winkler solution (5.7) in its stable form, see `narrow::pressure`.
+    Narrow { lambda: f64, beta: f64 },
+}
+
+/// The solution of the plane problem at one load.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlaneSolution {
+    /// The model that produced it.
+    pub model: Model,
+    /// The inputs it solves.
+    pub inputs: PlaneInputs,
+    /// Q2 = integral of q2 [N/m], the total normal contact force.
+    pub normal_force: f64,
+    /// Q1 = mu Q2 + tau0 (a + b) [N/m], the total friction force.
+    pub friction_force: f64,
+    /// T = Q1 + psi [N/m], the tangential force that drives the punch (3.11).
+    pub tangential_force: f64,
+    /// Trailing half-width a [m]: the contact zone is [-a, b].
+    pub a: f64,
+    /// Leading half-width b [m].
+    pub b: f64,
+    /// Exponent shift theta of the wide solution (4.5), in (-1/2, 1/2); > 0 shifts the pressure
+    /// backwards (friction dominates), < 0 forwards (wear dominates). None for the narrow model.
+    pub theta: Option<f64>,
+    /// gamma = pi chi mu / m - k [1/Pa] of (4.3). None for the narrow model.
+    pub gamma: Option<f64>,
+    /// psi = integral of q2 g' [N/m], the deformation component of friction (2.2).
+    pub psi: f64,
+    /// Delta_g = g(b) - g(-a) [m] (3.11).
+    pub delta_g: f64,
+    /// Total friction coefficient mu* (3.13), dimensionless.
+    pub mu_star: f64,
+    pub(crate) law: PressureLaw,
+}
+
+impl PlaneSolution {
+    /// Contact width L = a + b [m].
+    pub fn contact_width(&self) -> f64 {
+        self.a + self.b
+    }
+
+    /// Contact pressure q2(x) [Pa] at x [m] (moving frame); 0 outside [-a, b].
+    pub fn pressure(&self, x: f64) -> f64 {
+        let (a, b) = (self.a, self.b);
+        if !(x > -a && x < b) {
+            return 0.0;
+        }
+        match self.law {
+            PressureLaw::Wide { c, theta } => {
+                c * (a + x).powf(0.5 - theta) * (b - x).powf(0.5 + theta)
+            }
+            PressureLaw::Narrow { lambda, beta } => {
+                narrow::pressure(a + x, a + b, lambda, beta, self.inputs.radius)
+            }
+        }
+    }
+
+    /// Shear stress q1(x) = mu q2 + tau0 [Pa] on the strip, positive in +x; 0 outside [-a, b].
+    pub fn shear(&self, x: f64) -> f64 {
+        if x < -self.a || x > self.b {
+            return 0.0;
+        }
+        self.inputs.friction.coefficient * self.pressure(x) + self.inputs.friction.adhesion
+    }
+
+    /// Wear rate k q2(x): wear depth per unit sliding distance (dimensionless).
+    pub fn wear_rate(&self, x: f64) -> f64 {
+        self.inputs.wear * self.pressure(x)
+    }
+}
+
+/// Solves the plane problem at the inputs' load with the chosen model.
+pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
+    inputs.validate()?;
+    match model {
+        Model::Wide => wide::solve(inputs),
+        Model::Narrow => narrow::solve(inputs),
+    }
+}
+
+/// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, paper 001 (3.13).
+pub(crate) fn total_friction(friction: &Friction, psi: f64, delta_g: f64, load: f64) -> f64 {
+    let mu = friction.coefficient;
+    mu + ((1.0 + mu * mu) * psi + mu * delta_g * friction.adhesion) / load
+}

@@ -1,0 +1,60 @@
+//! Profiles along the contact: pressure, shear, wear rate and wear per pass.
+
+use serde::Serialize;
+
+use crate::physics::plane::PlaneSolution;
+use crate::physics::quadrature::{gauss_legendre, tanh_sinh};
+
+/// Values at evenly spaced points of [-a, b], both ends included.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Profile {
+    /// x [m] (moving frame, punch tip at 0, b leading).
+    pub x: Vec<f64>,
+    /// q2(x) [Pa].
+    pub pressure: Vec<f64>,
+    /// q1(x) = mu q2 + tau0 [Pa], positive in +x.
+    pub shear: Vec<f64>,
+    /// k q2(x): wear depth per unit sliding distance (dimensionless).
+    pub wear_rate: Vec<f64>,
+    /// k * integral from x to b of q2 [m]: the wear a strip point collects in one pass.
+    pub wear: Vec<f64>,
+}
+
+/// The profile at `points` >= 2 points.
+pub fn profile(sol: &PlaneSolution, points: usize) -> Profile {
+    let points = points.max(2);
+    let (lo, hi) = (-sol.a, sol.b);
+    let step = (hi - lo) / (points - 1) as f64;
+    let x: Vec<f64> = (0..points)
+        .map(|i| {
+            if i == points - 1 {
+                hi
+            } else {
+                lo + step * i as f64
+            }
+        })
+        .collect();
+    let pressure: Vec<f64> = x.iter().map(|&x| sol.pressure(x)).collect();
+    let k = sol.inputs.wear;
+    // Wear per pass, accumulated from the leading edge; the end segments carry the edge
+    // singularities of q2 and get the tanh–sinh rule.
+    let interior = gauss_legendre(8);
+    let edge = tanh_sinh(1.0 / 8.0);
+    let q2 = |s: f64| sol.pressure(s);
+    let mut wear = vec![0.0; points];
+    for i in (0..points - 1).rev() {
+        let rule = if i == 0 || i == points - 2 {
+            &edge
+        } else {
+            &interior
+        };
+        wear[i] = wear[i + 1] + k * rule.integrate(x[i], x[i + 1], q2);
+    }
+    Profile {
+        shear: x.iter().map(|&x| sol.shear(x)).collect(),
+        wear_rate: pressure.iter().map(|q| k * q).collect(),
+        x,
+        pressure,
+        wear,
+    }
+}

@@ -1,0 +1,56 @@
+//! Bracketing and Brent root finding (the `roots` crate) with a relative tolerance.
+
+use roots::{Convergency, find_root_brent};
+
+struct Relative {
+    rtol: f64,
+    max_iter: usize,
+}
+
+impl Convergency<f64> for Relative {
+    fn is_root_found(&mut self, y: f64) -> bool {
+        y == 0.0
+    }
+    fn is_converged(&mut self, a: f64, b: f64) -> bool {
+        (a - b).abs() <= self.rtol * a.abs().max(b.abs())
+    }
+    fn is_iteration_limit_reached(&mut self, iter: usize) -> bool {
+        iter > self.max_iter
+    }
+}
+
+/// The root of f in [lo, hi] (f(lo) and f(hi) of opposite signs) to relative accuracy 1e-15.
+pub fn brent(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> Option<f64> {
+    let mut conv = Relative {
+        rtol: 1e-15,
+        max_iter: 200,
+    };
+    find_root_brent(lo, hi, &f, &mut conv).ok()
+}
+
+/// Marches x up geometrically (factor `growth`) from `start` while f(x) < 0 and x <= `limit`;
+/// returns the first bracket [x_k, x_{k+1}] with f(x_k) < 0 <= f(x_{k+1}), or the largest f seen
+/// (with its x) when there is none.
+pub fn march_up(
+    start: f64,
+    growth: f64,
+    limit: f64,
+    f: impl Fn(f64) -> f64,
+) -> Result<(f64, f64), (f64, f64)> {
+    let mut lo = start;
+    let mut f_lo = f(lo);
+    let mut best = (lo, f_lo);
+    while lo <= limit {
+        let hi = lo * growth;
+        let f_hi = f(hi);
+        if f_lo < 0.0 && f_hi >= 0.0 {
+            return Ok((lo, hi));
+        }
+        if f_hi > best.1 {
+            best = (hi, f_hi);
+        }
+        lo = hi;
+        f_lo = f_hi;
+    }
+    Err(best)
+}
