@@ -2,3 +2,5 @@
 //! reports. No terminal code lives here.
 
 pub mod physics;
+pub mod preset;
+pub mod report;

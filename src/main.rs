@@ -1,1 +1,120 @@
-fn main() {}
+//! The `wearlab` binary: the command line around the library.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+use wearlab::physics::SolveError;
+use wearlab::preset::{self, Preset};
+use wearlab::report;
+
+/// Exit code for invalid input (bad file, bad value, bad arguments).
+const EXIT_INVALID: u8 = 2;
+/// Exit code when the solver cannot answer.
+const EXIT_UNSOLVABLE: u8 = 3;
+
+#[derive(Parser)]
+#[command(
+    name = "wearlab",
+    version,
+    about = "Sliding contact with friction and wear"
+)]
+#[command(args_conflicts_with_subcommands = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    /// Preset file to open (default: the built-in default preset).
+    preset: Option<PathBuf>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Solve a preset and print the result (JSON or CSV) on stdout.
+    Solve {
+        /// The preset file (TOML, schema 1).
+        preset: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
+        /// Number of profile points, both ends included.
+        #[arg(long, default_value_t = 201, value_parser = clap::value_parser!(u32).range(2..=100_000))]
+        points: u32,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Json,
+    Csv,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Some(Command::Solve {
+            preset,
+            format,
+            points,
+        }) => solve(&preset, format, points as usize),
+        None => overview(cli.preset),
+    }
+}
+
+fn load(path: &Path) -> Result<Preset, ExitCode> {
+    preset::load(path).map_err(|e| {
+        eprintln!("error: {e}");
+        ExitCode::from(EXIT_INVALID)
+    })
+}
+
+fn solver_failure(e: SolveError) -> ExitCode {
+    eprintln!("error: {e}");
+    match e {
+        SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
+        SolveError::NoSolution(_) => ExitCode::from(EXIT_UNSOLVABLE),
+    }
+}
+
+fn solve(path: &Path, format: Format, points: usize) -> ExitCode {
+    let preset = match load(path) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    match report::plane_report(&preset, points) {
+        Ok(r) => {
+            match format {
+                Format::Json => println!("{}", report::to_json(&r)),
+                Format::Csv => print!("{}", report::profile_csv(&r.profile)),
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => solver_failure(e),
+    }
+}
+
+fn overview(path: Option<PathBuf>) -> ExitCode {
+    let preset = match path {
+        Some(p) => match load(&p) {
+            Ok(p) => p,
+            Err(code) => return code,
+        },
+        None => preset::default_preset(),
+    };
+    match report::plane_report(&preset, 201) {
+        Ok(r) => {
+            println!("{}\n", preset.name);
+            println!(
+                "model {}  P = {:.4e} N/m  a = {:.4e} m  b = {:.4e} m  mu* = {:.6}",
+                r.model.name(),
+                r.load,
+                r.a,
+                r.b,
+                r.mu_star
+            );
+            println!("\nRun `wearlab solve PRESET.toml` for the full result (JSON or CSV).");
+            ExitCode::SUCCESS
+        }
+        Err(e) => solver_failure(e),
+    }
+}

@@ -123,7 +123,7 @@ mod tests {
         // (3.2) written with sh and ch directly, where nothing overflows yet.
         let nu: f64 = 0.27;
         let kap = kappa(nu);
-        for x in [0.05, 0.7, 3.0, 9.0] {
+        for x in [0.05f64, 0.7, 3.0, 9.0] {
             let d = 2.0 * kap * (2.0 * x).cosh() + 4.0 * x * x + 1.0 + kap * kap;
             let k1 = (2.0 * kap * (2.0 * x).sinh() + 4.0 * x) / d;
             let k2 = (2.0 * kap * (2.0 * x).sinh() - 4.0 * x) / d;

@@ -1,6 +1,7 @@
 //! The physics: pure functions of validated parameter structs, SI units throughout.
 
 pub mod elastic;
+pub mod limits;
 pub mod plane;
 pub mod quadrature;
 pub mod roots;

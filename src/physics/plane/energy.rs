@@ -40,13 +40,15 @@ fn hilbert(rule: &GaussRule, lo: f64, hi: f64, x: f64, q: &impl Fn(f64) -> f64) 
         + qx * ((hi - x) / (x - lo)).ln()
 }
 
-/// I, J and the residual for a solved operating point.
+/// I, J and the residual for a solved operating point. The quadrature runs in u = x + a in
+/// [0, a + b], the distance from the trailing edge, so both edges keep full precision.
 pub fn energy(sol: &PlaneSolution) -> Energy {
     let rule = tanh_sinh(1.0 / 16.0);
     let inputs = &sol.inputs;
-    let (lo, hi) = (-sol.a, sol.b);
-    let q2 = |x: f64| sol.pressure(x);
-    let q1 = |x: f64| sol.shear(x);
+    let (mu, tau0) = (inputs.friction.coefficient, inputs.friction.adhesion);
+    let l = sol.contact_width();
+    let q2 = |u: f64| sol.pressure_from_trailing_edge(u);
+    let q1 = |u: f64| mu * q2(u) + tau0;
     let derivatives: Box<dyn Fn(f64) -> (f64, f64)> = match sol.model {
         Model::Wide => {
             let mat = &inputs.material;
@@ -58,12 +60,11 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
                 chi_c12(mat.poisson_ratio) / mat.thickness
             };
             let (big_q1, big_q2) = (sol.friction_force, sol.normal_force);
-            Box::new(move |x| {
-                let du = -std::f64::consts::PI * chi * q2(x) + hilbert(&rule, lo, hi, x, &q1)
-                    - c * big_q2;
-                let dv = -std::f64::consts::PI * chi * q1(x)
-                    - hilbert(&rule, lo, hi, x, &q2)
-                    - c * big_q1;
+            let pi_chi = std::f64::consts::PI * chi;
+            let rule = &rule;
+            Box::new(move |u| {
+                let du = -pi_chi * q2(u) + hilbert(rule, 0.0, l, u, &q1) - c * big_q2;
+                let dv = -pi_chi * q1(u) - hilbert(rule, 0.0, l, u, &q2) - c * big_q1;
                 (du / m, dv / m)
             })
         }
@@ -71,21 +72,23 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
             let alpha = winkler_alpha(inputs);
             let beta = winkler_beta(inputs);
             let lambda = inputs.wear / beta;
-            let mu = inputs.friction.coefficient;
-            let r = inputs.radius;
-            Box::new(move |x| {
-                let dq2 = lambda * q2(x) - x / (r * beta); // (5.3)
+            let (r, a) = (inputs.radius, sol.a);
+            Box::new(move |u| {
+                let dq2 = lambda * q2(u) - (u - a) / (r * beta); // (5.3), g'(x) = x/R
                 (alpha * mu * dq2, -beta * dq2)
             })
         }
     };
     let (mut i, mut j, mut gross) = (0.0, 0.0, 0.0);
-    let half = 0.5 * (hi - lo);
-    let rule = tanh_sinh(1.0 / 16.0);
+    let half = 0.5 * l;
     for (t, w) in rule.nodes.iter().zip(&rule.weights) {
-        let x = lo + half * (1.0 + t);
-        let (du, dv) = derivatives(x);
-        let (a, b) = (q1(x) * du, q2(x) * dv);
+        let u = if *t < 0.0 {
+            half * (1.0 + t)
+        } else {
+            l - half * (1.0 - t)
+        };
+        let (du, dv) = derivatives(u);
+        let (a, b) = (q1(u) * du, q2(u) * dv);
         i += w * half * a;
         j += w * half * b;
         gross += w * half * (a.abs() + b.abs());

@@ -15,7 +15,7 @@ pub mod wide;
 
 use serde::{Deserialize, Serialize};
 
-use crate::physics::{Friction, Material, SolveError};
+use crate::physics::{Friction, Material, SolveError, limits};
 
 /// Which asymptotic model of the strip to solve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -61,47 +61,26 @@ impl PlaneInputs {
         PlaneInputs { load, ..*self }
     }
 
-    /// Checks every field against its allowed range.
+    /// Checks every field against its allowed range (see `physics::limits`).
     pub fn validate(&self) -> Result<(), SolveError> {
         let m = &self.material;
-        let checks = [
+        [
+            (&limits::YOUNGS_MODULUS, "youngs_modulus", m.youngs_modulus),
+            (&limits::POISSON_RATIO, "poisson_ratio", m.poisson_ratio),
+            (&limits::THICKNESS, "thickness", m.thickness),
             (
-                m.youngs_modulus > 0.0 && m.youngs_modulus.is_finite(),
-                "Young's modulus E must be a finite number > 0 Pa",
+                &limits::FRICTION,
+                "friction coefficient",
+                self.friction.coefficient,
             ),
-            (
-                (0.0..0.5).contains(&m.poisson_ratio),
-                "Poisson's ratio nu must satisfy 0 <= nu < 0.5",
-            ),
-            (
-                m.thickness > 0.0,
-                "thickness h must be > 0 m (inf for a half-plane)",
-            ),
-            (
-                self.friction.coefficient >= 0.0 && self.friction.coefficient.is_finite(),
-                "friction coefficient mu must be >= 0",
-            ),
-            (
-                self.friction.adhesion >= 0.0 && self.friction.adhesion.is_finite(),
-                "adhesion tau0 must be >= 0 Pa",
-            ),
-            (
-                self.wear >= 0.0 && self.wear.is_finite(),
-                "wear coefficient k must be >= 0 1/Pa",
-            ),
-            (
-                self.radius > 0.0 && self.radius.is_finite(),
-                "punch radius R must be a finite number > 0 m",
-            ),
-            (
-                self.load > 0.0 && self.load.is_finite(),
-                "load P must be a finite number > 0 N/m",
-            ),
-        ];
-        match checks.iter().find(|(ok, _)| !ok) {
-            Some((_, why)) => Err(SolveError::InvalidInput((*why).to_string())),
-            None => Ok(()),
-        }
+            (&limits::ADHESION, "adhesion", self.friction.adhesion),
+            (&limits::WEAR, "wear coefficient", self.wear),
+            (&limits::RADIUS, "radius", self.radius),
+            (&limits::LINE_LOAD, "load", self.load),
+        ]
+        .iter()
+        .try_for_each(|(limit, name, value)| limit.check(name, *value))
+        .map_err(SolveError::InvalidInput)
     }
 }
 
@@ -153,16 +132,24 @@ impl PlaneSolution {
 
     /// Contact pressure q2(x) [Pa] at x [m] (moving frame); 0 outside [-a, b].
     pub fn pressure(&self, x: f64) -> f64 {
-        let (a, b) = (self.a, self.b);
-        if !(x > -a && x < b) {
+        if !(x > -self.a && x < self.b) {
+            return 0.0;
+        }
+        self.pressure_from_trailing_edge(x + self.a)
+    }
+
+    /// Contact pressure [Pa] at distance u [m] from the trailing edge, u in [0, a + b]; 0 outside.
+    /// Local coordinates keep full precision near both edges even when the contact zone lies far
+    /// from the punch tip.
+    pub fn pressure_from_trailing_edge(&self, u: f64) -> f64 {
+        let l = self.contact_width();
+        if !(u > 0.0 && u < l) {
             return 0.0;
         }
         match self.law {
-            PressureLaw::Wide { c, theta } => {
-                c * (a + x).powf(0.5 - theta) * (b - x).powf(0.5 + theta)
-            }
+            PressureLaw::Wide { c, theta } => c * u.powf(0.5 - theta) * (l - u).powf(0.5 + theta),
             PressureLaw::Narrow { lambda, beta } => {
-                narrow::pressure(a + x, a + b, lambda, beta, self.inputs.radius)
+                narrow::pressure(u, l, lambda, beta, self.inputs.radius)
             }
         }
     }

@@ -249,7 +249,7 @@ mod tests {
         // plane.md section 4: hh = 1/2 - y/12 + ..., G = 1/6 - y^2/360, S = y/60 - y^3/1890.
         let y = 1e-3;
         let s = shape(y);
-        assert!((s.hh - (0.5 - y / 12.0)).abs() < 1e-12);
+        assert!((s.hh - (0.5 - y / 12.0 + y.powi(3) / 720.0)).abs() < 1e-18);
         assert!((s.g - (1.0 / 6.0 - y * y / 360.0)).abs() < 1e-14);
         assert!((s.s - (y / 60.0 - y.powi(3) / 1890.0)).abs() < 1e-17);
         assert_eq!(

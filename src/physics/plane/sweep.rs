@@ -3,7 +3,8 @@
 use serde::Serialize;
 
 use crate::physics::Spacing;
-use crate::physics::plane::{Model, PlaneInputs, solve};
+use crate::physics::plane::wide::{self, WideConstants};
+use crate::physics::plane::{Model, PlaneInputs, narrow};
 
 /// The loads of a sweep.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,9 +37,18 @@ pub struct Sweep {
 /// Solves the model at every load of the sweep (the inputs' own load is ignored).
 pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &LoadSweep) -> Sweep {
     let load = loads.spacing.points(loads.min, loads.max, loads.points);
+    let valid = inputs.validate().is_ok();
+    let wide = (valid && model == Model::Wide).then(|| WideConstants::new(inputs));
     let solutions: Vec<_> = load
         .iter()
-        .map(|&p| solve(&inputs.with_load(p), model).ok())
+        .map(|&p| {
+            let at = inputs.with_load(p);
+            match model {
+                _ if !valid => None,
+                Model::Wide => wide::solve_with(wide.as_ref()?, &at).ok(),
+                Model::Narrow => narrow::solve(&at).ok(),
+            }
+        })
         .collect();
     let pick = |f: fn(&super::PlaneSolution) -> f64| -> Vec<Option<f64>> {
         solutions.iter().map(|s| s.as_ref().map(f)).collect()

@@ -93,10 +93,15 @@ pub fn state(c: &WideConstants, inputs: &PlaneInputs, l: f64) -> WideState {
 /// Solves for the given load: the smallest positive root L of P(L) = P (a quartic), by a
 /// geometric march from a tiny L to the first sign change, then Brent.
 pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
-    let c = WideConstants::new(inputs);
+    solve_with(&WideConstants::new(inputs), inputs)
+}
+
+/// As `solve`, with the load-independent constants already computed (a load sweep computes them
+/// once: chi c12 costs a quadrature).
+pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     let p = inputs.load;
     let hertz = (8.0 * inputs.radius * p / c.m).sqrt();
-    let f = |l: f64| state(&c, inputs, l).load - p;
+    let f = |l: f64| state(c, inputs, l).load - p;
     let (lo, hi) = march_up(hertz * 1e-4, 1.1, hertz * 1e6, f).map_err(|(l_max, f_max)| {
         SolveError::NoSolution(format!(
             "the wide-strip model has no contact at P = {p:.4e} N/m: it carries at most \
@@ -109,7 +114,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
             "the contact width did not converge at P = {p:.4e} N/m"
         ))
     })?;
-    let s = state(&c, inputs, l);
+    let s = state(c, inputs, l);
     let mu = inputs.friction.coefficient;
     let tau0 = inputs.friction.adhesion;
     Ok(PlaneSolution {

@@ -1,0 +1,91 @@
+//! The reports of `wearlab solve`: JSON and CSV, with the keys of the command-line contract
+//! (`design.md`). All values SI.
+
+use serde::Serialize;
+
+use crate::physics::SolveError;
+use crate::physics::plane::energy::{Energy, energy};
+use crate::physics::plane::profile::{Profile, profile};
+use crate::physics::plane::sweep::{Sweep, sweep};
+use crate::physics::plane::validity::{Validity, check};
+use crate::physics::plane::{Model, solve};
+use crate::preset::Preset;
+
+/// The full plane report.
+#[derive(Clone, Debug, Serialize)]
+pub struct PlaneReport {
+    /// Always "plane".
+    pub problem: &'static str,
+    /// The model used.
+    pub model: Model,
+    /// P [N/m].
+    pub load: f64,
+    /// Q2 [N/m].
+    pub normal_force: f64,
+    /// T [N/m].
+    pub tangential_force: f64,
+    /// a [m].
+    pub a: f64,
+    /// b [m].
+    pub b: f64,
+    /// theta (wide model only).
+    pub theta: Option<f64>,
+    /// gamma [1/Pa] (wide model only).
+    pub gamma: Option<f64>,
+    /// psi [N/m].
+    pub psi: f64,
+    /// Delta_g [m].
+    pub delta_g: f64,
+    /// mu*.
+    pub mu_star: f64,
+    /// I, J of (2.9).
+    pub energy: Energy,
+    /// Validity flags.
+    pub validity: Validity,
+    /// Profiles on [-a, b].
+    pub profile: Profile,
+    /// mu*(P) over the preset's sweep.
+    pub sweep: Sweep,
+}
+
+/// Solves a plane preset and gathers everything `wearlab solve` prints.
+pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, SolveError> {
+    let inputs = preset.plane_inputs();
+    let model = preset.plane.model;
+    let sol = solve(&inputs, model)?;
+    Ok(PlaneReport {
+        problem: "plane",
+        model,
+        load: inputs.load,
+        normal_force: sol.normal_force,
+        tangential_force: sol.tangential_force,
+        a: sol.a,
+        b: sol.b,
+        theta: sol.theta,
+        gamma: sol.gamma,
+        psi: sol.psi,
+        delta_g: sol.delta_g,
+        mu_star: sol.mu_star,
+        energy: energy(&sol),
+        validity: check(&sol),
+        profile: profile(&sol, points),
+        sweep: sweep(&inputs, model, &preset.plane.sweep),
+    })
+}
+
+/// Pretty JSON of any report.
+pub fn to_json(report: &impl Serialize) -> String {
+    serde_json::to_string_pretty(report).expect("reports hold only numbers and strings")
+}
+
+/// The profile as CSV: a header line, then one row per point.
+pub fn profile_csv(p: &Profile) -> String {
+    let mut out = String::from("x,pressure,shear,wear_rate,wear\n");
+    for i in 0..p.x.len() {
+        out.push_str(&format!(
+            "{:e},{:e},{:e},{:e},{:e}\n",
+            p.x[i], p.pressure[i], p.shear[i], p.wear_rate[i], p.wear[i]
+        ));
+    }
+    out
+}

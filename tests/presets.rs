@@ -1,0 +1,173 @@
+//! Preset files: bundled ones load and solve; broken ones give path, line and reason; saves are
+//! atomic; load/save/load round-trips.
+
+use std::io::Write;
+use std::path::Path;
+
+use wearlab::physics::plane::solve;
+use wearlab::preset::{self, BUNDLED, parse, write_atomically};
+
+const BASE: &str = include_str!("../presets/hertz-check.toml");
+
+fn error_of(text: &str) -> String {
+    parse(text, Path::new("lab/broken.toml"))
+        .unwrap_err()
+        .to_string()
+}
+
+fn line_of(text: &str, needle: &str) -> usize {
+    text.lines().position(|l| l.starts_with(needle)).unwrap() + 1
+}
+
+#[test]
+fn every_bundled_preset_loads_and_solves() {
+    for b in BUNDLED {
+        let p = b.load().unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            !p.name.is_empty() && p.description.contains("Look at"),
+            "{}",
+            b.file
+        );
+        let sol =
+            solve(&p.plane_inputs(), p.plane.model).unwrap_or_else(|e| panic!("{}: {e}", b.file));
+        assert!(sol.mu_star.is_finite());
+    }
+    // every file in presets/ is bundled
+    let mut on_disk: Vec<String> = std::fs::read_dir("presets")
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    on_disk.sort();
+    let mut bundled: Vec<String> = BUNDLED.iter().map(|b| b.file.to_string()).collect();
+    bundled.sort();
+    assert_eq!(on_disk, bundled);
+}
+
+#[test]
+fn broken_files_name_path_line_and_reason() {
+    let nu = BASE.replace("poisson_ratio = 0.3", "poisson_ratio = 0.5");
+    assert_eq!(
+        error_of(&nu),
+        format!(
+            "lab/broken.toml:{}: poisson_ratio = 0.5 is out of range: allowed 0 <= nu < 0.5",
+            line_of(&nu, "poisson_ratio")
+        )
+    );
+    let neg = BASE.replace("thickness = inf", "thickness = -1.0e-3");
+    assert_eq!(
+        error_of(&neg),
+        format!(
+            "lab/broken.toml:{}: thickness = -0.001 is out of range: allowed h > 0 (m), or inf for a half-plane",
+            line_of(&neg, "thickness")
+        )
+    );
+    let unknown = BASE.replace("[wear]\n", "[wear]\nrate = 3\n");
+    assert_eq!(
+        error_of(&unknown),
+        format!(
+            "lab/broken.toml:{}: unknown field `rate`, expected `coefficient`",
+            line_of(&unknown, "rate")
+        )
+    );
+    let bad_toml = BASE.replace("load = 1.0e4", "load = 1.0e4 +");
+    assert_eq!(
+        error_of(&bad_toml),
+        format!(
+            "lab/broken.toml:{}: string values must be quoted, expected literal string",
+            line_of(&bad_toml, "load =")
+        )
+    );
+    let wrong_type = BASE.replace("radius = 0.05", "radius = \"big\"");
+    assert_eq!(
+        error_of(&wrong_type),
+        format!(
+            "lab/broken.toml:{}: invalid type: string \"big\", expected f64",
+            line_of(&wrong_type, "radius")
+        )
+    );
+    let start = BASE.find("[material]").unwrap();
+    let end = BASE.find("[friction]").unwrap();
+    let no_material = format!("{}{}", &BASE[..start], &BASE[end..]);
+    assert_eq!(
+        error_of(&no_material),
+        "lab/broken.toml: missing section [material] (every preset needs it)"
+    );
+    let no_plane = &BASE[..BASE.find("[plane]").unwrap()];
+    assert_eq!(
+        error_of(no_plane),
+        format!(
+            "lab/broken.toml:{}: problem = \"plane\" needs a [plane] section (model, radius, load)",
+            line_of(no_plane, "problem")
+        )
+    );
+    let schema = BASE.replace("schema = 1", "schema = 2");
+    assert_eq!(
+        error_of(&schema),
+        "lab/broken.toml:1: schema = 2 is not supported: this wearlab reads schema = 1"
+    );
+    let sweep = BASE.replace("points = 60", "points = 1");
+    assert!(
+        error_of(&sweep)
+            .ends_with("points = 1 is out of range: allowed a whole number from 2 to 2000")
+    );
+}
+
+#[test]
+fn a_missing_file_names_its_path() {
+    let err = preset::load(Path::new("no/such/preset.toml"))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.starts_with("no/such/preset.toml: cannot read the file: "),
+        "{err}"
+    );
+}
+
+#[test]
+fn round_trip_is_identical() {
+    let dir = tempfile::tempdir().unwrap();
+    for b in BUNDLED {
+        let p = b.load().unwrap();
+        let path = dir.path().join(b.file);
+        preset::save(&p, &path).unwrap();
+        let again = preset::load(&path).unwrap();
+        assert_eq!(p, again, "{}", b.file);
+        let second = dir.path().join("second.toml");
+        preset::save(&again, &second).unwrap();
+        assert_eq!(
+            std::fs::read_to_string(&path).unwrap(),
+            std::fs::read_to_string(&second).unwrap()
+        );
+    }
+}
+
+#[test]
+fn a_save_that_fails_midway_leaves_the_old_file_intact() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lab.toml");
+    std::fs::write(&path, BASE).unwrap();
+    let result = write_atomically(&path, |f| {
+        f.write_all(b"schema = 1\nname = \"half writ")?;
+        Err(std::io::Error::other("disk full"))
+    });
+    assert_eq!(result.unwrap_err().to_string(), "disk full");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), BASE);
+    // and no temporary file is left behind
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, vec![std::ffi::OsString::from("lab.toml")]);
+}
+
+#[test]
+fn defaults_for_optional_sections() {
+    let minimal = "schema = 1\nproblem = \"plane\"\n[material]\nyoungs_modulus = 1e9\npoisson_ratio = 0.3\n\
+                   thickness = inf\n[plane]\nmodel = \"wide\"\nradius = 0.1\nload = 100.0\n";
+    let p = parse(minimal, Path::new("m.toml")).unwrap();
+    assert_eq!(
+        (p.friction.coefficient, p.friction.adhesion, p.wear),
+        (0.0, 0.0, 0.0)
+    );
+    assert_eq!(p.plane.sweep, preset::default_load_sweep(100.0));
+}
