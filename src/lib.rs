@@ -4,3 +4,4 @@
 pub mod physics;
 pub mod preset;
 pub mod report;
+pub mod units;

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 use wearlab::physics::SolveError;
-use wearlab::preset::{self, Preset};
+use wearlab::preset::{self, Preset, Problem};
 use wearlab::report;
 
 /// Exit code for invalid input (bad file, bad value, bad arguments).
@@ -37,9 +37,15 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Json)]
         format: Format,
-        /// Number of profile points, both ends included.
+        /// Number of profile points, both ends included (plane).
         #[arg(long, default_value_t = 201, value_parser = clap::value_parser!(u32).range(2..=100_000))]
         points: u32,
+        /// The instant t [s] to solve at, overriding the preset's spatial.time (spatial).
+        #[arg(long, value_parser = parse_time)]
+        time: Option<f64>,
+        /// Also report the fields at the point X,Y [m] (spatial; repeatable).
+        #[arg(long, value_name = "X,Y", value_parser = parse_probe)]
+        probe: Vec<[f64; 2]>,
     },
 }
 
@@ -49,6 +55,25 @@ enum Format {
     Csv,
 }
 
+fn parse_time(text: &str) -> Result<f64, String> {
+    let t: f64 = text
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number of seconds"))?;
+    wearlab::physics::limits::TIME.check("--time", t)?;
+    Ok(t)
+}
+
+fn parse_probe(text: &str) -> Result<[f64; 2], String> {
+    let parts: Vec<&str> = text.split(',').collect();
+    match parts.as_slice() {
+        [x, y] => match (x.trim().parse::<f64>(), y.trim().parse::<f64>()) {
+            (Ok(x), Ok(y)) if x.is_finite() && y.is_finite() => Ok([x, y]),
+            _ => Err(format!("'{text}' is not two numbers X,Y in metres")),
+        },
+        _ => Err(format!("'{text}' is not a point X,Y in metres")),
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
@@ -56,7 +81,9 @@ fn main() -> ExitCode {
             preset,
             format,
             points,
-        }) => solve(&preset, format, points as usize),
+            time,
+            probe,
+        }) => solve(&preset, format, points as usize, time, &probe),
         None => overview(cli.preset),
     }
 }
@@ -76,20 +103,46 @@ fn solver_failure(e: SolveError) -> ExitCode {
     }
 }
 
-fn solve(path: &Path, format: Format, points: usize) -> ExitCode {
+fn solve(
+    path: &Path,
+    format: Format,
+    points: usize,
+    time: Option<f64>,
+    probes: &[[f64; 2]],
+) -> ExitCode {
     let preset = match load(path) {
         Ok(p) => p,
         Err(code) => return code,
     };
-    match report::plane_report(&preset, points) {
-        Ok(r) => {
-            match format {
-                Format::Json => println!("{}", report::to_json(&r)),
-                Format::Csv => print!("{}", report::profile_csv(&r.profile)),
+    match preset.problem {
+        Problem::Plane => match report::plane_report(&preset, points) {
+            Ok(r) => {
+                match format {
+                    Format::Json => println!("{}", report::to_json(&r)),
+                    Format::Csv => print!("{}", report::profile_csv(&r.profile)),
+                }
+                ExitCode::SUCCESS
             }
-            ExitCode::SUCCESS
-        }
-        Err(e) => solver_failure(e),
+            Err(e) => solver_failure(e),
+        },
+        Problem::Spatial => match report::spatial_report(&preset, time, probes) {
+            Ok(r) => {
+                match format {
+                    Format::Json => println!("{}", report::to_json(&r)),
+                    Format::Csv => print!("{}", report::field_csv(&r, &preset.friction)),
+                }
+                match r.contact.failure() {
+                    // The complete-contact solution does not hold: the numbers are printed for
+                    // inspection, but the solver has no answer.
+                    Some(why) => {
+                        eprintln!("error: {why}");
+                        ExitCode::from(EXIT_UNSOLVABLE)
+                    }
+                    None => ExitCode::SUCCESS,
+                }
+            }
+            Err(e) => solver_failure(e),
+        },
     }
 }
 

@@ -12,6 +12,9 @@ use toml::Spanned;
 use crate::physics::limits::{self, Limit};
 use crate::physics::plane::sweep::LoadSweep;
 use crate::physics::plane::{Model, PlaneInputs};
+use crate::physics::spatial::harmonic::Harmonic;
+use crate::physics::spatial::history::PressureSweep;
+use crate::physics::spatial::{SpatialInputs, validate_harmonics};
 use crate::physics::{Friction, Material, Spacing};
 
 /// The schema version this build reads and writes.
@@ -23,6 +26,8 @@ pub const SCHEMA: i64 = 1;
 pub enum Problem {
     /// The plane problem (parabolic punch on a strip).
     Plane,
+    /// The spatial problem (wavy punch on a layer).
+    Spatial,
 }
 
 /// The `[plane]` section.
@@ -36,6 +41,25 @@ pub struct PlaneSection {
     pub load: f64,
     /// The loads of the mu*(P) sweep.
     pub sweep: LoadSweep,
+}
+
+/// The `[spatial]` section.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialSection {
+    /// Mean pressure pbar [Pa].
+    pub mean_pressure: f64,
+    /// Sliding speed V [m/s].
+    pub sliding_speed: f64,
+    /// The instant shown t [s].
+    pub time: f64,
+    /// Extent of the time charts [s].
+    pub duration: f64,
+    /// Points per side of the field grid.
+    pub grid: usize,
+    /// The mean pressures of the mu*(pbar) sweep.
+    pub sweep: PressureSweep,
+    /// The punch harmonics at t = 0.
+    pub harmonics: Vec<Harmonic>,
 }
 
 /// A validated preset.
@@ -53,8 +77,10 @@ pub struct Preset {
     pub friction: Friction,
     /// Wear coefficient k [1/Pa].
     pub wear: f64,
-    /// The plane problem.
+    /// The plane problem (defaults when the file has no `[plane]`).
     pub plane: PlaneSection,
+    /// The spatial problem (defaults when the file has no `[spatial]`).
+    pub spatial: SpatialSection,
 }
 
 impl Preset {
@@ -67,6 +93,60 @@ impl Preset {
             radius: self.plane.radius,
             load: self.plane.load,
         }
+    }
+}
+
+impl Preset {
+    /// The spatial solver's inputs.
+    pub fn spatial_inputs(&self) -> SpatialInputs {
+        SpatialInputs {
+            material: self.material,
+            friction: self.friction,
+            wear: self.wear,
+            sliding_speed: self.spatial.sliding_speed,
+            mean_pressure: self.spatial.mean_pressure,
+            harmonics: self.spatial.harmonics.clone(),
+        }
+    }
+}
+
+/// The `[plane]` section a preset without one gets: a wide strip, R = 50 mm, P = 1e4 N/m.
+pub fn default_plane_section() -> PlaneSection {
+    PlaneSection {
+        model: Model::Wide,
+        radius: 0.05,
+        load: 1e4,
+        sweep: default_load_sweep(1e4),
+    }
+}
+
+/// The `[spatial]` section a preset without one gets: pbar = 50 MPa, V = 1 m/s, one 1-D wave of
+/// 1 mm wavelength and 40 nm amplitude, t = 0, duration 200 s, a 64-point grid.
+pub fn default_spatial_section() -> SpatialSection {
+    SpatialSection {
+        mean_pressure: 5e7,
+        sliding_speed: 1.0,
+        time: 0.0,
+        duration: 200.0,
+        grid: 64,
+        sweep: default_pressure_sweep(5e7),
+        harmonics: vec![Harmonic {
+            amplitude: 4e-8,
+            wavenumber_x: 2.0 * std::f64::consts::PI / 1e-3,
+            wavenumber_y: 0.0,
+            phase_x: 0.0,
+            phase_y: std::f64::consts::FRAC_PI_2,
+        }],
+    }
+}
+
+/// The default mean-pressure sweep: pbar/10 to 10 pbar, 60 points, log.
+pub fn default_pressure_sweep(mean_pressure: f64) -> PressureSweep {
+    PressureSweep {
+        min: mean_pressure / 10.0,
+        max: mean_pressure * 10.0,
+        points: 60,
+        spacing: Spacing::Log,
     }
 }
 
@@ -149,6 +229,50 @@ struct FilePlane {
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
+struct FilePressureSweep {
+    pressure_min: Spanned<f64>,
+    pressure_max: Spanned<f64>,
+    points: Spanned<i64>,
+    scale: Spacing,
+}
+
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+struct FileHarmonic {
+    amplitude: Spanned<f64>,
+    wavenumber_x: Spanned<f64>,
+    wavenumber_y: Spanned<f64>,
+    phase_x: Spanned<f64>,
+    phase_y: Spanned<f64>,
+}
+
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+struct FileSpatial {
+    mean_pressure: Spanned<f64>,
+    sliding_speed: Spanned<f64>,
+    #[serde(default = "zero")]
+    time: Spanned<f64>,
+    #[serde(default = "default_duration")]
+    duration: Spanned<f64>,
+    #[serde(default = "default_grid")]
+    grid: Spanned<i64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    sweep: Option<Spanned<FilePressureSweep>>,
+    #[serde(default)]
+    harmonics: Vec<Spanned<FileHarmonic>>,
+}
+
+fn default_duration() -> Spanned<f64> {
+    plain(default_spatial_section().duration)
+}
+
+fn default_grid() -> Spanned<i64> {
+    plain(default_spatial_section().grid as i64)
+}
+
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
 struct FilePreset {
     schema: Spanned<i64>,
     #[serde(default)]
@@ -160,6 +284,7 @@ struct FilePreset {
     friction: Option<FileFriction>,
     wear: Option<FileWear>,
     plane: Option<Spanned<FilePlane>>,
+    spatial: Option<Spanned<FileSpatial>>,
 }
 
 fn zero() -> Spanned<f64> {
@@ -242,59 +367,167 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         Some(w) => ck.value(&w.coefficient, "coefficient", &limits::WEAR)?,
         None => 0.0,
     };
-    let plane = file.plane.as_ref().ok_or_else(|| {
+    let problem = *file.problem.get_ref();
+    let missing = |section: &str, keys: &str| {
         ck.error(
             Some(file.problem.span()),
-            "problem = \"plane\" needs a [plane] section (model, radius, load)",
+            format!("problem = \"{section}\" needs a [{section}] section ({keys})"),
         )
-    })?;
-    let pl = plane.get_ref();
-    let radius = ck.value(&pl.radius, "radius", &limits::RADIUS)?;
-    let load = ck.value(&pl.load, "load", &limits::LINE_LOAD)?;
-    if pl.model == Model::Narrow && material.thickness.is_infinite() {
-        return Err(ck.error(
-            Some(plane.span()),
-            "model = \"narrow\" (Winkler) needs a finite thickness: set [material] thickness or use model = \"wide\"",
-        ));
-    }
-    let sweep = match &pl.sweep {
-        Some(sw) => {
-            let s = sw.get_ref();
-            let min = ck.value(&s.load_min, "load_min", &limits::LINE_LOAD)?;
-            let max = ck.value(&s.load_max, "load_max", &limits::LINE_LOAD)?;
-            if max <= min {
-                return Err(ck.error(
-                    Some(s.load_max.span()),
-                    format!("load_max = {max} must be larger than load_min = {min}"),
-                ));
-            }
-            let points = *s.points.get_ref();
-            limits::SWEEP_POINTS
-                .check("points", points as f64)
-                .map_err(|why| ck.error(Some(s.points.span()), why))?;
-            LoadSweep {
-                min,
-                max,
-                points: points as usize,
-                spacing: s.scale,
-            }
+    };
+    let plane = match &file.plane {
+        Some(pl) => ck.plane(pl, &material)?,
+        None if problem == Problem::Plane => return Err(missing("plane", "model, radius, load")),
+        None => default_plane_section(),
+    };
+    let spatial = match &file.spatial {
+        Some(sp) => ck.spatial(sp)?,
+        None if problem == Problem::Spatial => {
+            return Err(missing(
+                "spatial",
+                "mean_pressure, sliding_speed, [[spatial.harmonics]]",
+            ));
         }
-        None => default_load_sweep(load),
+        None => default_spatial_section(),
     };
     Ok(Preset {
         name: file.name,
         description: file.description,
-        problem: *file.problem.get_ref(),
+        problem,
         material,
         friction,
         wear,
-        plane: PlaneSection {
+        plane,
+        spatial,
+    })
+}
+
+impl Checker<'_> {
+    fn count(&self, v: &Spanned<i64>, name: &str, limit: &Limit) -> Result<usize, PresetError> {
+        let n = *v.get_ref();
+        limit
+            .check(name, n as f64)
+            .map_err(|why| self.error(Some(v.span()), why))?;
+        Ok(n as usize)
+    }
+
+    fn range(
+        &self,
+        lo: &Spanned<f64>,
+        hi: &Spanned<f64>,
+        names: [&str; 2],
+        limit: &Limit,
+    ) -> Result<(f64, f64), PresetError> {
+        let min = self.value(lo, names[0], limit)?;
+        let max = self.value(hi, names[1], limit)?;
+        if max <= min {
+            return Err(self.error(
+                Some(hi.span()),
+                format!(
+                    "{} = {max} must be larger than {} = {min}",
+                    names[1], names[0]
+                ),
+            ));
+        }
+        Ok((min, max))
+    }
+
+    fn plane(
+        &self,
+        plane: &Spanned<FilePlane>,
+        material: &Material,
+    ) -> Result<PlaneSection, PresetError> {
+        let pl = plane.get_ref();
+        let radius = self.value(&pl.radius, "radius", &limits::RADIUS)?;
+        let load = self.value(&pl.load, "load", &limits::LINE_LOAD)?;
+        if pl.model == Model::Narrow && material.thickness.is_infinite() {
+            return Err(self.error(
+                Some(plane.span()),
+                "model = \"narrow\" (Winkler) needs a finite thickness: set [material] thickness or use model = \"wide\"",
+            ));
+        }
+        let sweep = match &pl.sweep {
+            Some(sw) => {
+                let s = sw.get_ref();
+                let (min, max) = self.range(
+                    &s.load_min,
+                    &s.load_max,
+                    ["load_min", "load_max"],
+                    &limits::LINE_LOAD,
+                )?;
+                let points = self.count(&s.points, "points", &limits::SWEEP_POINTS)?;
+                LoadSweep {
+                    min,
+                    max,
+                    points,
+                    spacing: s.scale,
+                }
+            }
+            None => default_load_sweep(load),
+        };
+        Ok(PlaneSection {
             model: pl.model,
             radius,
             load,
             sweep,
-        },
-    })
+        })
+    }
+
+    fn spatial(&self, spatial: &Spanned<FileSpatial>) -> Result<SpatialSection, PresetError> {
+        let sp = spatial.get_ref();
+        let mean_pressure =
+            self.value(&sp.mean_pressure, "mean_pressure", &limits::MEAN_PRESSURE)?;
+        let mut harmonics = Vec::new();
+        for fh in &sp.harmonics {
+            let h = fh.get_ref();
+            let harmonic = Harmonic {
+                amplitude: self.value(&h.amplitude, "amplitude", &limits::AMPLITUDE)?,
+                wavenumber_x: self.value(&h.wavenumber_x, "wavenumber_x", &limits::WAVENUMBER)?,
+                wavenumber_y: self.value(&h.wavenumber_y, "wavenumber_y", &limits::WAVENUMBER)?,
+                phase_x: self.value(&h.phase_x, "phase_x", &limits::PHASE)?,
+                phase_y: self.value(&h.phase_y, "phase_y", &limits::PHASE)?,
+            };
+            harmonics.push(harmonic);
+            // the wave-vector rules (nonzero, not repeated) are the solver's
+            if let Err(e) = validate_harmonics(&harmonics) {
+                let why = e.to_string();
+                return Err(self.error(Some(fh.span()), why.trim_start_matches("invalid input: ")));
+            }
+        }
+        if harmonics.is_empty() {
+            return Err(self.error(
+                Some(spatial.span()),
+                "[spatial] has no [[spatial.harmonics]]: the punch needs at least one harmonic",
+            ));
+        }
+        let sweep = match &sp.sweep {
+            Some(sw) => {
+                let s = sw.get_ref();
+                let (min, max) = self.range(
+                    &s.pressure_min,
+                    &s.pressure_max,
+                    ["pressure_min", "pressure_max"],
+                    &limits::MEAN_PRESSURE,
+                )?;
+                let points = self.count(&s.points, "points", &limits::SWEEP_POINTS)?;
+                PressureSweep {
+                    min,
+                    max,
+                    points,
+                    spacing: s.scale,
+                }
+            }
+            None => default_pressure_sweep(mean_pressure),
+        };
+        Ok(SpatialSection {
+            mean_pressure,
+            sliding_speed: self.value(&sp.sliding_speed, "sliding_speed", &limits::SPEED)?,
+            time: self.value(&sp.time, "time", &limits::TIME)?,
+            duration: self.value(&sp.duration, "duration", &limits::DURATION)?,
+            grid: self.count(&sp.grid, "grid", &limits::GRID)?,
+            sweep,
+            harmonics,
+        })
+    }
 }
 
 /// Reads and validates a preset file.
@@ -338,8 +571,38 @@ pub fn to_toml(preset: &Preset) -> String {
                 scale: sw.spacing,
             })),
         })),
+        spatial: Some(plain(spatial_file(&preset.spatial))),
     };
     toml::to_string(&file).expect("a preset always serializes")
+}
+
+fn spatial_file(sp: &SpatialSection) -> FileSpatial {
+    FileSpatial {
+        mean_pressure: plain(sp.mean_pressure),
+        sliding_speed: plain(sp.sliding_speed),
+        time: plain(sp.time),
+        duration: plain(sp.duration),
+        grid: plain(sp.grid as i64),
+        sweep: Some(plain(FilePressureSweep {
+            pressure_min: plain(sp.sweep.min),
+            pressure_max: plain(sp.sweep.max),
+            points: plain(sp.sweep.points as i64),
+            scale: sp.sweep.spacing,
+        })),
+        harmonics: sp
+            .harmonics
+            .iter()
+            .map(|h| {
+                plain(FileHarmonic {
+                    amplitude: plain(h.amplitude),
+                    wavenumber_x: plain(h.wavenumber_x),
+                    wavenumber_y: plain(h.wavenumber_y),
+                    phase_x: plain(h.phase_x),
+                    phase_y: plain(h.phase_y),
+                })
+            })
+            .collect(),
+    }
 }
 
 /// Writes `path` atomically: the bytes go to a temporary file in the same folder, which is
@@ -399,6 +662,26 @@ pub const BUNDLED: &[Bundled] = &[
     Bundled {
         file: "thin-strip-winkler.toml",
         text: include_str!("../presets/thin-strip-winkler.toml"),
+    },
+    Bundled {
+        file: "jgh-egg-box.toml",
+        text: include_str!("../presets/jgh-egg-box.toml"),
+    },
+    Bundled {
+        file: "wave-thick-layer.toml",
+        text: include_str!("../presets/wave-thick-layer.toml"),
+    },
+    Bundled {
+        file: "rubber-backward-drift.toml",
+        text: include_str!("../presets/rubber-backward-drift.toml"),
+    },
+    Bundled {
+        file: "dispersion.toml",
+        text: include_str!("../presets/dispersion.toml"),
+    },
+    Bundled {
+        file: "contact-lost.toml",
+        text: include_str!("../presets/contact-lost.toml"),
     },
 ];
 

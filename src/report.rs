@@ -9,6 +9,10 @@ use crate::physics::plane::profile::{Profile, profile};
 use crate::physics::plane::sweep::{Sweep, sweep};
 use crate::physics::plane::validity::{Validity, check};
 use crate::physics::plane::{Model, solve};
+use crate::physics::spatial::contact::{self, Contact};
+use crate::physics::spatial::field::{Field, field};
+use crate::physics::spatial::history::{MeanPressureSweep, pressure_sweep};
+use crate::physics::spatial::{self, Cell};
 use crate::preset::Preset;
 
 /// The full plane report.
@@ -71,6 +75,148 @@ pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, Solve
         profile: profile(&sol, points),
         sweep: sweep(&inputs, model, &preset.plane.sweep),
     })
+}
+
+/// One harmonic in the spatial report.
+#[derive(Clone, Debug, Serialize)]
+pub struct HarmonicReport {
+    /// |(wx, wy)| [rad/m].
+    pub k: f64,
+    /// beta [1/s].
+    pub decay_rate: f64,
+    /// c [m/s], positive along +x.
+    pub drift_velocity: f64,
+    /// Omega [rad/s].
+    pub phase_rate: f64,
+    /// phi [rad].
+    pub phase_lead: f64,
+    /// 1/M [Pa/m].
+    pub pressure_per_amplitude: f64,
+    /// A(t) [m].
+    pub amplitude: f64,
+    /// rho_x(t) [rad].
+    pub phase_x: f64,
+    /// rho_y [rad].
+    pub phase_y: f64,
+}
+
+/// The fields at one point.
+#[derive(Clone, Debug, Serialize)]
+pub struct Probe {
+    /// x [m].
+    pub x: f64,
+    /// y [m].
+    pub y: f64,
+    /// p [Pa].
+    pub pressure: f64,
+    /// tau [Pa].
+    pub shear: f64,
+    /// U [m].
+    pub shape: f64,
+}
+
+/// The full spatial report.
+#[derive(Clone, Debug, Serialize)]
+pub struct SpatialReport {
+    /// Always "spatial".
+    pub problem: &'static str,
+    /// t [s].
+    pub time: f64,
+    /// pbar [Pa].
+    pub mean_pressure: f64,
+    /// P [Pa].
+    pub load: f64,
+    /// mu*.
+    pub mu_star: f64,
+    /// psi [Pa].
+    pub psi: f64,
+    /// Per harmonic.
+    pub harmonics: Vec<HarmonicReport>,
+    /// The complete-contact check.
+    pub contact: Contact,
+    /// Fields at the requested points.
+    pub probes: Vec<Probe>,
+    /// mu* against pbar.
+    pub sweep: MeanPressureSweep,
+    /// The fields over the cell (not in the JSON; the CSV output).
+    #[serde(skip)]
+    pub field: Field,
+}
+
+/// Solves a spatial preset at time `time` (the preset's own when None) with probes at `probes`.
+pub fn spatial_report(
+    preset: &Preset,
+    time: Option<f64>,
+    probes: &[[f64; 2]],
+) -> Result<SpatialReport, SolveError> {
+    let inputs = preset.spatial_inputs();
+    let time = time.unwrap_or(preset.spatial.time);
+    let sol = spatial::solve(&inputs, time)?;
+    let cell = Cell::of(&inputs.harmonics);
+    let contact = contact::check(&sol, &cell);
+    let evolutions: Vec<_> = sol.harmonics.iter().map(|h| h.evolution).collect();
+    let sweep = pressure_sweep(
+        &inputs,
+        &evolutions,
+        time,
+        contact.min_pressure - inputs.mean_pressure,
+        &preset.spatial.sweep,
+    );
+    Ok(SpatialReport {
+        problem: "spatial",
+        time,
+        mean_pressure: inputs.mean_pressure,
+        load: sol.load,
+        mu_star: sol.mu_star,
+        psi: sol.psi,
+        harmonics: sol
+            .harmonics
+            .iter()
+            .map(|h| HarmonicReport {
+                k: h.initial.wavenumber(),
+                decay_rate: h.evolution.decay_rate,
+                drift_velocity: h.evolution.drift_velocity,
+                phase_rate: h.evolution.phase_rate,
+                phase_lead: h.evolution.phase_lead,
+                pressure_per_amplitude: h.evolution.pressure_per_amplitude(),
+                amplitude: h.state.amplitude,
+                phase_x: h.state.phase_x,
+                phase_y: h.state.phase_y,
+            })
+            .collect(),
+        contact,
+        probes: probes
+            .iter()
+            .map(|&[x, y]| Probe {
+                x,
+                y,
+                pressure: sol.pressure(x, y),
+                shear: sol.shear(x, y),
+                shape: sol.shape(x, y),
+            })
+            .collect(),
+        sweep,
+        field: field(&sol, &cell, preset.spatial.grid),
+    })
+}
+
+/// The spatial field over the cell as CSV: x,y,pressure,shear,shape,wear.
+pub fn field_csv(report: &SpatialReport, friction: &crate::physics::Friction) -> String {
+    let f = &report.field;
+    let mut out = String::from("x,y,pressure,shear,shape,wear\n");
+    for (j, y) in f.y.iter().enumerate() {
+        for (i, x) in f.x.iter().enumerate() {
+            let k = j * f.n + i;
+            let p = f.pressure[k];
+            out.push_str(&format!(
+                "{x:e},{y:e},{p:e},{:e},{:e},{:e}\n",
+                friction.coefficient * p + friction.adhesion,
+                f.shape[k],
+                f.wear[k]
+            ));
+        }
+    }
+    out
 }
 
 /// Pretty JSON of any report.

@@ -5,7 +5,9 @@ use std::io::Write;
 use std::path::Path;
 
 use wearlab::physics::plane::solve;
-use wearlab::preset::{self, BUNDLED, parse, write_atomically};
+use wearlab::physics::spatial::contact::check;
+use wearlab::physics::spatial::{self, Cell};
+use wearlab::preset::{self, BUNDLED, Problem, parse, write_atomically};
 
 const BASE: &str = include_str!("../presets/hertz-check.toml");
 
@@ -28,9 +30,31 @@ fn every_bundled_preset_loads_and_solves() {
             "{}",
             b.file
         );
-        let sol =
-            solve(&p.plane_inputs(), p.plane.model).unwrap_or_else(|e| panic!("{}: {e}", b.file));
-        assert!(sol.mu_star.is_finite());
+        match p.problem {
+            Problem::Plane => {
+                let sol = solve(&p.plane_inputs(), p.plane.model)
+                    .unwrap_or_else(|e| panic!("{}: {e}", b.file));
+                assert!(sol.mu_star.is_finite());
+            }
+            Problem::Spatial => {
+                let inputs = p.spatial_inputs();
+                let sol = spatial::solve(&inputs, p.spatial.time)
+                    .unwrap_or_else(|e| panic!("{}: {e}", b.file));
+                let contact = check(&sol, &Cell::of(&inputs.harmonics));
+                // every spatial preset but the one that shows the failure is in complete contact
+                assert_eq!(
+                    contact.complete,
+                    b.file != "contact-lost.toml",
+                    "{}: {contact:?}",
+                    b.file
+                );
+                if !contact.complete {
+                    let later =
+                        spatial::solve(&inputs, contact.complete_after.unwrap() * 1.01).unwrap();
+                    assert!(check(&later, &Cell::of(&inputs.harmonics)).complete);
+                }
+            }
+        }
     }
     // every file in presets/ is bundled
     let mut on_disk: Vec<String> = std::fs::read_dir("presets")

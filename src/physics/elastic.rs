@@ -65,17 +65,6 @@ pub fn strip_transfer(nu: f64, x: f64) -> StripTransfer {
     }
 }
 
-/// K2(X)/X (dimensionless), finite as X -> 0 where it tends to 4(kappa-1)/(kappa+1)^2.
-/// Used for the layer compliance (1 - nu) K2/(G k) = (1 - nu) h (K2/X)/G.
-pub fn k2_over_x(nu: f64, x: f64) -> f64 {
-    if x < 1e-6 {
-        let kap = kappa(nu);
-        4.0 * (kap - 1.0) / ((kap + 1.0) * (kap + 1.0))
-    } else {
-        strip_transfer(nu, x).k2 / x
-    }
-}
-
 /// chi c12(nu) = chi * integral_0^inf L12(X) dX (dimensionless, negative), the constant of the
 /// wide-strip kernel (4.1). c12 alone diverges as nu -> 1/2; chi c12 stays finite.
 ///
@@ -115,7 +104,6 @@ mod tests {
         assert!((t.k1 / x - 4.0 / (kap + 1.0)).abs() < 1e-8);
         assert!((t.k2 / x - 4.0 * (kap - 1.0) / ((kap + 1.0) * (kap + 1.0))).abs() < 1e-8);
         assert!(t.chi_k12.abs() < 1e-8);
-        assert!((k2_over_x(nu, 1e-7) - k2_over_x(nu, 1e-5)).abs() < 1e-8);
     }
 
     #[test]

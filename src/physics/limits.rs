@@ -81,3 +81,43 @@ pub const SWEEP_POINTS: Limit = Limit {
     allowed: "a whole number from 2 to 2000",
     ok: |v| (2.0..=2000.0).contains(&v) && v.fract() == 0.0,
 };
+/// Sliding speed V [m/s].
+pub const SPEED: Limit = Limit {
+    allowed: "0 <= V < inf (m/s)",
+    ok: non_negative_finite,
+};
+/// Mean pressure pbar [Pa].
+pub const MEAN_PRESSURE: Limit = Limit {
+    allowed: "0 < pbar < inf (Pa)",
+    ok: positive_finite,
+};
+/// Harmonic amplitude A [m].
+pub const AMPLITUDE: Limit = Limit {
+    allowed: "0 <= A < inf (m)",
+    ok: non_negative_finite,
+};
+/// Wavenumber [rad/m].
+pub const WAVENUMBER: Limit = Limit {
+    allowed: "0 <= w < inf (rad/m)",
+    ok: non_negative_finite,
+};
+/// Phase [rad].
+pub const PHASE: Limit = Limit {
+    allowed: "a finite angle (rad)",
+    ok: f64::is_finite,
+};
+/// Time t [s].
+pub const TIME: Limit = Limit {
+    allowed: "0 <= t < inf (s)",
+    ok: non_negative_finite,
+};
+/// Duration of the time charts [s].
+pub const DURATION: Limit = Limit {
+    allowed: "0 < duration < inf (s)",
+    ok: positive_finite,
+};
+/// Points per side of the field grid.
+pub const GRID: Limit = Limit {
+    allowed: "a whole number from 8 to 512",
+    ok: |v| (8.0..=512.0).contains(&v) && v.fract() == 0.0,
+};

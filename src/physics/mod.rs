@@ -5,6 +5,7 @@ pub mod limits;
 pub mod plane;
 pub mod quadrature;
 pub mod roots;
+pub mod spatial;
 
 use thiserror::Error;
 

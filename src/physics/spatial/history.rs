@@ -1,0 +1,104 @@
+//! Time histories (A_n(t), mu*(t)) and the mu*(pbar) sweep of the spatial problem.
+
+use serde::Serialize;
+
+use crate::physics::Spacing;
+use crate::physics::spatial::harmonic::Evolution;
+use crate::physics::spatial::{SpatialInputs, solve_with};
+
+/// Values at evenly spaced times over [0, duration].
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct History {
+    /// t [s].
+    pub time: Vec<f64>,
+    /// A_n(t) [m], one vector per harmonic.
+    pub amplitudes: Vec<Vec<f64>>,
+    /// mu*(t).
+    pub mu_star: Vec<f64>,
+    /// pbar - sum A_n(t)/M_n [Pa], the complete-contact bound.
+    pub lower_bound: Vec<f64>,
+}
+
+/// The history over [0, duration] at `points` >= 2 times.
+pub fn history(
+    inputs: &SpatialInputs,
+    evolutions: &[Evolution],
+    duration: f64,
+    points: usize,
+) -> History {
+    let time = Spacing::Linear.points(0.0, duration, points);
+    let sols: Vec<_> = time
+        .iter()
+        .map(|&t| solve_with(inputs, evolutions, t))
+        .collect();
+    History {
+        amplitudes: (0..inputs.harmonics.len())
+            .map(|n| {
+                sols.iter()
+                    .map(|s| s.harmonics[n].state.amplitude)
+                    .collect()
+            })
+            .collect(),
+        mu_star: sols.iter().map(|s| s.mu_star).collect(),
+        lower_bound: sols
+            .iter()
+            .map(|s| {
+                s.inputs.mean_pressure
+                    - s.harmonics
+                        .iter()
+                        .map(|h| h.state.amplitude / h.evolution.m)
+                        .sum::<f64>()
+            })
+            .collect(),
+        time,
+    }
+}
+
+/// The mean pressures of a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PressureSweep {
+    /// Smallest pbar [Pa].
+    pub min: f64,
+    /// Largest pbar [Pa].
+    pub max: f64,
+    /// Number of points >= 2.
+    pub points: usize,
+    /// Log or linear.
+    pub spacing: Spacing,
+}
+
+/// mu* against pbar at one time; None where contact is not complete.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MeanPressureSweep {
+    /// pbar [Pa].
+    pub mean_pressure: Vec<f64>,
+    /// P = pbar - mu psi [Pa].
+    pub load: Vec<f64>,
+    /// mu*, null where p_min <= 0.
+    pub mu_star: Vec<Option<f64>>,
+}
+
+/// Sweeps pbar at time t. psi does not depend on pbar, and p_min = pbar + (p_min - pbar) at the
+/// inputs' own pbar, so `oscillation_min` (p_min - pbar, from the contact check) decides where
+/// contact is complete.
+pub fn pressure_sweep(
+    inputs: &SpatialInputs,
+    evolutions: &[Evolution],
+    time: f64,
+    oscillation_min: f64,
+    spec: &PressureSweep,
+) -> MeanPressureSweep {
+    let pressures = spec.spacing.points(spec.min, spec.max, spec.points);
+    let psi = solve_with(inputs, evolutions, time).psi;
+    let mu = inputs.friction.coefficient;
+    MeanPressureSweep {
+        load: pressures.iter().map(|p| p - mu * psi).collect(),
+        mu_star: pressures
+            .iter()
+            .map(|p| {
+                (p + oscillation_min > 0.0).then(|| mu + (1.0 + mu * mu) * psi / (p - mu * psi))
+            })
+            .collect(),
+        mean_pressure: pressures,
+    }
+}

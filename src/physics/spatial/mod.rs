@@ -1,0 +1,325 @@
+//! The spatial problem (paper 000; the derivation in `physics/spatial.md`): a rigid wavy punch of
+//! N harmonics in complete contact with an elastic layer bonded to a rigid base; the layer slides
+//! in -x at speed V under Coulomb friction tau = mu p + tau0 (1.1); the punch wears,
+//! dg/dt = -k_w p with k_w = k V (1.2).
+//!
+//! Frame: x along the sliding line (the friction force on the layer points in +x), y across it,
+//! z up out of the layer. Shape g = gbar(t) + U(x, y, t) (1.6).
+
+pub mod contact;
+pub mod field;
+pub mod harmonic;
+pub mod history;
+
+use std::f64::consts::PI;
+
+use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution, state_at};
+use crate::physics::{Friction, Material, SolveError, limits};
+
+/// The inputs of the spatial problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialInputs {
+    /// The layer (h = inf: half-space).
+    pub material: Material,
+    /// Friction law tau = mu p + tau0.
+    pub friction: Friction,
+    /// Wear coefficient k [1/Pa] (the same k as the plane problem).
+    pub wear: f64,
+    /// Sliding speed V [m/s], >= 0.
+    pub sliding_speed: f64,
+    /// Mean pressure pbar [Pa] (load per unit area), > 0.
+    pub mean_pressure: f64,
+    /// The harmonics of the punch shape at t = 0.
+    pub harmonics: Vec<Harmonic>,
+}
+
+impl SpatialInputs {
+    /// k_w = k V [m/(Pa s)]: punch wear depth per unit time per unit pressure.
+    pub fn wear_rate(&self) -> f64 {
+        self.wear * self.sliding_speed
+    }
+
+    /// Checks every field (see `physics::limits`).
+    pub fn validate(&self) -> Result<(), SolveError> {
+        let m = &self.material;
+        [
+            (&limits::YOUNGS_MODULUS, "youngs_modulus", m.youngs_modulus),
+            (&limits::POISSON_RATIO, "poisson_ratio", m.poisson_ratio),
+            (&limits::THICKNESS, "thickness", m.thickness),
+            (
+                &limits::FRICTION,
+                "friction coefficient",
+                self.friction.coefficient,
+            ),
+            (&limits::ADHESION, "adhesion", self.friction.adhesion),
+            (&limits::WEAR, "wear coefficient", self.wear),
+            (&limits::SPEED, "sliding_speed", self.sliding_speed),
+            (&limits::MEAN_PRESSURE, "mean_pressure", self.mean_pressure),
+        ]
+        .iter()
+        .try_for_each(|(limit, name, value)| limit.check(name, *value))
+        .map_err(SolveError::InvalidInput)?;
+        validate_harmonics(&self.harmonics)
+    }
+}
+
+/// Checks the harmonics: at least one; every amplitude, wavenumber and phase in range; no zero
+/// wave vector; no wave vector twice.
+pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
+    if harmonics.is_empty() {
+        return Err(SolveError::InvalidInput(
+            "the punch has no harmonics: add at least one (amplitude, wavenumbers, phases)".into(),
+        ));
+    }
+    for (i, h) in harmonics.iter().enumerate() {
+        let n = i + 1;
+        let named = |name: &str| format!("harmonic {n}: {name}");
+        [
+            (&limits::AMPLITUDE, "amplitude", h.amplitude),
+            (&limits::WAVENUMBER, "wavenumber_x", h.wavenumber_x),
+            (&limits::WAVENUMBER, "wavenumber_y", h.wavenumber_y),
+            (&limits::PHASE, "phase_x", h.phase_x),
+            (&limits::PHASE, "phase_y", h.phase_y),
+        ]
+        .iter()
+        .try_for_each(|(limit, name, value)| limit.check(&named(name), *value))
+        .map_err(SolveError::InvalidInput)?;
+        if h.wavenumber() == 0.0 {
+            return Err(SolveError::InvalidInput(format!(
+                "harmonic {n}: the wave vector is zero (wavenumber_x = wavenumber_y = 0); a constant \
+                 belongs in the mean pressure, not in a harmonic"
+            )));
+        }
+        if let Some(j) = harmonics[..i]
+            .iter()
+            .position(|o| o.wavenumber_x == h.wavenumber_x && o.wavenumber_y == h.wavenumber_y)
+        {
+            return Err(SolveError::InvalidInput(format!(
+                "harmonics {} and {n} have the same wave vector: give each wave vector once",
+                j + 1
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// One harmonic at the time of the solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HarmonicSolution {
+    /// The harmonic as given at t = 0.
+    pub initial: Harmonic,
+    /// Its rates.
+    pub evolution: Evolution,
+    /// Its amplitude and phases at time t.
+    pub state: HarmonicState,
+}
+
+/// The spatial solution at one instant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialSolution {
+    /// The inputs.
+    pub inputs: SpatialInputs,
+    /// t [s].
+    pub time: f64,
+    /// Each harmonic.
+    pub harmonics: Vec<HarmonicSolution>,
+    /// D = <p g_x> [Pa], section 5; psi = -D.
+    pub psi: f64,
+    /// P = pbar - mu psi [Pa]: vertical force on the punch per unit area.
+    pub load: f64,
+    /// T = mu pbar + tau0 + psi [Pa]: holding force per unit area along x.
+    pub tangential: f64,
+    /// mu* = mu + (1 + mu^2) psi/P.
+    pub mu_star: f64,
+}
+
+/// psi = -D with D = sum A^2 wx sin(phi) Y/(2M), Y = 1/2 if wy != 0 else sin^2(rho_y) (section 5).
+pub fn deformation_friction(harmonics: &[HarmonicSolution]) -> f64 {
+    -harmonics
+        .iter()
+        .map(|h| {
+            let y = if h.initial.wavenumber_y != 0.0 {
+                0.5
+            } else {
+                h.state.phase_y.sin().powi(2)
+            };
+            h.state.amplitude.powi(2) * h.initial.wavenumber_x * h.evolution.phase_lead.sin() * y
+                / (2.0 * h.evolution.m)
+        })
+        .sum::<f64>()
+}
+
+/// The evolutions of all harmonics (the costly, time-independent stage).
+pub fn evolutions(inputs: &SpatialInputs) -> Vec<Evolution> {
+    inputs
+        .harmonics
+        .iter()
+        .map(|h| evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h))
+        .collect()
+}
+
+/// The solution at time t [s] from precomputed evolutions.
+pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -> SpatialSolution {
+    let harmonics: Vec<HarmonicSolution> = inputs
+        .harmonics
+        .iter()
+        .zip(evolutions)
+        .map(|(h, ev)| HarmonicSolution {
+            initial: *h,
+            evolution: *ev,
+            state: state_at(h, ev, time),
+        })
+        .collect();
+    let psi = deformation_friction(&harmonics);
+    let mu = inputs.friction.coefficient;
+    let pbar = inputs.mean_pressure;
+    let load = pbar - mu * psi;
+    SpatialSolution {
+        time,
+        psi,
+        load,
+        tangential: mu * pbar + inputs.friction.adhesion + psi,
+        mu_star: mu + (1.0 + mu * mu) * psi / load,
+        harmonics,
+        inputs: inputs.clone(),
+    }
+}
+
+/// Validates and solves at time t [s] >= 0.
+pub fn solve(inputs: &SpatialInputs, time: f64) -> Result<SpatialSolution, SolveError> {
+    inputs.validate()?;
+    limits::TIME
+        .check("time", time)
+        .map_err(SolveError::InvalidInput)?;
+    Ok(solve_with(inputs, &evolutions(inputs), time))
+}
+
+impl SpatialSolution {
+    /// Contact pressure p(x, y) [Pa] = pbar + sum (A/M) sin(wx x + rho_x + phi) sin(wy y + rho_y).
+    pub fn pressure(&self, x: f64, y: f64) -> f64 {
+        self.inputs.mean_pressure
+            + self
+                .harmonics
+                .iter()
+                .map(|h| {
+                    h.state.amplitude / h.evolution.m
+                        * (h.initial.wavenumber_x * x + h.state.phase_x + h.evolution.phase_lead)
+                            .sin()
+                        * (h.initial.wavenumber_y * y + h.state.phase_y).sin()
+                })
+                .sum::<f64>()
+    }
+
+    /// Shear stress tau = mu p + tau0 [Pa] on the layer, along +x.
+    pub fn shear(&self, x: f64, y: f64) -> f64 {
+        self.inputs.friction.coefficient * self.pressure(x, y) + self.inputs.friction.adhesion
+    }
+
+    /// The oscillating part of the shape U(x, y, t) [m] (1.6).
+    pub fn shape(&self, x: f64, y: f64) -> f64 {
+        self.harmonics
+            .iter()
+            .map(|h| {
+                h.state.amplitude
+                    * (h.initial.wavenumber_x * x + h.state.phase_x).sin()
+                    * (h.initial.wavenumber_y * y + h.state.phase_y).sin()
+            })
+            .sum()
+    }
+
+    /// Punch wear W(x, y, t) = g(x, y, 0) - g(x, y, t) [m]: the mean wear k_w pbar t plus the
+    /// change of the oscillating part.
+    pub fn wear(&self, x: f64, y: f64) -> f64 {
+        let initial: f64 = self
+            .harmonics
+            .iter()
+            .map(|h| {
+                let w = &h.initial;
+                w.amplitude
+                    * (w.wavenumber_x * x + w.phase_x).sin()
+                    * (w.wavenumber_y * y + w.phase_y).sin()
+            })
+            .sum();
+        self.mean_wear() + initial - self.shape(x, y)
+    }
+
+    /// Mean wear depth k_w pbar t [m] (gbar(0) - gbar(t), section 3).
+    pub fn mean_wear(&self) -> f64 {
+        self.inputs.wear_rate() * self.inputs.mean_pressure * self.time
+    }
+}
+
+/// How one axis of the pattern repeats.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Period {
+    /// No harmonic varies along this axis.
+    Constant,
+    /// Every nonzero wavenumber is an integer multiple of `base` [rad/m]; the period is 2 pi/base.
+    Commensurate { base: f64 },
+    /// The wavenumbers have no common base (up to 1/64 of the smallest): no finite period.
+    Incommensurate,
+}
+
+/// The common base of wavenumbers, if any: the smallest nonzero one divided by q <= 64 such that
+/// every wavenumber is an integer multiple, to relative accuracy 1e-9.
+pub fn period_of(wavenumbers: impl Iterator<Item = f64>) -> Period {
+    let ws: Vec<f64> = wavenumbers.filter(|w| *w != 0.0).collect();
+    let Some(w_min) = ws.iter().copied().reduce(f64::min) else {
+        return Period::Constant;
+    };
+    (1..=64)
+        .map(|q| w_min / q as f64)
+        .find(|base| {
+            ws.iter().all(|w| {
+                let ratio = w / base;
+                (ratio - ratio.round()).abs() < 1e-9 * ratio
+            })
+        })
+        .map_or(Period::Incommensurate, |base| Period::Commensurate { base })
+}
+
+/// The cell shown and searched: one period per axis, or (incommensurate or constant axes) the
+/// longest wavelength present.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cell {
+    /// Extent along x [m].
+    pub lx: f64,
+    /// Extent along y [m].
+    pub ly: f64,
+    /// Periodicity along x.
+    pub period_x: Period,
+    /// Periodicity along y.
+    pub period_y: Period,
+}
+
+impl Cell {
+    /// The cell of a set of harmonics.
+    pub fn of(harmonics: &[Harmonic]) -> Cell {
+        let k_min = harmonics
+            .iter()
+            .map(Harmonic::wavenumber)
+            .fold(f64::INFINITY, f64::min);
+        let longest = 2.0 * PI / k_min;
+        let extent = |p: Period, ws: &mut dyn Iterator<Item = f64>| match p {
+            Period::Commensurate { base } => 2.0 * PI / base,
+            Period::Incommensurate => {
+                2.0 * PI / ws.filter(|w| *w > 0.0).fold(f64::INFINITY, f64::min)
+            }
+            Period::Constant => longest,
+        };
+        let period_x = period_of(harmonics.iter().map(|h| h.wavenumber_x));
+        let period_y = period_of(harmonics.iter().map(|h| h.wavenumber_y));
+        Cell {
+            lx: extent(period_x, &mut harmonics.iter().map(|h| h.wavenumber_x)),
+            ly: extent(period_y, &mut harmonics.iter().map(|h| h.wavenumber_y)),
+            period_x,
+            period_y,
+        }
+    }
+
+    /// True when the pattern repeats in the cell along both axes.
+    pub fn is_periodic(&self) -> bool {
+        !matches!(self.period_x, Period::Incommensurate)
+            && !matches!(self.period_y, Period::Incommensurate)
+    }
+}

@@ -1,0 +1,151 @@
+//! Engineering values: parse "3 GPa", "50mm", "1e-9", "inf"; format with SI prefixes.
+
+/// SI prefixes from 1e-15 to 1e12 with their powers of ten (u stands for micro).
+const PREFIXES: [(&str, i32); 10] = [
+    ("f", -15),
+    ("p", -12),
+    ("n", -9),
+    ("u", -6),
+    ("m", -3),
+    ("", 0),
+    ("k", 3),
+    ("M", 6),
+    ("G", 9),
+    ("T", 12),
+];
+
+/// value * 10^exp, dividing for negative powers so that "2.5 u" is exactly 2.5e-6.
+fn scale(value: f64, exp: i32) -> f64 {
+    if exp < 0 {
+        value / 10f64.powi(-exp)
+    } else {
+        value * 10f64.powi(exp)
+    }
+}
+
+/// Formats `value` with three significant digits and an SI prefix on `unit`, e.g. "3.00 GPa",
+/// "50.0 mm", "-3.10 kPa". Units that read badly with prefixes ("", "1/Pa", "rad/m") are given in
+/// scientific notation instead.
+pub fn format_si(value: f64, unit: &str) -> String {
+    if !value.is_finite() {
+        return if value.is_nan() {
+            "-".into()
+        } else if value > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        };
+    }
+    let prefixable = !unit.is_empty() && !unit.contains('/');
+    if !prefixable {
+        let text = if value == 0.0 {
+            "0".to_string()
+        } else if (1e-2..1e4).contains(&value.abs()) {
+            format!("{}", round_sig(value, 4))
+        } else {
+            format!("{value:.3e}")
+        };
+        return if unit.is_empty() {
+            text
+        } else {
+            format!("{text} {unit}")
+        };
+    }
+    if value == 0.0 {
+        return format!("0 {unit}");
+    }
+    let mag = value.abs();
+    let (prefix, exp) = PREFIXES
+        .iter()
+        .rev()
+        .find(|(_, e)| mag >= scale(0.9995, *e))
+        .copied()
+        .unwrap_or(PREFIXES[0]);
+    let scaled = scale(value, -exp);
+    let digits = if scaled.abs() >= 99.95 {
+        0
+    } else if scaled.abs() >= 9.995 {
+        1
+    } else {
+        2
+    };
+    format!("{scaled:.digits$} {prefix}{unit}")
+}
+
+fn round_sig(value: f64, sig: i32) -> f64 {
+    let mag = value.abs().log10().floor() as i32;
+    let factor = 10f64.powi(sig - 1 - mag);
+    (value * factor).round() / factor
+}
+
+/// Parses a number with an optional SI prefix and unit: "3e9", "3 GPa", "50mm", "0.3", "inf",
+/// "2.5 um". The unit, when given, must be `unit` (with or without a prefix).
+pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
+    let t = text.trim();
+    if t.is_empty() {
+        return Err("empty: type a number, e.g. 3e9 or 3 GPa".into());
+    }
+    if t.eq_ignore_ascii_case("inf") {
+        return Ok(f64::INFINITY);
+    }
+    // the longest prefix of t that parses as a number
+    let split = (1..=t.len())
+        .rev()
+        .filter(|&i| t.is_char_boundary(i))
+        .find(|&i| t[..i].trim().parse::<f64>().is_ok() && !t[..i].ends_with(['e', 'E']))
+        .ok_or_else(|| format!("'{t}' is not a number"))?;
+    let number: f64 = t[..split]
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{t}' is not a number"))?;
+    let rest = t[split..].trim();
+    if rest.is_empty() {
+        return Ok(number);
+    }
+    let rest = rest
+        .strip_suffix(unit)
+        .filter(|_| !unit.is_empty())
+        .unwrap_or(rest);
+    let rest = rest.replace('µ', "u");
+    if rest.is_empty() {
+        return Ok(number);
+    }
+    match PREFIXES.iter().find(|(p, _)| !p.is_empty() && *p == rest) {
+        Some((_, exp)) => Ok(scale(number, *exp)),
+        None => Err(format!(
+            "'{t}': unknown unit; write a plain number or a prefixed {unit} (e.g. k{unit}, M{unit})"
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_with_prefixes() {
+        assert_eq!(format_si(3e9, "Pa"), "3.00 GPa");
+        assert_eq!(format_si(0.05, "m"), "50.0 mm");
+        assert_eq!(format_si(-3100.0, "Pa"), "-3.10 kPa");
+        assert_eq!(format_si(1e-4, "m"), "100 um");
+        assert_eq!(format_si(0.0, "m"), "0 m");
+        assert_eq!(format_si(f64::INFINITY, "m"), "inf");
+        assert_eq!(format_si(2e-11, "1/Pa"), "2.000e-11 1/Pa");
+        assert_eq!(format_si(0.35, ""), "0.35");
+        assert_eq!(format_si(0.999_96, "m"), "1.00 m");
+    }
+
+    #[test]
+    fn parses_engineering_text() {
+        assert_eq!(parse_si("3e9", "Pa"), Ok(3e9));
+        assert_eq!(parse_si("3 GPa", "Pa"), Ok(3e9));
+        assert_eq!(parse_si("50mm", "m"), Ok(0.05));
+        assert_eq!(parse_si(" 2.5 um ", "m"), Ok(2.5e-6));
+        assert_eq!(parse_si("inf", "m"), Ok(f64::INFINITY));
+        assert_eq!(parse_si("1e-9", "1/Pa"), Ok(1e-9));
+        assert_eq!(parse_si("7 k", "Pa"), Ok(7000.0));
+        assert!(parse_si("abc", "Pa").unwrap_err().contains("not a number"));
+        assert!(parse_si("3 GN", "Pa").unwrap_err().contains("unknown unit"));
+        assert!(parse_si("", "Pa").is_err());
+    }
+}
