@@ -155,3 +155,127 @@ fn unsolvable_input_exits_with_3_and_says_why() {
         "{err}"
     );
 }
+
+#[test]
+fn spatial_json_has_every_key_of_the_contract() {
+    let out = wearlab()
+        .args([
+            "solve",
+            "presets/dispersion.toml",
+            "--time",
+            "100",
+            "--probe",
+            "0,0",
+            "--probe",
+            "1e-3,2e-4",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in [
+        "problem",
+        "time",
+        "mean_pressure",
+        "load",
+        "mu_star",
+        "psi",
+        "harmonics",
+        "contact",
+        "probes",
+        "sweep",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(
+        (v["problem"].as_str(), v["time"].as_f64()),
+        (Some("spatial"), Some(100.0))
+    );
+    let harmonics = v["harmonics"].as_array().unwrap();
+    assert_eq!(harmonics.len(), 4);
+    for key in [
+        "k",
+        "decay_rate",
+        "drift_velocity",
+        "phase_rate",
+        "phase_lead",
+        "pressure_per_amplitude",
+        "amplitude",
+        "phase_x",
+        "phase_y",
+    ] {
+        assert!(harmonics[0][key].is_number(), "harmonics[].{key}");
+    }
+    for key in ["min_pressure", "at", "lower_bound", "complete", "exact"] {
+        assert!(v["contact"].get(key).is_some(), "contact.{key}");
+    }
+    assert_eq!(v["contact"]["exact"], true);
+    let probes = v["probes"].as_array().unwrap();
+    assert_eq!(probes.len(), 2);
+    assert_eq!(
+        (probes[1]["x"].as_f64(), probes[1]["y"].as_f64()),
+        (Some(1e-3), Some(2e-4))
+    );
+    for key in ["pressure", "shear", "shape"] {
+        assert!(probes[0][key].is_number(), "probes[].{key}");
+    }
+    for key in ["mean_pressure", "load", "mu_star"] {
+        assert_eq!(v["sweep"][key].as_array().unwrap().len(), 60, "sweep.{key}");
+    }
+}
+
+#[test]
+fn lost_contact_exits_with_3_and_says_where() {
+    let out = wearlab()
+        .args(["solve", "presets/contact-lost.toml"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(3));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(
+        err.trim(),
+        "error: complete contact lost: p_min = -5.32 MPa at x = 736 um, y = 0 m; it holds after t = 35.2 s"
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["contact"]["complete"], false);
+    // after the wear has run long enough, contact is complete
+    let later = wearlab()
+        .args(["solve", "presets/contact-lost.toml", "--time", "40"])
+        .output()
+        .unwrap();
+    assert!(later.status.success());
+    assert_eq!(
+        wearlab()
+            .args(["solve", "presets/contact-lost.toml", "--time", "-1"])
+            .output()
+            .unwrap()
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        wearlab()
+            .args(["solve", "presets/dispersion.toml", "--probe", "1;2"])
+            .output()
+            .unwrap()
+            .status
+            .code(),
+        Some(2)
+    );
+}
+
+#[test]
+fn spatial_csv_is_the_field_over_the_cell() {
+    let out = wearlab()
+        .args(["solve", "presets/jgh-egg-box.toml", "--format", "csv"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.lines().next(), Some("x,y,pressure,shear,shape,wear"));
+    assert_eq!(text.lines().count(), 1 + 64 * 64);
+}

@@ -195,3 +195,34 @@ fn defaults_for_optional_sections() {
     );
     assert_eq!(p.plane.sweep, preset::default_load_sweep(100.0));
 }
+
+#[test]
+fn broken_spatial_sections_name_the_line() {
+    let base = include_str!("../presets/wave-thick-layer.toml");
+    let zero = base.replace("wavenumber_x = 6283.185307179586", "wavenumber_x = 0.0");
+    let err = error_of(&zero);
+    assert_eq!(
+        err,
+        format!(
+            "lab/broken.toml:{}: harmonic 1: the wave vector is zero (wavenumber_x = wavenumber_y = 0); a constant belongs in the mean pressure, not in a harmonic",
+            line_of(&zero, "[[spatial.harmonics]]")
+        )
+    );
+    let negative = base.replace("amplitude = 1.0e-6", "amplitude = -1.0e-6");
+    assert_eq!(
+        error_of(&negative),
+        format!(
+            "lab/broken.toml:{}: amplitude = -0.000001 is out of range: allowed 0 <= A < inf (m)",
+            line_of(&negative, "amplitude")
+        )
+    );
+    let start = base.find("[[spatial.harmonics]]").unwrap();
+    let none = &base[..start];
+    assert_eq!(
+        error_of(none),
+        format!(
+            "lab/broken.toml:{}: [spatial] has no [[spatial.harmonics]]: the punch needs at least one harmonic",
+            line_of(none, "[spatial]")
+        )
+    );
+}
