@@ -1,6 +1,7 @@
 //! wearlab: sliding contact with friction and wear — the physics, the preset files and the
 //! reports. No terminal code lives here.
 
+pub mod engine;
 pub mod physics;
 pub mod preset;
 pub mod report;

@@ -5,6 +5,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+mod tui;
+
 use wearlab::physics::SolveError;
 use wearlab::preset::{self, Preset, Problem};
 use wearlab::report;
@@ -26,6 +28,12 @@ struct Cli {
     command: Option<Command>,
     /// Preset file to open (default: the built-in default preset).
     preset: Option<PathBuf>,
+    /// Draw charts with ASCII dots instead of Braille (for terminals without Braille glyphs).
+    #[arg(long)]
+    ascii: bool,
+    /// Capture the mouse (off by default, so the terminal's own selection keeps working).
+    #[arg(long)]
+    mouse: bool,
 }
 
 #[derive(Subcommand)]
@@ -84,7 +92,13 @@ fn main() -> ExitCode {
             time,
             probe,
         }) => solve(&preset, format, points as usize, time, &probe),
-        None => overview(cli.preset),
+        None => explore(
+            cli.preset,
+            tui::Options {
+                ascii: cli.ascii,
+                mouse: cli.mouse,
+            },
+        ),
     }
 }
 
@@ -146,28 +160,19 @@ fn solve(
     }
 }
 
-fn overview(path: Option<PathBuf>) -> ExitCode {
-    let preset = match path {
-        Some(p) => match load(&p) {
+fn explore(path: Option<PathBuf>, options: tui::Options) -> ExitCode {
+    let preset = match &path {
+        Some(p) => match load(p) {
             Ok(p) => p,
             Err(code) => return code,
         },
         None => preset::default_preset(),
     };
-    match report::plane_report(&preset, 201) {
-        Ok(r) => {
-            println!("{}\n", preset.name);
-            println!(
-                "model {}  P = {:.4e} N/m  a = {:.4e} m  b = {:.4e} m  mu* = {:.6}",
-                r.model.name(),
-                r.load,
-                r.a,
-                r.b,
-                r.mu_star
-            );
-            println!("\nRun `wearlab solve PRESET.toml` for the full result (JSON or CSV).");
-            ExitCode::SUCCESS
+    match tui::run(preset, path, options) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: the terminal failed: {e}");
+            ExitCode::FAILURE
         }
-        Err(e) => solver_failure(e),
     }
 }
