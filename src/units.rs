@@ -24,8 +24,8 @@ fn scale(value: f64, exp: i32) -> f64 {
 }
 
 /// Formats `value` with three significant digits and an SI prefix on `unit`, e.g. "3.00 GPa",
-/// "50.0 mm", "-3.10 kPa". Units that read badly with prefixes ("", "1/Pa", "rad/m") are given in
-/// scientific notation instead.
+/// "50.0 mm", "-3.10 kPa", "-275 nm/s". Units that read badly with prefixes ("", "1/Pa", "rad/m")
+/// are given in plain or scientific notation instead.
 pub fn format_si(value: f64, unit: &str) -> String {
     if !value.is_finite() {
         return if value.is_nan() {
@@ -36,7 +36,7 @@ pub fn format_si(value: f64, unit: &str) -> String {
             "-inf".into()
         };
     }
-    let prefixable = !unit.is_empty() && !unit.contains('/');
+    let prefixable = !unit.is_empty() && !unit.starts_with("1/") && !unit.starts_with("rad");
     if !prefixable {
         let text = if value == 0.0 {
             "0".to_string()
@@ -133,6 +133,9 @@ mod tests {
         assert_eq!(format_si(2e-11, "1/Pa"), "2.000e-11 1/Pa");
         assert_eq!(format_si(0.35, ""), "0.35");
         assert_eq!(format_si(0.999_96, "m"), "1.00 m");
+        assert_eq!(format_si(-2.749e-7, "m/s"), "-275 nm/s");
+        assert_eq!(format_si(5000.0, "N/m"), "5.00 kN/m");
+        assert_eq!(format_si(3141.6, "rad/m"), "3142 rad/m");
     }
 
     #[test]

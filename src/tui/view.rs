@@ -50,6 +50,9 @@ pub struct ChartSpec {
     pub curves: Vec<Curve>,
     /// A marker point (current operating point).
     pub marker: Option<(f64, f64)>,
+    /// The y-range follows only the first curve (and the marker); the others are overlays,
+    /// clipped, so that a model far outside its range does not flatten the one being explored.
+    pub overlays: bool,
 }
 
 const COLORS: [Color; 6] = [
@@ -95,8 +98,11 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         Constraint::Length(1),
     ])
     .areas(area);
-    let [form_area, right] =
-        Layout::horizontal([Constraint::Length(34), Constraint::Min(40)]).areas(main);
+    let [form_area, right] = Layout::horizontal([
+        Constraint::Length(if area.width < 100 { 30 } else { 34 }),
+        Constraint::Min(40),
+    ])
+    .areas(main);
     let status_height = if area.height >= 32 { 9 } else { 7 };
     let [chart_area, status_area] =
         Layout::vertical([Constraint::Min(8), Constraint::Length(status_height)]).areas(right);
@@ -143,7 +149,8 @@ fn draw_form(app: &App, frame: &mut Frame, area: Rect) {
             (Mode::Editing(buffer), true) => format!("{buffer}_"),
             _ => form::show(&app.preset, r),
         };
-        let text = format!("  {:<9}{:>20}", r.label, value);
+        let width = (inner.width as usize).saturating_sub(11);
+        let text = format!("  {:<9}{value:>width$}", r.label);
         let style = if i == app.selected {
             Style::default().add_modifier(Modifier::REVERSED)
         } else {
@@ -260,6 +267,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 x_unit: "m",
                 y_unit: "Pa",
                 log_x: false,
+                overlays: false,
                 curves: vec![
                     Curve {
                         name: "pressure q2".into(),
@@ -291,6 +299,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                     x_unit: "m",
                     y_unit: "m",
                     log_x: false,
+                    overlays: false,
                     curves: vec![Curve {
                         name: "wear per pass".into(),
                         points: x
@@ -307,6 +316,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                     x_unit: "m",
                     y_unit: "",
                     log_x: false,
+                    overlays: false,
                     curves: vec![Curve {
                         name: "wear rate k q2".into(),
                         points: x
@@ -330,6 +340,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 x_unit: "N/m",
                 y_unit: "",
                 log_x: log,
+                overlays: true,
                 curves: out
                     .sweeps
                     .iter()
@@ -348,6 +359,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 x_unit: "N/m",
                 y_unit: "m",
                 log_x: log,
+                overlays: false,
                 curves: vec![
                     sweep_curve("a (trailing)".into(), &s.a, &s.load, 1.0),
                     sweep_curve("b (leading)".into(), &s.b, &s.load, 1.0),
@@ -379,6 +391,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     x_unit: "m",
                     y_unit: "Pa",
                     log_x: false,
+                    overlays: false,
                     curves: vec![Curve {
                         name: format!("pressure {y_label}"),
                         points: line(&f.pressure),
@@ -391,6 +404,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     x_unit: "m",
                     y_unit: "m",
                     log_x: false,
+                    overlays: false,
                     curves: vec![Curve {
                         name: "shape U".into(),
                         points: line(&f.shape),
@@ -419,6 +433,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     x_unit: "s",
                     y_unit: "m",
                     log_x: false,
+                    overlays: false,
                     curves: amplitudes,
                     marker: out
                         .solution
@@ -432,6 +447,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     x_unit: "s",
                     y_unit: "",
                     log_x: false,
+                    overlays: false,
                     curves: vec![Curve {
                         name: "mu*(t)".into(),
                         points: h
@@ -455,6 +471,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                 x_unit: "Pa",
                 y_unit: "",
                 log_x: log,
+                overlays: false,
                 curves: vec![Curve {
                     name: "mu* (complete contact only)".into(),
                     points: s
@@ -504,8 +521,16 @@ fn draw_chart(spec: &ChartSpec, style: RenderOptions, frame: &mut Frame, area: R
             .flat_map(|c| c.points.iter())
             .chain(spec.marker.iter())
     };
+    let focus = || {
+        let n = if spec.overlays { 1 } else { spec.curves.len() };
+        spec.curves
+            .iter()
+            .take(n)
+            .flat_map(|c| c.points.iter())
+            .chain(spec.marker.iter())
+    };
     let xb = bounds(all().map(|p| p.0));
-    let yb = bounds(all().map(|p| p.1));
+    let yb = bounds(focus().map(|p| p.1));
     let marker = if style.ascii {
         Marker::Dot
     } else {
@@ -719,20 +744,20 @@ fn draw_status(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         Some(Output::Spatial(Ok(out))) => {
             let s = &out.solution;
             lines.push(Line::from(format!(
-                "t = {}  mu* = {:.6}  psi = {}  P = {}",
+                "t = {}  mu* = {:.6}  psi = {}  (mu = {})",
                 format_si(s.time, "s"),
                 s.mu_star,
                 format_si(s.psi, "Pa"),
-                format_si(s.load, "Pa")
+                app.preset.friction.coefficient
             )));
             match out.contact.failure() {
                 Some(why) => lines.push(Line::styled(why, bad)),
                 None => lines.push(Line::styled(
                     format!(
-                        "complete contact: p_min = {} ({})",
+                        "complete contact, p_min = {} ({})",
                         format_si(out.contact.min_pressure, "Pa"),
                         if out.contact.exact {
-                            "certified over the cell"
+                            "certified"
                         } else {
                             "bound"
                         }
@@ -743,7 +768,7 @@ fn draw_status(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
             for (n, h) in s.harmonics.iter().enumerate() {
                 let e = &h.evolution;
                 lines.push(Line::from(format!(
-                    "{}: kh = {:.3}  1/beta = {}  c = {}  phi = {:+.3}",
+                    "{}: kh {:.3}  1/beta {}  c {}  phi {:+.3}",
                     n + 1,
                     h.initial.wavenumber() * app.preset.material.thickness,
                     if e.decay_rate > 0.0 {
@@ -793,12 +818,19 @@ fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) 
 }
 
 fn draw_footer(app: &App, frame: &mut Frame, area: Rect) {
-    let keys = match app.preset.problem {
-        Problem::Plane => {
-            "↑↓ field ←→ nudge ⇧ more ⏎ type Tab chart p problem m model o open s save e export u undo ? help q quit"
+    let wide = area.width >= 120;
+    let keys = match (app.preset.problem, wide) {
+        (Problem::Plane, true) => {
+            "↑↓ field  ←→ nudge (⇧ more)  ⏎ type  Tab chart  p problem  m model  o open  s save  e export  u undo  ? help  q quit"
         }
-        Problem::Spatial => {
-            "↑↓ field ←→ nudge ⏎ type Tab chart space play +/- harmonic p problem o open s save e export u undo ? help q quit"
+        (Problem::Plane, false) => {
+            "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ?help q"
+        }
+        (Problem::Spatial, true) => {
+            "↑↓ field  ←→ nudge (⇧ more)  ⏎ type  Tab chart  space play  +/- harmonic  p problem  o open  s save  e export  ? help  q"
+        }
+        (Problem::Spatial, false) => {
+            "↑↓ ←→ ⏎ type Tab chart space play +/- harm. p problem o s e u ?help q"
         }
     };
     frame.render_widget(
