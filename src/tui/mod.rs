@@ -5,6 +5,9 @@ pub mod app;
 pub mod form;
 pub mod view;
 
+#[cfg(test)]
+mod tests;
+
 use std::io;
 use std::path::{Path, PathBuf};
 use std::time::Duration;

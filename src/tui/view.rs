@@ -899,7 +899,7 @@ fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
         ("o", "open a preset (bundled or your folder)"),
         (
             "s",
-            "save the preset (asks for a name; never overwrites silently)",
+            "save the preset (asks a name; asks before overwriting)",
         ),
         ("e", "export the visible chart's data as CSV"),
         ("u", "undo the last change"),
@@ -925,6 +925,21 @@ fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
             .title(" help (any key closes) "),
     );
     frame.render_widget(p, rect);
+}
+
+/// A preset description as paragraphs: its hard line breaks are joined, except before
+/// "Look at:" and "Try:", which start lines of their own.
+fn reflow(text: &str) -> String {
+    let mut out = String::new();
+    for line in text.trim().lines().map(str::trim) {
+        if line.starts_with("Look at") || line.starts_with("Try") {
+            out.push('\n');
+        } else if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(line);
+    }
+    out
 }
 
 fn draw_picker(
@@ -960,7 +975,7 @@ fn draw_picker(
     frame.render_widget(Paragraph::new(lines).scroll((offset as u16, 0)), list);
     if let Some(e) = entries.get(selected) {
         let text = match &e.preset {
-            Ok(p) => format!("{}\n{}", e.source, p.description.trim()),
+            Ok(p) => format!("{}\n{}", e.source, reflow(&p.description)),
             Err(why) => format!("{}\ncannot be opened: {why}", e.source),
         };
         frame.render_widget(
