@@ -7,7 +7,7 @@ use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::hint::black_box;
 use wearlab::engine::Engine;
-use wearlab::preset::BUNDLED;
+use wearlab::preset::bundled;
 
 // The explorer lives in the binary; the bench compiles the same model, form and view modules
 // (not the event loop). Parts the bench does not call are allowed to be unused here.
@@ -23,12 +23,7 @@ use tui::app::{App, Command, Msg, update};
 use tui::view::{RenderOptions, view};
 
 fn app_on(file: &str, engine: &mut Engine) -> App {
-    let preset = BUNDLED
-        .iter()
-        .find(|b| b.file == file)
-        .unwrap()
-        .load()
-        .unwrap();
+    let preset = bundled(file).unwrap().unwrap();
     let mut app = App::new(preset, None, None);
     for cmd in app.start() {
         if let Command::Solve(g, p) = cmd {

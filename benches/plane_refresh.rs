@@ -6,19 +6,14 @@ use wearlab::physics::Spacing;
 use wearlab::physics::plane::profile::profile;
 use wearlab::physics::plane::sweep::{LoadSweep, sweep};
 use wearlab::physics::plane::{Model, solve};
-use wearlab::preset::BUNDLED;
+use wearlab::preset::bundled;
 
 fn refresh(c: &mut Criterion) {
     for (file, model) in [
         ("polymer-coating.toml", Model::Wide),
         ("thin-strip-winkler.toml", Model::Narrow),
     ] {
-        let preset = BUNDLED
-            .iter()
-            .find(|b| b.file == file)
-            .unwrap()
-            .load()
-            .unwrap();
+        let preset = bundled(file).unwrap().unwrap();
         let inputs = preset.plane_inputs();
         let loads = LoadSweep {
             points: 200,

@@ -692,6 +692,11 @@ impl Bundled {
     }
 }
 
+/// The bundled preset of that file name, parsed (None for an unknown name).
+pub fn bundled(file: &str) -> Option<Result<Preset, PresetError>> {
+    BUNDLED.iter().find(|b| b.file == file).map(Bundled::load)
+}
+
 /// The built-in default preset (the first bundled one).
 pub fn default_preset() -> Preset {
     BUNDLED[0]

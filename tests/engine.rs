@@ -1,15 +1,9 @@
 //! The engine's stages: an edit recomputes only what it touches (design.md, "Incremental re-solve").
 
 use wearlab::engine::{Engine, Output, StageCounts};
-use wearlab::preset::BUNDLED;
 
 fn bundled(file: &str) -> wearlab::preset::Preset {
-    BUNDLED
-        .iter()
-        .find(|b| b.file == file)
-        .unwrap()
-        .load()
-        .unwrap()
+    wearlab::preset::bundled(file).unwrap().unwrap()
 }
 
 #[test]

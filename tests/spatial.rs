@@ -11,7 +11,7 @@ use wearlab::physics::spatial::contact::check;
 use wearlab::physics::spatial::harmonic::{Harmonic, evolution, layer_response};
 use wearlab::physics::spatial::{Cell, SpatialInputs, solve};
 use wearlab::physics::{Friction, Material};
-use wearlab::preset::BUNDLED;
+use wearlab::preset::bundled;
 
 fn wave(a: f64, wx: f64, wy: f64, px: f64, py: f64) -> Harmonic {
     Harmonic {
@@ -50,13 +50,7 @@ fn inputs(
 }
 
 fn preset(file: &str) -> SpatialInputs {
-    BUNDLED
-        .iter()
-        .find(|b| b.file == file)
-        .unwrap()
-        .load()
-        .unwrap()
-        .spatial_inputs()
+    bundled(file).unwrap().unwrap().spatial_inputs()
 }
 
 #[test]

@@ -28,6 +28,13 @@ impl Limit {
     }
 }
 
+/// Checks (limit, name, value) triples in order; the first refusal is the error.
+pub fn check_all(checks: &[(&Limit, &str, f64)]) -> Result<(), String> {
+    checks
+        .iter()
+        .try_for_each(|(limit, name, value)| limit.check(name, *value))
+}
+
 fn positive_finite(v: f64) -> bool {
     v > 0.0 && v.is_finite()
 }

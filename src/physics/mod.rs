@@ -48,6 +48,35 @@ pub struct Friction {
     pub adhesion: f64,
 }
 
+/// Checks what both problems share: the material, the friction law and the wear coefficient.
+pub(crate) fn validate_common(
+    material: &Material,
+    friction: &Friction,
+    wear: f64,
+) -> Result<(), SolveError> {
+    limits::check_all(&[
+        (
+            &limits::YOUNGS_MODULUS,
+            "youngs_modulus",
+            material.youngs_modulus,
+        ),
+        (
+            &limits::POISSON_RATIO,
+            "poisson_ratio",
+            material.poisson_ratio,
+        ),
+        (&limits::THICKNESS, "thickness", material.thickness),
+        (
+            &limits::FRICTION,
+            "friction coefficient",
+            friction.coefficient,
+        ),
+        (&limits::ADHESION, "adhesion", friction.adhesion),
+        (&limits::WEAR, "wear coefficient", wear),
+    ])
+    .map_err(SolveError::InvalidInput)
+}
+
 /// Why a solver could not answer. The text is meant for the user.
 #[derive(Clone, Debug, Error, PartialEq)]
 pub enum SolveError {

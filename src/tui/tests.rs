@@ -11,12 +11,7 @@ use crate::tui::form::{self, Key};
 use crate::tui::view::{RenderOptions, view};
 
 fn bundled(file: &str) -> Preset {
-    BUNDLED
-        .iter()
-        .find(|b| b.file == file)
-        .unwrap()
-        .load()
-        .unwrap()
+    wearlab::preset::bundled(file).unwrap().unwrap()
 }
 
 fn key(code: KeyCode) -> Msg {

@@ -15,7 +15,7 @@ pub mod wide;
 
 use serde::{Deserialize, Serialize};
 
-use crate::physics::{Friction, Material, SolveError, limits};
+use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 /// Which asymptotic model of the strip to solve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -63,23 +63,11 @@ impl PlaneInputs {
 
     /// Checks every field against its allowed range (see `physics::limits`).
     pub fn validate(&self) -> Result<(), SolveError> {
-        let m = &self.material;
-        [
-            (&limits::YOUNGS_MODULUS, "youngs_modulus", m.youngs_modulus),
-            (&limits::POISSON_RATIO, "poisson_ratio", m.poisson_ratio),
-            (&limits::THICKNESS, "thickness", m.thickness),
-            (
-                &limits::FRICTION,
-                "friction coefficient",
-                self.friction.coefficient,
-            ),
-            (&limits::ADHESION, "adhesion", self.friction.adhesion),
-            (&limits::WEAR, "wear coefficient", self.wear),
+        validate_common(&self.material, &self.friction, self.wear)?;
+        limits::check_all(&[
             (&limits::RADIUS, "radius", self.radius),
             (&limits::LINE_LOAD, "load", self.load),
-        ]
-        .iter()
-        .try_for_each(|(limit, name, value)| limit.check(name, *value))
+        ])
         .map_err(SolveError::InvalidInput)
     }
 }

@@ -14,7 +14,7 @@ pub mod history;
 use std::f64::consts::PI;
 
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution, state_at};
-use crate::physics::{Friction, Material, SolveError, limits};
+use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 /// The inputs of the spatial problem.
 #[derive(Clone, Debug, PartialEq)]
@@ -41,23 +41,11 @@ impl SpatialInputs {
 
     /// Checks every field (see `physics::limits`).
     pub fn validate(&self) -> Result<(), SolveError> {
-        let m = &self.material;
-        [
-            (&limits::YOUNGS_MODULUS, "youngs_modulus", m.youngs_modulus),
-            (&limits::POISSON_RATIO, "poisson_ratio", m.poisson_ratio),
-            (&limits::THICKNESS, "thickness", m.thickness),
-            (
-                &limits::FRICTION,
-                "friction coefficient",
-                self.friction.coefficient,
-            ),
-            (&limits::ADHESION, "adhesion", self.friction.adhesion),
-            (&limits::WEAR, "wear coefficient", self.wear),
+        validate_common(&self.material, &self.friction, self.wear)?;
+        limits::check_all(&[
             (&limits::SPEED, "sliding_speed", self.sliding_speed),
             (&limits::MEAN_PRESSURE, "mean_pressure", self.mean_pressure),
-        ]
-        .iter()
-        .try_for_each(|(limit, name, value)| limit.check(name, *value))
+        ])
         .map_err(SolveError::InvalidInput)?;
         validate_harmonics(&self.harmonics)
     }
