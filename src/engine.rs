@@ -15,12 +15,16 @@ use crate::physics::plane::{Model, PlaneSolution, solve};
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::field::{Field, field};
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, evolution};
-use crate::physics::spatial::history::{History, MeanPressureSweep, history, pressure_sweep};
+use crate::physics::spatial::history::{
+    Dispersion, History, MeanPressureSweep, dispersion, history, pressure_sweep,
+};
 use crate::physics::spatial::{Cell, SpatialSolution, solve_with};
 use crate::preset::{Preset, Problem};
 
 /// Points of the plane profile drawn by the explorer.
 pub const PROFILE_POINTS: usize = 201;
+/// Points of the dispersion curves.
+pub const DISPERSION_POINTS: usize = 120;
 /// Points of the spatial time history.
 pub const HISTORY_POINTS: usize = 200;
 
@@ -61,6 +65,8 @@ pub struct SpatialOutput {
     pub history: Arc<History>,
     /// mu* against pbar.
     pub sweep: MeanPressureSweep,
+    /// Drift velocity against wavenumber and direction.
+    pub dispersion: Arc<Dispersion>,
 }
 
 /// The engine's answer to one request.
@@ -117,7 +123,7 @@ impl<V: Clone> Cache<V> {
 pub struct Engine {
     points: Cache<Result<Arc<PlanePoint>, SolveError>>,
     sweeps: Cache<Arc<Sweep>>,
-    responses: Cache<Arc<Vec<Evolution>>>,
+    responses: Cache<Arc<(Vec<Evolution>, Arc<Dispersion>)>>,
     histories: Cache<Arc<History>>,
     /// Stage evaluation counts.
     pub counts: StageCounts,
@@ -200,29 +206,29 @@ impl Engine {
             inputs.friction,
             inputs.wear_rate()
         );
-        let evolutions = self.responses.get_or(key, &mut self.counts.responses, || {
-            Arc::new(
-                inputs
-                    .harmonics
-                    .iter()
-                    .map(|h: &Harmonic| {
-                        evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h)
-                    })
-                    .collect(),
-            )
+        let responses = self.responses.get_or(key, &mut self.counts.responses, || {
+            let evolutions = inputs
+                .harmonics
+                .iter()
+                .map(|h: &Harmonic| {
+                    evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h)
+                })
+                .collect();
+            Arc::new((evolutions, Arc::new(dispersion(&inputs, DISPERSION_POINTS))))
         });
+        let evolutions = &responses.0;
         let key = format!("{inputs:?}{}", sp.duration);
         let hist = self.histories.get_or(key, &mut self.counts.history, || {
-            Arc::new(history(&inputs, &evolutions, sp.duration, HISTORY_POINTS))
+            Arc::new(history(&inputs, evolutions, sp.duration, HISTORY_POINTS))
         });
         self.counts.state += 1;
-        let solution = solve_with(&inputs, &evolutions, sp.time);
+        let solution = solve_with(&inputs, evolutions, sp.time);
         let cell = Cell::of(&inputs.harmonics);
         let contact = contact::check(&solution, &cell);
         let field = field(&solution, &cell, sp.grid);
         let sweep = pressure_sweep(
             &inputs,
-            &evolutions,
+            evolutions,
             sp.time,
             contact.min_pressure - inputs.mean_pressure,
             &sp.sweep,
@@ -234,6 +240,7 @@ impl Engine {
             field,
             history: hist,
             sweep,
+            dispersion: Arc::clone(&responses.1),
         }))
     }
 }

@@ -11,8 +11,24 @@ use wearlab::units::parse_si;
 
 use crate::tui::form::{self, Key, Nudge};
 
-/// Number of charts per problem (Tab cycles).
-pub const CHARTS: usize = 4;
+/// The charts of each problem, in Tab order.
+pub fn chart_titles(problem: Problem) -> &'static [&'static str] {
+    match problem {
+        Problem::Plane => &[
+            "pressure and shear",
+            "wear",
+            "mu* against load",
+            "contact edges against load",
+        ],
+        Problem::Spatial => &[
+            "pressure map",
+            "pressure and shape along a line",
+            "amplitudes and mu* in time",
+            "mu* against mean pressure",
+            "dispersion: drift velocity",
+        ],
+    }
+}
 
 /// What the keyboard is doing.
 #[derive(Clone, Debug, PartialEq)]
@@ -150,8 +166,7 @@ impl App {
             self.undo.remove(0);
         }
         self.dirty = true;
-        let rows = form::rows(&self.preset).len();
-        self.selected = self.selected.min(rows.saturating_sub(1));
+        self.fit_selection();
         vec![self.request()]
     }
 
@@ -163,6 +178,13 @@ impl App {
         self.chart = 0;
         self.playing = false;
         vec![self.request()]
+    }
+
+    /// Keeps the selected row and chart inside what the current problem has.
+    fn fit_selection(&mut self) {
+        let rows = form::rows(&self.preset).len();
+        self.selected = self.selected.min(rows.saturating_sub(1));
+        self.chart %= chart_titles(self.preset.problem).len();
     }
 
     fn current_row(&self) -> form::Row {
@@ -459,11 +481,12 @@ fn normal_key(app: &mut App, key: KeyEvent, ctrl_c: bool) -> Vec<Command> {
             Vec::new()
         }
         KeyCode::Tab => {
-            app.chart = (app.chart + 1) % CHARTS;
+            app.chart = (app.chart + 1) % chart_titles(app.preset.problem).len();
             Vec::new()
         }
         KeyCode::BackTab => {
-            app.chart = (app.chart + CHARTS - 1) % CHARTS;
+            let n = chart_titles(app.preset.problem).len();
+            app.chart = (app.chart + n - 1) % n;
             Vec::new()
         }
         KeyCode::Char('p') => {
@@ -548,8 +571,7 @@ fn normal_key(app: &mut App, key: KeyEvent, ctrl_c: bool) -> Vec<Command> {
             Some(previous) => {
                 app.preset = previous;
                 app.dirty = true;
-                let rows = form::rows(&app.preset).len();
-                app.selected = app.selected.min(rows - 1);
+                app.fit_selection();
                 app.say("undone", false);
                 vec![app.request()]
             }

@@ -124,7 +124,7 @@ fn save(app: &mut App, path: &Path, preset: &Preset) {
 
 /// The visible chart's data as CSV text and a file-name stem.
 pub fn chart_csv(app: &App) -> Option<(String, String)> {
-    let stem = view::chart_titles(app.preset.problem)[app.chart].replace([' ', '*'], "-");
+    let stem = app::chart_titles(app.preset.problem)[app.chart].replace([' ', '*'], "-");
     match app.output.as_ref()? {
         Output::Spatial(Ok(out)) if app.chart == 0 => {
             let f = &out.field;

@@ -383,3 +383,24 @@ fn snapshot_help_picker_error_and_too_small() {
     insta::assert_snapshot!("error_80x24", screen(&app, 80, 24, PLAIN));
     insta::assert_snapshot!("too_small_60x20", screen(&app, 60, 20, PLAIN));
 }
+
+#[test]
+fn undo_across_a_problem_switch_keeps_the_chart_in_range() {
+    let mut app = App::new(bundled("polymer-coating.toml"), None, None);
+    press(&mut app, KeyCode::Char('p'));
+    for _ in 0..4 {
+        press(&mut app, KeyCode::Tab);
+    }
+    assert_eq!(app.chart, 4);
+    press(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.preset.problem, Problem::Plane);
+    assert!(app.chart < 4);
+    screen(&app, 80, 24, PLAIN);
+}
+
+#[test]
+fn snapshot_dispersion_chart() {
+    let mut app = solved(bundled("rubber-backward-drift.toml"));
+    app.chart = 4;
+    insta::assert_snapshot!("spatial_dispersion_120x40", screen(&app, 120, 40, PLAIN));
+}

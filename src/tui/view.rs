@@ -14,7 +14,7 @@ use wearlab::physics::Spacing;
 use wearlab::preset::Problem;
 use wearlab::units::format_si;
 
-use crate::tui::app::{App, Mode};
+use crate::tui::app::{App, Mode, chart_titles};
 use crate::tui::form;
 
 /// How to draw.
@@ -48,9 +48,11 @@ pub struct ChartSpec {
     pub log_x: bool,
     /// The curves.
     pub curves: Vec<Curve>,
-    /// A marker point (current operating point).
-    pub marker: Option<(f64, f64)>,
-    /// The y-range follows only the first curve (and the marker); the others are overlays,
+    /// Marked points (the current operating point, the punch's harmonics), drawn as blocks.
+    pub markers: Vec<(f64, f64)>,
+    /// The legend of the marked points.
+    pub marker_label: &'static str,
+    /// The y-range follows only the first curve (and the markers); the others are overlays,
     /// clipped, so that a model far outside its range does not flatten the one being explored.
     pub overlays: bool,
 }
@@ -168,30 +170,16 @@ fn draw_form(app: &App, frame: &mut Frame, area: Rect) {
     frame.render_widget(Paragraph::new(lines).scroll((offset as u16, 0)), inner);
 }
 
-/// The charts of each problem, in Tab order.
-pub fn chart_titles(problem: Problem) -> [&'static str; 4] {
-    match problem {
-        Problem::Plane => [
-            "pressure and shear",
-            "wear",
-            "mu* against load",
-            "contact edges against load",
-        ],
-        Problem::Spatial => [
-            "pressure map",
-            "pressure and shape along a line",
-            "amplitudes and mu* in time",
-            "mu* against mean pressure",
-        ],
-    }
-}
-
 fn draw_charts(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let title = chart_titles(app.preset.problem)[app.chart];
     let solving = if app.solving() { "  solving…" } else { "" };
     let block = Block::default()
         .borders(Borders::ALL)
-        .title(format!(" {}/4 {title}{solving} ", app.chart + 1))
+        .title(format!(
+            " {}/{} {title}{solving} ",
+            app.chart + 1,
+            chart_titles(app.preset.problem).len()
+        ))
         .title_bottom(Line::from(" Tab: next chart ").right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);
@@ -268,6 +256,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 y_unit: "Pa",
                 log_x: false,
                 overlays: false,
+                marker_label: "now",
                 curves: vec![
                     Curve {
                         name: "pressure q2".into(),
@@ -286,7 +275,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                             .collect(),
                     },
                 ],
-                marker: None,
+                markers: Vec::new(),
             }]
         }
         1 => {
@@ -300,6 +289,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                     y_unit: "m",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: vec![Curve {
                         name: "wear per pass".into(),
                         points: x
@@ -308,7 +298,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                             .zip(p.profile.wear.iter().copied())
                             .collect(),
                     }],
-                    marker: None,
+                    markers: Vec::new(),
                 },
                 ChartSpec {
                     x_label: "x".into(),
@@ -317,6 +307,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                     y_unit: "",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: vec![Curve {
                         name: "wear rate k q2".into(),
                         points: x
@@ -325,7 +316,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                             .zip(p.profile.wear_rate.iter().copied())
                             .collect(),
                     }],
-                    marker: None,
+                    markers: Vec::new(),
                 },
             ]
         }
@@ -341,6 +332,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 y_unit: "",
                 log_x: log,
                 overlays: true,
+                marker_label: "now",
                 curves: out
                     .sweeps
                     .iter()
@@ -348,7 +340,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                         sweep_curve(format!("mu* {}", m.name()), &s.mu_star, &s.load, 1.0)
                     })
                     .collect(),
-                marker,
+                markers: marker.into_iter().collect(),
             }]
         }
         _ => {
@@ -360,11 +352,12 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 y_unit: "m",
                 log_x: log,
                 overlays: false,
+                marker_label: "now",
                 curves: vec![
                     sweep_curve("a (trailing)".into(), &s.a, &s.load, 1.0),
                     sweep_curve("b (leading)".into(), &s.b, &s.load, 1.0),
                 ],
-                marker: None,
+                markers: Vec::new(),
             }]
         }
     })
@@ -392,11 +385,12 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     y_unit: "Pa",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: vec![Curve {
                         name: format!("pressure {y_label}"),
                         points: line(&f.pressure),
                     }],
-                    marker: None,
+                    markers: Vec::new(),
                 },
                 ChartSpec {
                     x_label: "x".into(),
@@ -405,11 +399,12 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     y_unit: "m",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: vec![Curve {
                         name: "shape U".into(),
                         points: line(&f.shape),
                     }],
-                    marker: None,
+                    markers: Vec::new(),
                 },
             ]
         }
@@ -434,12 +429,14 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     y_unit: "m",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: amplitudes,
-                    marker: out
+                    markers: out
                         .solution
                         .harmonics
-                        .first()
-                        .map(|s| (t, s.state.amplitude)),
+                        .iter()
+                        .map(|s| (t, s.state.amplitude))
+                        .collect(),
                 },
                 ChartSpec {
                     x_label: "t [s]".into(),
@@ -448,6 +445,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     y_unit: "",
                     log_x: false,
                     overlays: false,
+                    marker_label: "now",
                     curves: vec![Curve {
                         name: "mu*(t)".into(),
                         points: h
@@ -457,11 +455,11 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                             .zip(h.mu_star.iter().copied())
                             .collect(),
                     }],
-                    marker: Some((t, mu_at_t)),
+                    markers: vec![(t, mu_at_t)],
                 },
             ]
         }
-        _ => {
+        3 => {
             let s = &out.sweep;
             let log = app.preset.spatial.sweep.spacing == Spacing::Log;
             let lx = |p: f64| if log { p.log10() } else { p };
@@ -472,6 +470,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                 y_unit: "",
                 log_x: log,
                 overlays: false,
+                marker_label: "now",
                 curves: vec![Curve {
                     name: "mu* (complete contact only)".into(),
                     points: s
@@ -481,10 +480,64 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                         .filter_map(|(p, m)| m.map(|m| (lx(*p), m)))
                         .collect(),
                 }],
-                marker: out
+                markers: out
                     .contact
                     .complete
-                    .then(|| (lx(app.preset.spatial.mean_pressure), out.solution.mu_star)),
+                    .then(|| (lx(app.preset.spatial.mean_pressure), out.solution.mu_star))
+                    .into_iter()
+                    .collect(),
+            }]
+        }
+        _ => {
+            let d = &out.dispersion;
+            let (x_label, scale) = if d.scaled_by_thickness {
+                ("kh", 1.0)
+            } else {
+                ("k [rad/m]", 1.0)
+            };
+            let curves = d
+                .angles
+                .iter()
+                .zip(&d.drift_velocity)
+                .map(|(a, c)| Curve {
+                    name: format!("c at {:.0} deg", a.to_degrees()),
+                    points: d
+                        .k
+                        .iter()
+                        .zip(c)
+                        .map(|(k, c)| ((k * scale).log10(), *c))
+                        .collect(),
+                })
+                .collect();
+            let h = app.preset.material.thickness;
+            let unit = if d.scaled_by_thickness { h } else { 1.0 };
+            let marks: Vec<(f64, f64)> = out
+                .solution
+                .harmonics
+                .iter()
+                .map(|s| {
+                    (
+                        (s.initial.wavenumber() * unit).log10(),
+                        s.evolution.drift_velocity,
+                    )
+                })
+                .collect();
+            let mut curves: Vec<Curve> = curves;
+            let ends = [d.k[0].log10(), d.k[d.k.len() - 1].log10()];
+            curves.push(Curve {
+                name: "c = 0".into(),
+                points: vec![(ends[0], 0.0), (ends[1], 0.0)],
+            });
+            vec![ChartSpec {
+                x_label: x_label.into(),
+                y_label: "c".into(),
+                x_unit: "",
+                y_unit: "m/s",
+                log_x: true,
+                overlays: false,
+                marker_label: "harmonics",
+                curves,
+                markers: marks,
             }]
         }
     }
@@ -519,7 +572,7 @@ fn draw_chart(spec: &ChartSpec, style: RenderOptions, frame: &mut Frame, area: R
         spec.curves
             .iter()
             .flat_map(|c| c.points.iter())
-            .chain(spec.marker.iter())
+            .chain(spec.markers.iter())
     };
     let focus = || {
         let n = if spec.overlays { 1 } else { spec.curves.len() };
@@ -527,7 +580,7 @@ fn draw_chart(spec: &ChartSpec, style: RenderOptions, frame: &mut Frame, area: R
             .iter()
             .take(n)
             .flat_map(|c| c.points.iter())
-            .chain(spec.marker.iter())
+            .chain(spec.markers.iter())
     };
     let xb = bounds(all().map(|p| p.0));
     let yb = bounds(focus().map(|p| p.1));
@@ -536,7 +589,7 @@ fn draw_chart(spec: &ChartSpec, style: RenderOptions, frame: &mut Frame, area: R
     } else {
         Marker::Braille
     };
-    let marker_points: Vec<(f64, f64)> = spec.marker.into_iter().collect();
+    let marker_points = &spec.markers;
     let mut datasets: Vec<Dataset> = spec
         .curves
         .iter()
@@ -556,10 +609,10 @@ fn draw_chart(spec: &ChartSpec, style: RenderOptions, frame: &mut Frame, area: R
         .collect();
     if !marker_points.is_empty() {
         let ds = Dataset::default()
-            .name("now")
+            .name(spec.marker_label)
             .marker(Marker::Block)
             .graph_type(GraphType::Scatter)
-            .data(&marker_points);
+            .data(marker_points);
         datasets.push(if style.color {
             ds.style(
                 Style::default()
@@ -872,8 +925,11 @@ fn chart_help(problem: Problem, chart: usize) -> &'static str {
         (Problem::Spatial, 2) => {
             "Harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. The block marks the current time."
         }
-        (Problem::Spatial, _) => {
+        (Problem::Spatial, 3) => {
             "mu* against the mean pressure, drawn only where contact is complete (p > 0 everywhere)."
+        }
+        (Problem::Spatial, _) => {
+            "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards."
         }
     }
 }

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::physics::Spacing;
-use crate::physics::spatial::harmonic::Evolution;
+use crate::physics::spatial::harmonic::{Evolution, Harmonic, evolution};
 use crate::physics::spatial::{SpatialInputs, solve_with};
 
 /// Values at evenly spaced times over [0, duration].
@@ -100,5 +100,63 @@ pub fn pressure_sweep(
             })
             .collect(),
         mean_pressure: pressures,
+    }
+}
+
+/// Drift velocity against wavenumber for a few directions of the wave vector (dispersion).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Dispersion {
+    /// The abscissa: kh for a layer, k [rad/m] for the half-space (where c does not depend on k).
+    pub k: Vec<f64>,
+    /// True when `k` holds kh (finite thickness).
+    pub scaled_by_thickness: bool,
+    /// Directions of the wave vector from the sliding line [rad].
+    pub angles: Vec<f64>,
+    /// c [m/s] for each direction, along `k`.
+    pub drift_velocity: Vec<Vec<f64>>,
+}
+
+/// c against k (or kh) from a third of the smallest to ten times the largest wavenumber of the
+/// harmonics, for wave vectors at 0, 45 and 75 degrees to the sliding line.
+pub fn dispersion(inputs: &SpatialInputs, points: usize) -> Dispersion {
+    let h = inputs.material.thickness;
+    let ks = inputs.harmonics.iter().map(Harmonic::wavenumber);
+    let (k_lo, k_hi) = ks.fold((f64::INFINITY, 0.0f64), |(a, b), k| (a.min(k), b.max(k)));
+    let scaled = h.is_finite();
+    let unit = if scaled { h } else { 1.0 };
+    let k = Spacing::Log.points(k_lo * unit / 3.0, k_hi * unit * 10.0, points);
+    let angles: Vec<f64> = [0.0f64, 45.0, 75.0]
+        .iter()
+        .map(|d| d.to_radians())
+        .collect();
+    let drift_velocity = angles
+        .iter()
+        .map(|a| {
+            k.iter()
+                .map(|x| {
+                    let kk = x / unit;
+                    let wave = Harmonic {
+                        amplitude: 0.0,
+                        wavenumber_x: kk * a.cos(),
+                        wavenumber_y: kk * a.sin(),
+                        phase_x: 0.0,
+                        phase_y: 0.0,
+                    };
+                    evolution(
+                        &inputs.material,
+                        &inputs.friction,
+                        inputs.wear_rate(),
+                        &wave,
+                    )
+                    .drift_velocity
+                })
+                .collect()
+        })
+        .collect();
+    Dispersion {
+        k,
+        scaled_by_thickness: scaled,
+        angles,
+        drift_velocity,
     }
 }
