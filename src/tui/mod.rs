@@ -124,7 +124,12 @@ fn save(app: &mut App, path: &Path, preset: &Preset) {
 
 /// The visible chart's data as CSV text and a file-name stem.
 pub fn chart_csv(app: &App) -> Option<(String, String)> {
-    let stem = app::chart_titles(app.preset.problem)[app.chart].replace([' ', '*'], "-");
+    let title = app::chart_titles(app.preset.problem)[app.chart];
+    let stem = title
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join("-");
     match app.output.as_ref()? {
         Output::Spatial(Ok(out)) if app.chart == 0 => {
             let f = &out.field;

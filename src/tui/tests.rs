@@ -404,3 +404,28 @@ fn snapshot_dispersion_chart() {
     app.chart = 4;
     insta::assert_snapshot!("spatial_dispersion_120x40", screen(&app, 120, 40, PLAIN));
 }
+
+#[test]
+fn export_writes_the_visible_chart() {
+    let mut app = solved(bundled("polymer-coating.toml"));
+    let (stem, text) = crate::tui::chart_csv(&app).unwrap();
+    assert_eq!(stem, "pressure-and-shear");
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("curve,x,y"));
+    assert_eq!(
+        text.lines()
+            .filter(|l| l.starts_with("pressure q2"))
+            .count(),
+        201
+    );
+    app.chart = 2;
+    let (stem, text) = crate::tui::chart_csv(&app).unwrap();
+    assert_eq!(stem, "mu-against-load");
+    // log sweeps are written in load, not in log10(load)
+    let first: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(first[1].parse::<f64>().unwrap().round(), 100.0);
+    let spatial = solved(bundled("jgh-egg-box.toml"));
+    let (_, text) = crate::tui::chart_csv(&spatial).unwrap();
+    assert_eq!(text.lines().next(), Some("x,y,pressure"));
+    assert_eq!(text.lines().count(), 1 + 64 * 64);
+}
