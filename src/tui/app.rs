@@ -236,8 +236,10 @@ pub fn picker_entries(user_dir: Option<&PathBuf>) -> Vec<PickerEntry> {
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     match msg {
         Msg::Solved(generation, output) => {
-            // results of older requests are dropped
-            if generation == app.generation {
+            // A result older than the one on screen is dropped; a newer one is shown even when a
+            // still newer request is pending (playing time supersedes every request before its
+            // answer arrives, and must still move the screen).
+            if generation > app.shown {
                 app.output = Some(*output);
                 app.shown = generation;
             }

@@ -238,13 +238,42 @@ fn stale_results_are_dropped() {
     let (Command::Solve(g1, p1), Command::Solve(g2, p2)) = (&first[0], &second[0]) else {
         panic!()
     };
-    update(&mut app, Msg::Solved(*g1, Box::new(engine.run(p1))));
-    assert!(
-        app.output.is_none() && app.solving(),
+    let (out1, out2) = (engine.run(p1), engine.run(p2));
+    // the newer answer arrives first: shown, and nothing is pending any more
+    update(&mut app, Msg::Solved(*g2, Box::new(out2)));
+    assert!(!app.solving());
+    let shown = format!("{:?}", app.output);
+    // the older one arrives late: dropped
+    update(&mut app, Msg::Solved(*g1, Box::new(out1)));
+    assert_eq!(
+        format!("{:?}", app.output),
+        shown,
         "generation {g1} is older than {g2}"
     );
-    update(&mut app, Msg::Solved(*g2, Box::new(engine.run(p2))));
-    assert!(app.output.is_some() && !app.solving());
+    assert_eq!(app.shown, *g2);
+}
+
+#[test]
+fn playing_time_moves_the_screen_although_every_tick_supersedes_the_last_request() {
+    let mut app = solved(bundled("wave-thick-layer.toml"));
+    let mut engine = Engine::new();
+    press(&mut app, KeyCode::Char(' '));
+    let mut pending = update(&mut app, Msg::Tick);
+    for _ in 0..3 {
+        // the next tick comes before the answer to the previous one
+        let next = update(&mut app, Msg::Tick);
+        for c in pending {
+            if let Command::Solve(g, p) = c {
+                update(&mut app, Msg::Solved(g, Box::new(engine.run(&p))));
+            }
+        }
+        pending = next;
+    }
+    let Some(wearlab::engine::Output::Spatial(Ok(out))) = &app.output else {
+        panic!()
+    };
+    assert!(out.solution.time > 0.0, "the screen moved on");
+    assert!(app.solving(), "and the newest tick is still pending");
 }
 
 #[test]
