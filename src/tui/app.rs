@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use wearlab::engine::Output;
-use wearlab::physics::plane::Model;
 use wearlab::preset::{self, Preset, Problem};
 use wearlab::units::parse_si;
 
@@ -275,14 +274,13 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             }
             KeyCode::Enter => {
                 let row = app.current_row();
-                let parsed = if row.key == Key::Model {
-                    Model::ALL
+                let parsed = match row.nudge {
+                    Nudge::Choice(names) => names
                         .iter()
-                        .position(|m| m.name() == buffer.trim())
+                        .position(|n| *n == buffer.trim())
                         .map(|i| i as f64)
-                        .ok_or_else(|| "type wide or narrow".to_string())
-                } else {
-                    parse_si(&buffer, row.unit)
+                        .ok_or_else(|| format!("type one of: {}", names.join(", "))),
+                    _ => parse_si(&buffer, row.unit),
                 };
                 match parsed.and_then(|v| form::set(&app.preset, &row, v)) {
                     Ok(next) => {
@@ -467,10 +465,9 @@ fn normal_key(app: &mut App, key: KeyEvent, ctrl_c: bool) -> Vec<Command> {
         }
         KeyCode::Enter => {
             let row = app.current_row();
-            let text = if row.nudge == Nudge::Choice {
-                app.preset.plane.model.name().to_string()
-            } else {
-                String::new()
+            let text = match row.nudge {
+                Nudge::Choice(_) => form::show(&app.preset, &row),
+                _ => String::new(),
             };
             app.mode = Mode::Editing(text);
             app.say(

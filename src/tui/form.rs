@@ -1,6 +1,7 @@
 //! The parameter form: every preset parameter as a row with a label, a unit, a getter and a
 //! setter that refuses what the limits refuse (and says why).
 
+use wearlab::physics::Spacing;
 use wearlab::physics::limits::{self, Limit};
 use wearlab::physics::plane::Model;
 use wearlab::physics::spatial::harmonic::Harmonic;
@@ -14,8 +15,28 @@ pub enum Nudge {
     Log { seed: f64 },
     /// Add `step` (Shift: 10 steps).
     Linear { step: f64 },
-    /// Cycle through the choices.
-    Choice,
+    /// Cycle through these named choices (the row's value is the index).
+    Choice(&'static [&'static str]),
+}
+
+/// The plane models by name, in the order of `Model::ALL`.
+pub const MODELS: &[&str] = &["wide", "narrow"];
+/// Sweep spacings by name.
+pub const SCALES: &[&str] = &["log", "linear"];
+
+fn spacing(index: f64) -> Spacing {
+    if index == 0.0 {
+        Spacing::Log
+    } else {
+        Spacing::Linear
+    }
+}
+
+fn spacing_index(s: Spacing) -> f64 {
+    match s {
+        Spacing::Log => 0.0,
+        Spacing::Linear => 1.0,
+    }
 }
 
 /// Which number a row edits.
@@ -32,11 +53,17 @@ pub enum Key {
     Load,
     LoadMin,
     LoadMax,
+    LoadPoints,
+    LoadScale,
     MeanPressure,
     Speed,
     Time,
     Duration,
     Grid,
+    PressureMin,
+    PressureMax,
+    PressurePoints,
+    PressureScale,
     Amplitude(usize),
     WavenumberX(usize),
     WavenumberY(usize),
@@ -139,7 +166,7 @@ pub fn rows(preset: &Preset) -> Vec<Row> {
                 "model",
                 "",
                 limits::FRICTION,
-                Nudge::Choice,
+                Nudge::Choice(MODELS),
             ),
             row(
                 Key::Radius,
@@ -172,6 +199,22 @@ pub fn rows(preset: &Preset) -> Vec<Row> {
                 "N/m",
                 limits::LINE_LOAD,
                 Nudge::Log { seed: 1e5 },
+            ),
+            row(
+                Key::LoadPoints,
+                "punch and load",
+                "points",
+                "",
+                limits::SWEEP_POINTS,
+                Nudge::Linear { step: 10.0 },
+            ),
+            row(
+                Key::LoadScale,
+                "punch and load",
+                "scale",
+                "",
+                limits::SWEEP_POINTS,
+                Nudge::Choice(SCALES),
             ),
         ]),
         Problem::Spatial => {
@@ -217,6 +260,38 @@ pub fn rows(preset: &Preset) -> Vec<Row> {
                     "",
                     limits::GRID,
                     Nudge::Linear { step: 8.0 },
+                ),
+                row(
+                    Key::PressureMin,
+                    "load and time",
+                    "pbar min",
+                    "Pa",
+                    limits::MEAN_PRESSURE,
+                    Nudge::Log { seed: 1e5 },
+                ),
+                row(
+                    Key::PressureMax,
+                    "load and time",
+                    "pbar max",
+                    "Pa",
+                    limits::MEAN_PRESSURE,
+                    Nudge::Log { seed: 1e8 },
+                ),
+                row(
+                    Key::PressurePoints,
+                    "load and time",
+                    "points",
+                    "",
+                    limits::SWEEP_POINTS,
+                    Nudge::Linear { step: 10.0 },
+                ),
+                row(
+                    Key::PressureScale,
+                    "load and time",
+                    "scale",
+                    "",
+                    limits::SWEEP_POINTS,
+                    Nudge::Choice(SCALES),
                 ),
             ]);
             for n in 0..preset.spatial.harmonics.len() {
@@ -286,6 +361,12 @@ pub fn get(preset: &Preset, key: Key) -> f64 {
         Key::Load => preset.plane.load,
         Key::LoadMin => preset.plane.sweep.min,
         Key::LoadMax => preset.plane.sweep.max,
+        Key::LoadPoints => preset.plane.sweep.points as f64,
+        Key::LoadScale => spacing_index(preset.plane.sweep.spacing),
+        Key::PressureMin => preset.spatial.sweep.min,
+        Key::PressureMax => preset.spatial.sweep.max,
+        Key::PressurePoints => preset.spatial.sweep.points as f64,
+        Key::PressureScale => spacing_index(preset.spatial.sweep.spacing),
         Key::MeanPressure => preset.spatial.mean_pressure,
         Key::Speed => preset.spatial.sliding_speed,
         Key::Time => preset.spatial.time,
@@ -301,9 +382,9 @@ pub fn get(preset: &Preset, key: Key) -> f64 {
 
 /// The row's value as text, with SI prefixes.
 pub fn show(preset: &Preset, r: &Row) -> String {
-    match r.key {
-        Key::Model => preset.plane.model.name().to_string(),
-        Key::Grid => format!("{}", preset.spatial.grid),
+    match (r.key, r.nudge) {
+        (_, Nudge::Choice(names)) => names[get(preset, r.key) as usize].to_string(),
+        (Key::Grid | Key::LoadPoints | Key::PressurePoints, _) => format!("{}", get(preset, r.key)),
         _ => format_si(get(preset, r.key), r.unit),
     }
 }
@@ -311,7 +392,7 @@ pub fn show(preset: &Preset, r: &Row) -> String {
 /// Sets a row's value on a copy of the preset; Err says what is allowed. The last valid value
 /// stays in force on error (the caller keeps its preset).
 pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
-    if r.key != Key::Model {
+    if !matches!(r.nudge, Nudge::Choice(_)) {
         r.limit.check(r.label, value)?;
     }
     let mut p = preset.clone();
@@ -353,6 +434,24 @@ pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
             ));
         }
         Key::LoadMax => p.plane.sweep.max = value,
+        Key::LoadPoints => p.plane.sweep.points = value as usize,
+        Key::LoadScale => p.plane.sweep.spacing = spacing(value),
+        Key::PressureMin if value >= p.spatial.sweep.max => {
+            return Err(format!(
+                "pbar min must stay below pbar max = {}",
+                format_si(p.spatial.sweep.max, "Pa")
+            ));
+        }
+        Key::PressureMin => p.spatial.sweep.min = value,
+        Key::PressureMax if value <= p.spatial.sweep.min => {
+            return Err(format!(
+                "pbar max must stay above pbar min = {}",
+                format_si(p.spatial.sweep.min, "Pa")
+            ));
+        }
+        Key::PressureMax => p.spatial.sweep.max = value,
+        Key::PressurePoints => p.spatial.sweep.points = value as usize,
+        Key::PressureScale => p.spatial.sweep.spacing = spacing(value),
         Key::MeanPressure => p.spatial.mean_pressure = value,
         Key::Speed => p.spatial.sliding_speed = value,
         Key::Time => p.spatial.time = value,
@@ -398,12 +497,9 @@ pub fn nudged(preset: &Preset, r: &Row, dir: f64, large: bool) -> f64 {
             // land on whole steps so repeated nudges read cleanly
             (next / step).round() * step
         }
-        Nudge::Choice => {
-            (v + if dir > 0.0 {
-                1.0
-            } else {
-                Model::ALL.len() as f64 - 1.0
-            }) % Model::ALL.len() as f64
+        Nudge::Choice(names) => {
+            let n = names.len() as f64;
+            (v + if dir > 0.0 { 1.0 } else { n - 1.0 }) % n
         }
     }
 }

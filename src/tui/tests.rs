@@ -458,3 +458,46 @@ fn export_writes_the_visible_chart() {
     assert_eq!(text.lines().next(), Some("x,y,pressure"));
     assert_eq!(text.lines().count(), 1 + 64 * 64);
 }
+
+#[test]
+fn model_names_follow_the_model_order() {
+    let names: Vec<&str> = wearlab::physics::plane::Model::ALL
+        .iter()
+        .map(|m| m.name())
+        .collect();
+    assert_eq!(names, form::MODELS);
+}
+
+#[test]
+fn sweep_rows_edit_points_and_scale() {
+    let mut app = App::new(bundled("polymer-coating.toml"), None, None);
+    select(&mut app, Key::LoadScale);
+    press(&mut app, KeyCode::Right);
+    assert_eq!(
+        app.preset.plane.sweep.spacing,
+        wearlab::physics::Spacing::Linear
+    );
+    press(&mut app, KeyCode::Enter);
+    assert_eq!(app.mode, Mode::Editing("linear".into()));
+    for _ in 0..6 {
+        press(&mut app, KeyCode::Backspace);
+    }
+    type_text(&mut app, "lin");
+    press(&mut app, KeyCode::Enter);
+    assert_eq!(
+        app.message.as_ref().unwrap().0,
+        "scale: type one of: log, linear"
+    );
+    press(&mut app, KeyCode::Esc);
+    select(&mut app, Key::LoadPoints);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "1");
+    press(&mut app, KeyCode::Enter);
+    assert_eq!(
+        app.message.as_ref().unwrap().0,
+        "points: points = 1 is out of range: allowed a whole number from 2 to 2000"
+    );
+    press(&mut app, KeyCode::Esc);
+    press(&mut app, KeyCode::Right);
+    assert_eq!(app.preset.plane.sweep.points, 70);
+}
