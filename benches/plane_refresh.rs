@@ -35,5 +35,11 @@ fn refresh(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, refresh);
+fn strip_table(c: &mut Criterion) {
+    c.bench_function("strip_table", |b| {
+        b.iter(|| wearlab::physics::plane::kernels::StripKernels::new(black_box(0.3)))
+    });
+}
+
+criterion_group!(benches, refresh, strip_table);
 criterion_main!(benches);
