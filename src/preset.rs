@@ -439,10 +439,13 @@ impl Checker<'_> {
         let pl = plane.get_ref();
         let radius = self.value(&pl.radius, "radius", &limits::RADIUS)?;
         let load = self.value(&pl.load, "load", &limits::LINE_LOAD)?;
-        if pl.model == Model::Narrow && material.thickness.is_infinite() {
+        if pl.model != Model::Wide && material.thickness.is_infinite() {
             return Err(self.error(
                 Some(plane.span()),
-                "model = \"narrow\" (Winkler) needs a finite thickness: set [material] thickness or use model = \"wide\"",
+                format!(
+                    "model = \"{}\" needs a finite thickness: set [material] thickness or use model = \"wide\"",
+                    pl.model.name()
+                ),
             ));
         }
         let sweep = match &pl.sweep {

@@ -20,7 +20,7 @@ pub enum Nudge {
 }
 
 /// The plane models by name, in the order of `Model::ALL`.
-pub const MODELS: &[&str] = &["wide", "narrow"];
+pub const MODELS: &[&str] = &["wide", "narrow", "strip"];
 /// Sweep spacings by name.
 pub const SCALES: &[&str] = &["log", "linear"];
 
@@ -400,9 +400,11 @@ pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
         Key::YoungsModulus => p.material.youngs_modulus = value,
         Key::PoissonRatio => p.material.poisson_ratio = value,
         Key::Thickness => {
-            if value.is_infinite() && p.problem == Problem::Plane && p.plane.model == Model::Narrow
-            {
-                return Err("h = inf is a half-plane, which the narrow (Winkler) model cannot take: switch the model with m first".into());
+            if value.is_infinite() && p.problem == Problem::Plane && p.plane.model != Model::Wide {
+                return Err(format!(
+                    "h = inf is a half-plane, which the {} model cannot take: switch the model with m first",
+                    p.plane.model.name()
+                ));
             }
             p.material.thickness = value
         }
@@ -411,10 +413,11 @@ pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
         Key::Wear => p.wear = value,
         Key::Model => {
             let model = Model::ALL[(value as usize) % Model::ALL.len()];
-            if model == Model::Narrow && p.material.is_half_space() {
-                return Err(
-                    "the narrow (Winkler) model needs a finite thickness h: set h first".into(),
-                );
+            if model != Model::Wide && p.material.is_half_space() {
+                return Err(format!(
+                    "the {} model needs a finite thickness h: set h first",
+                    model.name()
+                ));
             }
             p.plane.model = model;
         }

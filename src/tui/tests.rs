@@ -171,6 +171,8 @@ fn tab_problem_model_and_play() {
     press(&mut app, KeyCode::Char('m'));
     assert_eq!(app.preset.plane.model.name(), "narrow");
     press(&mut app, KeyCode::Char('m'));
+    assert_eq!(app.preset.plane.model.name(), "strip");
+    press(&mut app, KeyCode::Char('m'));
     assert_eq!(app.preset.plane.model.name(), "wide");
     press(&mut app, KeyCode::Char('p'));
     assert_eq!(app.preset.problem, Problem::Spatial);
@@ -190,7 +192,7 @@ fn the_narrow_model_refuses_a_half_plane() {
     assert!(press(&mut app, KeyCode::Char('m')).is_empty());
     assert_eq!(
         app.message.as_ref().unwrap().0,
-        "the narrow (Winkler) model needs a finite thickness h: set h first"
+        "the narrow model needs a finite thickness h: set h first"
     );
 }
 

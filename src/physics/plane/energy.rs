@@ -5,12 +5,14 @@
 //!   m u' = -pi chi q2 + H[q1] - chi c12 Q2/h,   m v' = -pi chi q1 - H[q2] - chi c12 Q1/h,
 //! with the Hilbert transform H[q](x) = p.v. integral q(s)/(s - x) ds computed by quadrature
 //! (singularity subtraction, tanh–sinh on both sides of x); for the Winkler strip (5.1),
-//! u' = alpha q1', v' = -beta q2' with q2' from (5.3).
+//! u' = alpha q1', v' = -beta q2' with q2' from (5.3); for the strip of any thickness, (3.7) with
+//! the tabulated kernels.
 
 use serde::Serialize;
 
 use crate::physics::elastic::chi_c12;
 use crate::physics::plane::narrow::{winkler_alpha, winkler_beta};
+use crate::physics::plane::strip::kernels_for;
 use crate::physics::plane::{Model, PlaneSolution};
 use crate::physics::quadrature::{GaussRule, tanh_sinh};
 
@@ -65,6 +67,29 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
             Box::new(move |u| {
                 let du = -pi_chi * q2(u) + hilbert(rule, 0.0, l, u, &q1) - c * big_q2;
                 let dv = -pi_chi * q1(u) - hilbert(rule, 0.0, l, u, &q2) - c * big_q1;
+                (du / m, dv / m)
+            })
+        }
+        Model::Strip => {
+            // (3.7) with the exact kernels: A_j = 1/z + R_j, so the Hilbert part is as above and
+            // the rest is regular.
+            let mat = &inputs.material;
+            let m = mat.plane_modulus();
+            let pi_chi = std::f64::consts::PI * mat.chi();
+            let h = mat.thickness;
+            let k = kernels_for(mat.poisson_ratio);
+            let rule = &rule;
+            Box::new(move |u| {
+                let regular = |f: &dyn Fn(f64) -> f64| rule.integrate(0.0, l, f) / h;
+                let z = |s: f64| (s - u) / h;
+                let du = -pi_chi * q2(u)
+                    + hilbert(rule, 0.0, l, u, &q1)
+                    + regular(&|s| q1(s) * k.r1(z(s)))
+                    - regular(&|s| q2(s) * k.chi_b12(z(s)));
+                let dv = -pi_chi * q1(u)
+                    - hilbert(rule, 0.0, l, u, &q2)
+                    - regular(&|s| q2(s) * k.r2(z(s)))
+                    - regular(&|s| q1(s) * k.chi_b12(z(s)));
                 (du / m, dv / m)
             })
         }

@@ -10,6 +10,7 @@ pub mod energy;
 pub mod kernels;
 pub mod narrow;
 pub mod profile;
+pub mod strip;
 pub mod sweep;
 pub mod validity;
 pub mod wide;
@@ -26,17 +27,20 @@ pub enum Model {
     Wide,
     /// Narrow strip, (a+b)/h -> inf: Winkler foundation (section 5).
     Narrow,
+    /// Any thickness: the exact strip kernels (3.7), solved by collocation (plane.md section 6).
+    Strip,
 }
 
 impl Model {
     /// Every model, in the order the explorer cycles through them.
-    pub const ALL: [Model; 2] = [Model::Wide, Model::Narrow];
+    pub const ALL: [Model; 3] = [Model::Wide, Model::Narrow, Model::Strip];
 
     /// The name used in preset files and in JSON.
     pub fn name(self) -> &'static str {
         match self {
             Model::Wide => "wide",
             Model::Narrow => "narrow",
+            Model::Strip => "strip",
         }
     }
 }
@@ -74,12 +78,14 @@ impl PlaneInputs {
 }
 
 /// How q2(x) is evaluated for a solved operating point.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(crate) enum PressureLaw {
     /// q2 = c (a + x)^{1/2 - theta} (b - x)^{1/2 + theta}, (4.4) with the corrected prefactor.
     Wide { c: f64, theta: f64 },
     /// The Winkler solution (5.7) in its stable form, see `narrow::pressure`.
     Narrow { lambda: f64, beta: f64 },
+    /// The collocation solution of the strip: q2 = w(t) phi(t).
+    Strip(std::sync::Arc<strip::Collocation>),
 }
 
 /// The solution of the plane problem at one load.
@@ -135,11 +141,12 @@ impl PlaneSolution {
         if !(u > 0.0 && u < l) {
             return 0.0;
         }
-        match self.law {
-            PressureLaw::Wide { c, theta } => c * u.powf(0.5 - theta) * (l - u).powf(0.5 + theta),
-            PressureLaw::Narrow { lambda, beta } => {
+        match &self.law {
+            &PressureLaw::Wide { c, theta } => c * u.powf(0.5 - theta) * (l - u).powf(0.5 + theta),
+            &PressureLaw::Narrow { lambda, beta } => {
                 narrow::pressure(u, l, lambda, beta, self.inputs.radius)
             }
+            PressureLaw::Strip(col) => col.pressure_from_trailing_edge(u),
         }
     }
 
@@ -163,7 +170,21 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
     match model {
         Model::Wide => wide::solve(inputs),
         Model::Narrow => narrow::solve(inputs),
+        Model::Strip => strip::solve(inputs),
     }
+}
+
+/// m [Pa], gamma [1/Pa] and theta of the dominant equation (4.3): gamma = pi chi mu/m - k,
+/// theta = arctan(m gamma/pi)/pi (4.5). Shared by the wide and the strip models.
+pub(crate) fn exponent(inputs: &PlaneInputs) -> (f64, f64, f64) {
+    let m = inputs.material.plane_modulus();
+    let gamma = std::f64::consts::PI * inputs.material.chi() * inputs.friction.coefficient / m
+        - inputs.wear;
+    (
+        m,
+        gamma,
+        (m * gamma / std::f64::consts::PI).atan() / std::f64::consts::PI,
+    )
 }
 
 /// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, paper 001 (3.13).

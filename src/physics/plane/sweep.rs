@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::Spacing;
 use crate::physics::plane::wide::{self, WideConstants};
-use crate::physics::plane::{Model, PlaneInputs, narrow};
+use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
 
 /// The loads of a sweep.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,8 +36,11 @@ pub struct Sweep {
 
 /// Solves the model at every load of the sweep (the inputs' own load is ignored).
 pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &LoadSweep) -> Sweep {
-    let load = loads.spacing.points(loads.min, loads.max, loads.points);
     let valid = inputs.validate().is_ok();
+    if model == Model::Strip {
+        return by_contact_width(inputs, loads, valid);
+    }
+    let load = loads.spacing.points(loads.min, loads.max, loads.points);
     let wide = (valid && model == Model::Wide).then(|| WideConstants::new(inputs));
     let solutions: Vec<_> = load
         .iter()
@@ -47,10 +50,15 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &LoadSweep) -> Sweep {
                 _ if !valid => None,
                 Model::Wide => wide::solve_with(wide.as_ref()?, &at).ok(),
                 Model::Narrow => narrow::solve(&at).ok(),
+                Model::Strip => unreachable!("the strip sweep runs by contact width"),
             }
         })
         .collect();
-    let pick = |f: fn(&super::PlaneSolution) -> f64| -> Vec<Option<f64>> {
+    gather(load, &solutions)
+}
+
+fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
+    let pick = |f: fn(&PlaneSolution) -> f64| -> Vec<Option<f64>> {
         solutions.iter().map(|s| s.as_ref().map(f)).collect()
     };
     Sweep {
@@ -60,4 +68,44 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &LoadSweep) -> Sweep {
         normal_force: pick(|s| s.normal_force),
         load,
     }
+}
+
+/// The strip sweep, parametrized by the contact width: Brent finds only the widths of the end
+/// loads, then one linear solve per point gives its load (so the loads are the solutions', spaced
+/// like the requested ones in contact width).
+fn by_contact_width(inputs: &PlaneInputs, loads: &LoadSweep, valid: bool) -> Sweep {
+    let none = || {
+        gather(
+            loads.spacing.points(loads.min, loads.max, loads.points),
+            &vec![None; loads.points.max(2)],
+        )
+    };
+    if !valid || inputs.material.is_half_space() {
+        return none();
+    }
+    let kernels = strip::kernels_for(inputs.material.poisson_ratio);
+    let h = inputs.material.thickness;
+    let ends = (
+        strip::width_for_load(&inputs.with_load(loads.min), kernels.as_ref(), loads.min),
+        strip::width_for_load(&inputs.with_load(loads.max), kernels.as_ref(), loads.max),
+    );
+    let (Ok(l_min), Ok(l_max)) = ends else {
+        return none();
+    };
+    let solutions: Vec<Option<PlaneSolution>> = loads
+        .spacing
+        .points(l_min, l_max, loads.points)
+        .into_iter()
+        .map(|l| {
+            let col = strip::collocate(inputs, kernels.as_ref(), l, strip::nodes_for(l / h));
+            let at = inputs.with_load(col.load);
+            (col.load > 0.0 && col.phi.iter().all(|v| v.is_finite()))
+                .then(|| strip::solution(&at, col, Model::Strip))
+        })
+        .collect();
+    let load = solutions
+        .iter()
+        .map(|s| s.as_ref().map_or(f64::NAN, |s| s.inputs.load))
+        .collect::<Vec<_>>();
+    gather(load, &solutions)
 }

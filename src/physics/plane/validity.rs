@@ -24,6 +24,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
     let l_over_h = if h.is_finite() { l / h } else { 0.0 };
     let mut warnings = Vec::new();
     match sol.model {
+        Model::Strip => {}
         Model::Wide => {
             if l_over_h > 0.1 {
                 warnings.push(format!(

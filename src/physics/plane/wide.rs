@@ -4,7 +4,7 @@ use std::f64::consts::PI;
 
 use crate::physics::SolveError;
 use crate::physics::elastic::chi_c12;
-use crate::physics::plane::{PlaneInputs, PlaneSolution, PressureLaw, total_friction};
+use crate::physics::plane::{PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction};
 use crate::physics::roots::{brent, march_up};
 
 /// The constants of the wide solution that do not depend on the contact width.
@@ -28,11 +28,8 @@ impl WideConstants {
     /// The constants for these inputs (the load is not used).
     pub fn new(inputs: &PlaneInputs) -> WideConstants {
         let mat = &inputs.material;
-        let m = mat.plane_modulus();
+        let (m, gamma, theta) = exponent(inputs);
         let chi = mat.chi();
-        let mu = inputs.friction.coefficient;
-        let gamma = PI * chi * mu / m - inputs.wear;
-        let theta = (m * gamma / PI).atan() / PI;
         let phi0_per_q1 = if mat.is_half_space() {
             0.0
         } else {
