@@ -1,0 +1,171 @@
+//! The strip of any thickness (plane.md section 6) against independent routes.
+
+mod common;
+
+use common::{hilbert, integrate_cos, plane, rel};
+use wearlab::physics::elastic::plane_modulus;
+use wearlab::physics::plane::energy::energy;
+use wearlab::physics::plane::narrow::winkler_beta;
+use wearlab::physics::plane::strip::{WideLimit, collocate, kernels_for, nodes_for, solve_with};
+use wearlab::physics::plane::{Model, PlaneInputs, solve};
+
+fn table_inputs(h: f64, p: f64) -> PlaneInputs {
+    let m = plane_modulus(1e10, 0.3);
+    plane(1e10, 0.3, h, 0.3, 0.0, 0.5 / m, 0.05, p)
+}
+
+#[test]
+fn reference_table_of_plane_md() {
+    // plane.md section 6: mu*(P) from an independent computation, E = 1e10, nu = 0.3, R = 0.05,
+    // mu = 0.3, k m = 0.5 (8 digits; P = 1e5 at h = 1e-5, (a+b)/h = 56, is left to the benchmark).
+    let rows = [
+        (1e-3, 1e2, 0.30003392),
+        (1e-3, 1e3, 0.30011585),
+        (1e-3, 1e4, 0.30045234),
+        (1e-3, 1e5, 0.30215441),
+        (1e-5, 1e2, 0.30010592),
+        (1e-5, 1e3, 0.30048261),
+        (1e-5, 1e4, 0.30201080),
+    ];
+    for (h, p, expected) in rows {
+        let sol = solve(&table_inputs(h, p), Model::Strip).unwrap();
+        assert!(
+            (sol.mu_star - expected).abs() < 6e-9,
+            "h={h} P={p}: {}",
+            sol.mu_star
+        );
+    }
+}
+
+#[test]
+fn the_wide_limit_of_the_kernels_reproduces_the_wide_closed_form() {
+    // R2 -> 0 and chi B12 -> chi c12 in the same solver (plane.md section 6).
+    let m = plane_modulus(3e9, 0.35);
+    for inp in [
+        plane(3e9, 0.35, 2e-3, 0.3, 2e6, 1.5 / m, 0.02, 2e3),
+        plane(3e9, 0.35, 1e-2, 0.4, 0.0, 0.0, 0.01, 1e3),
+    ] {
+        let wide = solve(&inp, Model::Wide).unwrap();
+        let limit = solve_with(&inp, &WideLimit::new(0.35)).unwrap();
+        let l = wide.contact_width();
+        assert!((wide.a - limit.a).abs() < 1e-10 * l && (wide.b - limit.b).abs() < 1e-10 * l);
+        assert!(rel(wide.normal_force, limit.normal_force) < 1e-10);
+        assert!((wide.mu_star - limit.mu_star).abs() < 1e-10);
+    }
+}
+
+#[test]
+fn spectral_convergence_in_the_number_of_nodes() {
+    let kernels = kernels_for(0.3);
+    for (h, p) in [(1e-3, 1e4), (1e-5, 1e2)] {
+        let inp = table_inputs(h, p);
+        let l = solve(&inp, Model::Strip).unwrap().contact_width();
+        let n = nodes_for(l / h);
+        let (a, b) = (
+            collocate(&inp, kernels.as_ref(), l, n),
+            collocate(&inp, kernels.as_ref(), l, n * 3 / 2),
+        );
+        assert!(
+            rel(a.q2, b.q2) < 1e-8 && (a.c - b.c).abs() < 1e-8 * l && rel(a.psi, b.psi) < 1e-8,
+            "h={h}"
+        );
+    }
+}
+
+#[test]
+fn limits_wide_and_winkler() {
+    // as (a+b)/h -> 0 the strip tends to the wide model, its error in mu* - mu about 0.09 (L/h)^2;
+    for p in [1e2, 1e3] {
+        let inp = table_inputs(1e-3, p);
+        let (s, w) = (
+            solve(&inp, Model::Strip).unwrap(),
+            solve(&inp, Model::Wide).unwrap(),
+        );
+        let lh = s.contact_width() / 1e-3;
+        assert!(
+            (s.mu_star - w.mu_star).abs() < 0.2 * lh * lh * (s.mu_star - 0.3),
+            "P={p}"
+        );
+    }
+    // as (a+b)/h grows, the contact width tends to Winkler's less about 0.22 h (nu = 0.3).
+    let inp = table_inputs(1e-5, 1e4);
+    let (s, n) = (
+        solve(&inp, Model::Strip).unwrap(),
+        solve(&inp, Model::Narrow).unwrap(),
+    );
+    assert!(s.contact_width() / 1e-5 > 19.0);
+    let short = (n.contact_width() - s.contact_width()) / 1e-5;
+    assert!((0.1..0.3).contains(&short), "L_Winkler - L = {short} h");
+}
+
+#[test]
+fn the_contact_condition_holds_between_the_nodes() {
+    // d/dx of (1.11) with W' = -k q2: m (v' + k q2) = m x/R, v' from (3.7) with the tabulated
+    // kernels, evaluated by brute-force quadrature at points that are not collocation points.
+    let inp = plane(
+        1e10,
+        0.3,
+        1e-3,
+        0.3,
+        1e5,
+        0.5 / plane_modulus(1e10, 0.3),
+        0.05,
+        3e4,
+    );
+    let sol = solve(&inp, Model::Strip).unwrap();
+    let k = kernels_for(0.3);
+    let (m, chi, h) = (plane_modulus(1e10, 0.3), inp.material.chi(), 1e-3);
+    let (lo, hi) = (-sol.a, sol.b);
+    let q2 = |x: f64| sol.pressure(x);
+    let q1 = |x: f64| sol.shear(x);
+    for frac in [0.111, 0.333, 0.5003, 0.777, 0.911] {
+        let x = lo + frac * (hi - lo);
+        let regular = integrate_cos(lo, hi, 60, |s| {
+            q2(s) * k.r2((s - x) / h) + q1(s) * k.chi_b12((s - x) / h)
+        }) / h;
+        let mv = -std::f64::consts::PI * chi * q1(x) - hilbert(lo, hi, x, &q2) - regular;
+        let lhs = mv + m * inp.wear * q2(x);
+        assert!(
+            (lhs - m * x / inp.radius).abs() < 1e-6 * m * sol.contact_width() / inp.radius,
+            "at {frac}: {lhs} vs {}",
+            m * x / inp.radius
+        );
+    }
+}
+
+#[test]
+fn a_narrow_strip_with_strong_wear_keeps_a_positive_pressure() {
+    // lambda L ~ 100: where LU with partial pivoting gave garbage (plane.md section 6).
+    let inp = plane(1e8, 0.3, 1e-4, 0.3, 0.0, 1e-7, 0.05, 1e3);
+    let sol = solve(&inp, Model::Strip).unwrap();
+    let lambda_l = inp.wear / winkler_beta(&inp) * sol.contact_width();
+    assert!(lambda_l > 50.0, "lambda L = {lambda_l}");
+    let prof = wearlab::physics::plane::profile::profile(&sol, 101);
+    assert!(
+        prof.pressure
+            .iter()
+            .all(|q| q.is_finite()
+                && *q >= -1e-6 * prof.pressure.iter().cloned().fold(0.0, f64::max))
+    );
+    assert!(sol.mu_star.is_finite() && sol.mu_star > 0.3);
+}
+
+#[test]
+fn energy_identity_with_the_exact_kernels() {
+    let sol = solve(
+        &plane(
+            1e10,
+            0.3,
+            1e-3,
+            0.3,
+            1e5,
+            0.5 / plane_modulus(1e10, 0.3),
+            0.05,
+            3e4,
+        ),
+        Model::Strip,
+    )
+    .unwrap();
+    let en = energy(&sol);
+    assert!(rel(en.i, en.j) < 1e-6, "{en:?}");
+}
