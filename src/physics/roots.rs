@@ -21,8 +21,13 @@ impl Convergency<f64> for Relative {
 
 /// The root of f in [lo, hi] (f(lo) and f(hi) of opposite signs) to relative accuracy 1e-15.
 pub fn brent(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> Option<f64> {
+    brent_to(lo, hi, 1e-15, f)
+}
+
+/// As `brent`, to relative accuracy `rtol`.
+pub fn brent_to(lo: f64, hi: f64, rtol: f64, f: impl Fn(f64) -> f64) -> Option<f64> {
     let mut conv = Relative {
-        rtol: 1e-15,
+        rtol,
         max_iter: 200,
     };
     find_root_brent(lo, hi, &f, &mut conv).ok()

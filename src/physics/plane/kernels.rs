@@ -145,12 +145,54 @@ impl StripKernels {
         }
     }
 
-    /// Six-point Lagrange interpolation of column `col` at z in [0, Z_MAX]; near 0 the stencil
-    /// reaches negative z through the kernel's parity (column 2 even, the others odd).
-    fn interpolate(&self, col: usize, z: f64) -> f64 {
+    /// R2(z) + mu chi B12(z), the regular kernel of the strip equation, with one set of
+    /// interpolation weights for both columns.
+    pub fn regular(&self, z: f64, mu: f64) -> f64 {
+        let a = z.abs();
+        if a > Z_MAX {
+            return -1.0 / z;
+        }
+        let sign = if z < 0.0 { -1.0 } else { 1.0 };
+        let (i0, l) = self.stencil(a);
+        let mut sum = 0.0;
+        for (j, lj) in l.iter().enumerate() {
+            let i = i0 + j as isize;
+            let row = &self.table[i.unsigned_abs()];
+            // R2 is odd, B12 even: reflect through z = 0
+            let r2 = if i < 0 { -row[1] } else { row[1] };
+            sum += lj * (sign * r2 + mu * row[2]);
+        }
+        sum
+    }
+
+    /// The first table index and the six Lagrange weights at z >= 0: on the uniform grid,
+    /// l_j = D_j prod_k (u - u_k)/(u - u_j) with the constant D_j = 1/prod_{k != j} (j - k).
+    fn stencil(&self, z: f64) -> (isize, [f64; 6]) {
+        const D: [f64; 6] = [
+            -1.0 / 120.0,
+            1.0 / 24.0,
+            -1.0 / 12.0,
+            1.0 / 12.0,
+            -1.0 / 24.0,
+            1.0 / 120.0,
+        ];
         let u = z / DZ;
         let last = self.table.len() as isize - 1;
         let i0 = (u.floor() as isize - 2).min(last - 5);
+        let d: [f64; 6] = std::array::from_fn(|k| u - (i0 + k as isize) as f64);
+        if let Some(j) = d.iter().position(|v| *v == 0.0) {
+            let mut l = [0.0; 6];
+            l[j] = 1.0;
+            return (i0, l);
+        }
+        let all: f64 = d.iter().product();
+        (i0, std::array::from_fn(|j| D[j] * all / d[j]))
+    }
+
+    /// Six-point Lagrange interpolation of column `col` at z in [0, Z_MAX]; near 0 the stencil
+    /// reaches negative z through the kernel's parity (column 2 even, the others odd).
+    fn interpolate(&self, col: usize, z: f64) -> f64 {
+        let (i0, l) = self.stencil(z);
         let parity = if col == 2 { 1.0 } else { -1.0 };
         let value = |i: isize| {
             if i < 0 {
@@ -159,17 +201,10 @@ impl StripKernels {
                 self.table[i as usize][col]
             }
         };
-        let mut sum = 0.0;
-        for j in 0..6 {
-            let mut l = 1.0;
-            for k in 0..6 {
-                if k != j {
-                    l *= (u - (i0 + k) as f64) / (j as f64 - k as f64);
-                }
-            }
-            sum += l * value(i0 + j);
-        }
-        sum
+        l.iter()
+            .enumerate()
+            .map(|(j, lj)| lj * value(i0 + j as isize))
+            .sum()
     }
 
     fn odd(&self, col: usize, z: f64, beyond: f64) -> f64 {

@@ -21,8 +21,8 @@ use crate::physics::plane::kernels::StripKernels;
 use crate::physics::plane::{
     Model, PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction,
 };
-use crate::physics::quadrature::{gauss_jacobi, jacobi_zeros};
-use crate::physics::roots::brent;
+use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
+use crate::physics::roots::brent_to;
 
 /// The regular kernels the solver uses (the exact strip, or the wide limit for checks).
 pub trait Kernels {
@@ -32,6 +32,10 @@ pub trait Kernels {
     fn chi_b12(&self, z: f64) -> f64;
     /// chi l12(z).
     fn chi_l12(&self, z: f64) -> f64;
+    /// R2(z) + mu chi B12(z).
+    fn regular(&self, z: f64, mu: f64) -> f64 {
+        self.r2(z) + mu * self.chi_b12(z)
+    }
 }
 
 impl Kernels for StripKernels {
@@ -43,6 +47,9 @@ impl Kernels for StripKernels {
     }
     fn chi_l12(&self, z: f64) -> f64 {
         StripKernels::chi_l12(self, z)
+    }
+    fn regular(&self, z: f64, mu: f64) -> f64 {
+        StripKernels::regular(self, z, mu)
     }
 }
 
@@ -119,14 +126,48 @@ pub struct Collocation {
     bary: Vec<f64>,
 }
 
-/// The number of nodes that resolves the strip: about 60 + 5 L/h (plane.md section 6).
+/// The number of nodes that resolves the strip: 40 + 4 L/h (plane.md suggests 60 + 5 L/h for
+/// 1e-11; this keeps N against 1.5 N within 1e-8, tested).
 pub fn nodes_for(l_over_h: f64) -> usize {
-    (60.0 + 5.0 * l_over_h).ceil().min(400.0) as usize
+    (40.0 + 4.0 * l_over_h).ceil().min(400.0) as usize
 }
 
 /// Solves the collocation system at contact width `l` with `n` nodes.
 pub fn collocate(inputs: &PlaneInputs, kernels: &dyn Kernels, l: f64, n: usize) -> Collocation {
-    let (m, _, theta) = exponent(inputs);
+    collocate_on(inputs, kernels, l, &Rules::new(inputs, n))
+}
+
+/// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns: they depend on
+/// theta and n only, so a sweep or a root search builds them once.
+pub struct Rules {
+    theta: f64,
+    rule: GaussRule,
+    xk: Vec<f64>,
+}
+
+impl Rules {
+    /// The rules for these inputs' theta with n nodes.
+    pub fn new(inputs: &PlaneInputs, n: usize) -> Rules {
+        let (_, _, theta) = exponent(inputs);
+        Rules {
+            theta,
+            rule: gauss_jacobi(n, 0.5 + theta, 0.5 - theta),
+            xk: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
+        }
+    }
+}
+
+/// As `collocate`, on prepared rules.
+pub fn collocate_on(
+    inputs: &PlaneInputs,
+    kernels: &dyn Kernels,
+    l: f64,
+    rules: &Rules,
+) -> Collocation {
+    let (m, _, _) = exponent(inputs);
+    let theta = rules.theta;
+    let (rule, xk) = (&rules.rule, &rules.xk);
+    let n = rule.nodes.len();
     let chi = inputs.material.chi();
     let (mu, tau0, r) = (
         inputs.friction.coefficient,
@@ -134,8 +175,6 @@ pub fn collocate(inputs: &PlaneInputs, kernels: &dyn Kernels, l: f64, n: usize) 
         inputs.radius,
     );
     let h = inputs.material.thickness;
-    let rule = gauss_jacobi(n, 0.5 + theta, 0.5 - theta);
-    let xk = jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta);
     let half = 0.5 * l;
     let mut a = DMatrix::<f64>::zeros(n + 1, n + 1);
     let mut rhs = DVector::<f64>::zeros(n + 1);
@@ -143,7 +182,7 @@ pub fn collocate(inputs: &PlaneInputs, kernels: &dyn Kernels, l: f64, n: usize) 
         for i in 0..n {
             let t = rule.nodes[i];
             let z = half * (t - xi) / h;
-            let regular = kernels.r2(z) + mu * kernels.chi_b12(z);
+            let regular = kernels.regular(z, mu);
             a[(k, i)] = rule.weights[i] * (1.0 / (PI * (t - xi)) + half / (PI * h) * regular);
         }
         a[(k, n)] = m / PI;
@@ -175,8 +214,8 @@ pub fn collocate(inputs: &PlaneInputs, kernels: &dyn Kernels, l: f64, n: usize) 
         l,
         c,
         theta,
-        nodes: rule.nodes,
-        weights: rule.weights,
+        nodes: rule.nodes.clone(),
+        weights: rule.weights.clone(),
         phi,
         q2,
         psi,
@@ -190,9 +229,16 @@ pub(crate) fn width_for_load(
     inputs: &PlaneInputs,
     kernels: &dyn Kernels,
     p: f64,
+    rtol: f64,
 ) -> Result<f64, SolveError> {
     let h = inputs.material.thickness;
-    let f = |l: f64| collocate(inputs, kernels, l, nodes_for(l / h)).load - p;
+    let rules = std::cell::RefCell::new(HashMap::<usize, Rules>::new());
+    let f = |l: f64| {
+        let n = nodes_for(l / h);
+        let mut cache = rules.borrow_mut();
+        let r = cache.entry(n).or_insert_with(|| Rules::new(inputs, n));
+        collocate_on(inputs, kernels, l, r).load - p
+    };
     let guess = (8.0 * inputs.radius * p / inputs.material.plane_modulus()).sqrt();
     let (mut lo, mut hi) = (guess, guess);
     let mut tries = 0;
@@ -212,7 +258,7 @@ pub(crate) fn width_for_load(
             "the strip model finds no contact width for P = {p:.4e} N/m"
         )));
     }
-    brent(lo, hi, f).ok_or_else(|| {
+    brent_to(lo, hi, rtol, f).ok_or_else(|| {
         SolveError::NoSolution(format!(
             "the contact width did not converge at P = {p:.4e} N/m"
         ))
@@ -257,7 +303,7 @@ pub fn solve_with(
     inputs: &PlaneInputs,
     kernels: &dyn Kernels,
 ) -> Result<PlaneSolution, SolveError> {
-    let l = width_for_load(inputs, kernels, inputs.load)?;
+    let l = width_for_load(inputs, kernels, inputs.load, 1e-15)?;
     let col = collocate(inputs, kernels, l, nodes_for(l / inputs.material.thickness));
     if col.phi.iter().any(|v| !v.is_finite()) {
         return Err(SolveError::NoSolution(

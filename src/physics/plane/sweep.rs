@@ -86,18 +86,30 @@ fn by_contact_width(inputs: &PlaneInputs, loads: &LoadSweep, valid: bool) -> Swe
     let kernels = strip::kernels_for(inputs.material.poisson_ratio);
     let h = inputs.material.thickness;
     let ends = (
-        strip::width_for_load(&inputs.with_load(loads.min), kernels.as_ref(), loads.min),
-        strip::width_for_load(&inputs.with_load(loads.max), kernels.as_ref(), loads.max),
+        strip::width_for_load(
+            &inputs.with_load(loads.min),
+            kernels.as_ref(),
+            loads.min,
+            1e-6,
+        ),
+        strip::width_for_load(
+            &inputs.with_load(loads.max),
+            kernels.as_ref(),
+            loads.max,
+            1e-6,
+        ),
     );
     let (Ok(l_min), Ok(l_max)) = ends else {
         return none();
     };
+    // one set of rules for the whole sweep, with the nodes the widest contact needs
+    let rules = strip::Rules::new(inputs, strip::nodes_for(l_max / h));
     let solutions: Vec<Option<PlaneSolution>> = loads
         .spacing
         .points(l_min, l_max, loads.points)
         .into_iter()
         .map(|l| {
-            let col = strip::collocate(inputs, kernels.as_ref(), l, strip::nodes_for(l / h));
+            let col = strip::collocate_on(inputs, kernels.as_ref(), l, &rules);
             let at = inputs.with_load(col.load);
             (col.load > 0.0 && col.phi.iter().all(|v| v.is_finite()))
                 .then(|| strip::solution(&at, col, Model::Strip))
