@@ -667,6 +667,10 @@ pub const BUNDLED: &[Bundled] = &[
         text: include_str!("../presets/thin-strip-winkler.toml"),
     },
     Bundled {
+        file: "hard-coating-strip.toml",
+        text: include_str!("../presets/hard-coating-strip.toml"),
+    },
+    Bundled {
         file: "jgh-egg-box.toml",
         text: include_str!("../presets/jgh-egg-box.toml"),
     },
