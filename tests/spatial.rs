@@ -222,38 +222,26 @@ fn time_step_against_closed_form(inp: &SpatialInputs, t_end: f64, steps: usize) 
         })
         .collect();
     let osc_pressure = |u: &[f64]| -> Vec<f64> {
-        // naive separable DFT forward, multiply, inverse
+        // naive separable DFT forward, multiply, inverse: a 1-D transform along the rows, then
+        // along the columns
+        let dft_1d = |line: &[(f64, f64)], sign: f64| -> Vec<(f64, f64)> {
+            (0..n)
+                .map(|p| {
+                    line.iter().enumerate().fold((0.0, 0.0), |acc, (i, v)| {
+                        let angle = 2.0 * PI * (p * i) as f64 / n as f64;
+                        let (s, c) = (sign * angle.sin(), angle.cos());
+                        (acc.0 + v.0 * c - v.1 * s, acc.1 + v.0 * s + v.1 * c)
+                    })
+                })
+                .collect()
+        };
         let dft = |data: &[(f64, f64)], sign: f64| -> Vec<(f64, f64)> {
-            let mut rows = vec![(0.0, 0.0); n * n];
-            for j in 0..n {
-                for p in 0..n {
-                    let mut acc = (0.0, 0.0);
-                    for i in 0..n {
-                        let (c, s) = (
-                            (2.0 * PI * (p * i) as f64 / n as f64).cos(),
-                            sign * (2.0 * PI * (p * i) as f64 / n as f64).sin(),
-                        );
-                        let v = data[j * n + i];
-                        acc.0 += v.0 * c - v.1 * s;
-                        acc.1 += v.0 * s + v.1 * c;
-                    }
-                    rows[j * n + p] = acc;
-                }
-            }
+            let rows: Vec<(f64, f64)> = data.chunks(n).flat_map(|row| dft_1d(row, sign)).collect();
             let mut out = vec![(0.0, 0.0); n * n];
             for p in 0..n {
-                for q in 0..n {
-                    let mut acc = (0.0, 0.0);
-                    for j in 0..n {
-                        let (c, s) = (
-                            (2.0 * PI * (q * j) as f64 / n as f64).cos(),
-                            sign * (2.0 * PI * (q * j) as f64 / n as f64).sin(),
-                        );
-                        let v = rows[j * n + p];
-                        acc.0 += v.0 * c - v.1 * s;
-                        acc.1 += v.0 * s + v.1 * c;
-                    }
-                    out[q * n + p] = acc;
+                let column: Vec<(f64, f64)> = (0..n).map(|j| rows[j * n + p]).collect();
+                for (q, v) in dft_1d(&column, sign).into_iter().enumerate() {
+                    out[q * n + p] = v;
                 }
             }
             out

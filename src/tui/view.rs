@@ -913,7 +913,7 @@ fn chart_help(problem: Problem, chart: usize) -> &'static str {
             "Wear per pass: the depth a strip point loses while the punch passes over it (k times the integral of q2 from x to b). Wear rate k q2: depth per unit sliding distance."
         }
         (Problem::Plane, 2) => {
-            "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The block marks the current load; the other model is overlaid for comparison."
+            "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The block marks the current load; the other models are overlaid for comparison (the preset's model sets the scale)."
         }
         (Problem::Plane, _) => "Contact edges a (trailing) and b (leading) against load.",
         (Problem::Spatial, 0) => {
