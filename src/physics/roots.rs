@@ -33,6 +33,35 @@ pub fn brent_to(lo: f64, hi: f64, rtol: f64, f: impl Fn(f64) -> f64) -> Option<f
     find_root_brent(lo, hi, &f, &mut conv).ok()
 }
 
+/// Widens a bracket around `start` for an increasing f: x goes down by `shrink` (at most
+/// `tries_down` times) until f(x) < 0, and up by `grow` (at most `tries_up` times) until
+/// f(x) >= 0. Each point is evaluated once. None when no bracket is found (or f is NaN).
+pub fn bracket(
+    start: f64,
+    (shrink, tries_down): (f64, usize),
+    (grow, tries_up): (f64, usize),
+    f: impl Fn(f64) -> f64,
+) -> Option<(f64, f64)> {
+    let f_start = f(start);
+    let (mut lo, mut f_lo) = (start, f_start);
+    for _ in 0..tries_down {
+        if f_lo < 0.0 {
+            break;
+        }
+        lo *= shrink;
+        f_lo = f(lo);
+    }
+    let (mut hi, mut f_hi) = (start, f_start);
+    for _ in 0..tries_up {
+        if f_hi >= 0.0 {
+            break;
+        }
+        hi *= grow;
+        f_hi = f(hi);
+    }
+    (f_lo < 0.0 && f_hi >= 0.0).then_some((lo, hi))
+}
+
 /// Marches x up geometrically (factor `growth`) from `start` while f(x) < 0 and x <= `limit`;
 /// returns the first bracket [x_k, x_{k+1}] with f(x_k) < 0 <= f(x_{k+1}), or the largest f seen
 /// (with its x) when there is none.

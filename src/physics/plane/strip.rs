@@ -22,7 +22,7 @@ use crate::physics::plane::{
     Model, PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction,
 };
 use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
-use crate::physics::roots::brent_to;
+use crate::physics::roots::{bracket, brent_to};
 
 /// The regular kernels the solver uses (the exact strip, or the wide limit for checks).
 pub trait Kernels {
@@ -240,24 +240,11 @@ pub(crate) fn width_for_load(
         collocate_on(inputs, kernels, l, r).load - p
     };
     let guess = (8.0 * inputs.radius * p / inputs.material.plane_modulus()).sqrt();
-    let (mut lo, mut hi) = (guess, guess);
-    let mut tries = 0;
-    let below = |v: f64| v < 0.0;
-    let at_or_above = |v: f64| v >= 0.0;
-    while !below(f(lo)) && tries < 60 {
-        lo *= 0.5;
-        tries += 1;
-    }
-    tries = 0;
-    while !at_or_above(f(hi)) && tries < 60 {
-        hi *= 1.5;
-        tries += 1;
-    }
-    if !(below(f(lo)) && at_or_above(f(hi))) {
+    let Some((lo, hi)) = bracket(guess, (0.5, 60), (1.5, 60), f) else {
         return Err(SolveError::NoSolution(format!(
             "the strip model finds no contact width for P = {p:.4e} N/m"
         )));
-    }
+    };
     brent_to(lo, hi, rtol, f).ok_or_else(|| {
         SolveError::NoSolution(format!(
             "the contact width did not converge at P = {p:.4e} N/m"
