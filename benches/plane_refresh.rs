@@ -37,7 +37,7 @@ fn refresh(c: &mut Criterion) {
 
 fn strip_sweep(c: &mut Criterion) {
     use wearlab::physics::{Friction, Material};
-    // plane.md's table case (E = 1e10, nu = 0.3, R = 0.05, mu = 0.3, k m = 0.5) on h = 1e-5 m:
+    // docs/physics/plane.md's table case (E = 1e10, nu = 0.3, R = 0.05, mu = 0.3, k m = 0.5) on h = 1e-5 m:
     // loads 10..500 N/m give (a+b)/h from about 1.5 to 5; 1e4..2e4 N/m give about 20.
     let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);
     let inputs = wearlab::physics::plane::PlaneInputs {

@@ -294,7 +294,7 @@ fn strip_model_through_the_command_line() {
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["model"], "strip");
     assert!(v["theta"].is_number() && v["validity"]["ok"] == true);
-    // plane.md section 6 reference table, h = 1e-5, P = 1e3
+    // docs/physics/plane.md section 6 reference table, h = 1e-5, P = 1e3
     assert!((v["mu_star"].as_f64().unwrap() - 0.30048261).abs() < 6e-9);
     assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-6);
     assert_eq!(v["sweep"]["mu_star"].as_array().unwrap().len(), 40);

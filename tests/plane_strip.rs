@@ -1,4 +1,4 @@
-//! The strip of any thickness (plane.md section 6) against independent routes.
+//! The strip of any thickness (docs/physics/plane.md section 6) against independent routes.
 
 mod common;
 
@@ -16,7 +16,7 @@ fn table_inputs(h: f64, p: f64) -> PlaneInputs {
 
 #[test]
 fn reference_table_of_plane_md() {
-    // plane.md section 6: mu*(P) from an independent computation, E = 1e10, nu = 0.3, R = 0.05,
+    // docs/physics/plane.md section 6: mu*(P) from an independent computation, E = 1e10, nu = 0.3, R = 0.05,
     // mu = 0.3, k m = 0.5 (8 digits; P = 1e5 at h = 1e-5, (a+b)/h = 56, is left to the benchmark).
     let rows = [
         (1e-3, 1e2, 0.30003392),
@@ -39,7 +39,7 @@ fn reference_table_of_plane_md() {
 
 #[test]
 fn the_wide_limit_of_the_kernels_reproduces_the_wide_closed_form() {
-    // R2 -> 0 and chi B12 -> chi c12 in the same solver (plane.md section 6).
+    // R2 -> 0 and chi B12 -> chi c12 in the same solver (docs/physics/plane.md section 6).
     let m = plane_modulus(3e9, 0.35);
     for inp in [
         plane(3e9, 0.35, 2e-3, 0.3, 2e6, 1.5 / m, 0.02, 2e3),
@@ -135,7 +135,7 @@ fn the_contact_condition_holds_between_the_nodes() {
 
 #[test]
 fn a_narrow_strip_with_strong_wear_keeps_a_positive_pressure() {
-    // lambda L ~ 100: where LU with partial pivoting gave garbage (plane.md section 6).
+    // lambda L ~ 100: where LU with partial pivoting gave garbage (docs/physics/plane.md section 6).
     let inp = plane(1e8, 0.3, 1e-4, 0.3, 0.0, 1e-7, 0.05, 1e3);
     let sol = solve(&inp, Model::Strip).unwrap();
     let lambda_l = inp.wear / winkler_beta(&inp) * sol.contact_width();

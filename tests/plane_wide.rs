@@ -194,7 +194,7 @@ fn integrals_of_the_pressure_match_q2_and_psi() {
 
 #[test]
 fn corrected_eq_4_9_at_small_friction() {
-    // plane.md section 3: for h = inf, tau0 = 0, mu << 1, mu* = mu - (8/3) theta sqrt(2P/((1-4theta^2) m R)),
+    // docs/physics/plane.md section 3: for h = inf, tau0 = 0, mu << 1, mu* = mu - (8/3) theta sqrt(2P/((1-4theta^2) m R)),
     // with an error of about mu^2/(1 + mu^2) relative to mu* - mu.
     let (e, nu, r) = (1e10, 0.3, 0.05);
     let m = plane_modulus(e, nu);
@@ -218,7 +218,7 @@ fn corrected_eq_4_9_at_small_friction() {
 
 #[test]
 fn half_plane_row_of_the_reference_table() {
-    // plane.md section 6 (independent computation): E = 1e10, nu = 0.3, R = 0.05, mu = 0.3, k m = 0.5.
+    // docs/physics/plane.md section 6 (independent computation): E = 1e10, nu = 0.3, R = 0.05, mu = 0.3, k m = 0.5.
     let m = plane_modulus(1e10, 0.3);
     let table = [
         (1e2, 0.30003269),
@@ -250,7 +250,7 @@ fn half_plane_row_of_the_reference_table() {
 
 #[test]
 fn energy_identity_holds_and_matches_the_kernel_identity() {
-    // I = J to 1e-6 (relative); and m I = -pi chi int q1 q2 - chi c12 Q1 Q2/h (plane.md section 5),
+    // I = J to 1e-6 (relative); and m I = -pi chi int q1 q2 - chi c12 Q1 Q2/h (docs/physics/plane.md section 5),
     // with int q1 q2 by an independent quadrature.
     for inp in cases() {
         let sol = solve(&inp, Model::Wide).unwrap();

@@ -1,4 +1,4 @@
-//! The spatial problem (spatial.md) against independent routes and classical results.
+//! The spatial problem (docs/physics/spatial.md) against independent routes and classical results.
 
 mod common;
 
@@ -55,7 +55,7 @@ fn preset(file: &str) -> SpatialInputs {
 
 #[test]
 fn a_wave_along_x_sees_the_plane_strain_kernels() {
-    // spatial.md section 2: with wy = 0, A = (pi/m) K2/k and B = (pi chi/m) K12/k (plane.md section 2).
+    // docs/physics/spatial.md section 2: with wy = 0, A = (pi/m) K2/k and B = (pi chi/m) K12/k (docs/physics/plane.md section 2).
     for (nu, h) in [(0.3, f64::INFINITY), (0.3, 1e-3), (0.45, 2e-4), (0.0, 5e-3)] {
         let mat = Material {
             youngs_modulus: 7e9,
@@ -103,7 +103,7 @@ fn westergaard_and_johnson_greenwood_higginson_amplitudes() {
 
 #[test]
 fn half_space_closed_forms_of_decay_and_drift() {
-    // spatial.md section 3: Dh = (1-nu)^2 + mu^2 sx^2 (1-2nu)^2/4, beta = k_w G k (1-nu)/Dh,
+    // docs/physics/spatial.md section 3: Dh = (1-nu)^2 + mu^2 sx^2 (1-2nu)^2/4, beta = k_w G k (1-nu)/Dh,
     // c = k_w mu G (1-2nu)/(2 Dh), tan phi = mu sx (1-2nu)/(2(1-nu)).
     let (e, nu, mu, kw) = (3e9, 0.3, 0.6, 2e-15);
     let mat = Material {
@@ -140,7 +140,7 @@ fn half_space_closed_forms_of_decay_and_drift() {
 
 #[test]
 fn thin_layer_limits() {
-    // spatial.md section 3: as kh -> 0, beta -> k_w (lambda_L + 2G)/h and
+    // docs/physics/spatial.md section 3: as kh -> 0, beta -> k_w (lambda_L + 2G)/h and
     // c -> k_w mu (1 - 4nu) G (1 - nu)/(1 - 2nu)^2, with lambda_L = 2 G nu/(1 - 2nu).
     let (e, nu, mu, kw, h) = (1e7, 0.35, 0.5, 1e-12, 1e-3);
     let mat = Material {
@@ -170,7 +170,7 @@ fn thin_layer_limits() {
 
 #[test]
 fn the_sign_change_of_the_coupling_matches_the_reference_x_star() {
-    // spatial.md section 2: X*(0.3) = 1.0090, X*(0.35) = 1.5377, X*(0.4) = 2.0759, X*(0.45) = 2.7794, X*(0.49) = 4.0215.
+    // docs/physics/spatial.md section 2: X*(0.3) = 1.0090, X*(0.35) = 1.5377, X*(0.4) = 2.0759, X*(0.45) = 2.7794, X*(0.49) = 4.0215.
     for (nu, x_star) in [
         (0.3, 1.0090),
         (0.35, 1.5377),
@@ -374,7 +374,7 @@ fn the_bound_can_be_negative_while_contact_is_complete() {
 
 #[test]
 fn deformation_friction_is_the_cell_average_of_p_g_x() {
-    // spatial.md section 5: D = <p g_x>, psi = -D; the average over whole periods by the trapezoid
+    // docs/physics/spatial.md section 5: D = <p g_x>, psi = -D; the average over whole periods by the trapezoid
     // rule (exact for trigonometric polynomials of low degree).
     for inp in [
         preset("dispersion.toml"),

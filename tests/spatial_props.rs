@@ -1,5 +1,5 @@
 //! Property: the drift reverses sign across X*(nu) for nu > 1/4, and never for nu <= 1/4
-//! (spatial.md section 2: the sign of B is the sign of K12).
+//! (docs/physics/spatial.md section 2: the sign of B is the sign of K12).
 
 use proptest::prelude::*;
 use wearlab::physics::spatial::harmonic::{Harmonic, evolution};

@@ -1,7 +1,7 @@
 //! Transfer functions of an elastic strip (layer) bonded to a rigid base, shared by the plane and
 //! the spatial problems.
 //!
-//! Plane strain, paper 001 eq. (3.2) with the corrections of `physics/plane.md` section 2
+//! Plane strain, paper 001 eq. (3.2) with the corrections of `docs/physics/plane.md` section 2
 //! (ch 2X in K12). Everything is evaluated with e = exp(-2X) after dividing the numerator and the
 //! denominator by ch 2X, so no term overflows for any X >= 0, including X = +inf (half-plane).
 
@@ -96,7 +96,7 @@ mod tests {
 
     #[test]
     fn small_x_limits_give_the_winkler_constants() {
-        // plane.md section 2: K1 ~ 4X/(kappa+1), K2 ~ 4(kappa-1)X/(kappa+1)^2, K12 = O(X^2).
+        // docs/physics/plane.md section 2: K1 ~ 4X/(kappa+1), K2 ~ 4(kappa-1)X/(kappa+1)^2, K12 = O(X^2).
         let nu: f64 = 0.3;
         let kap = kappa(nu);
         let x = 1e-5;
@@ -126,7 +126,7 @@ mod tests {
 
     #[test]
     fn chi_c12_matches_the_reference_table() {
-        // Values of physics/plane.md section 2 (independent high-precision computation).
+        // Values of docs/physics/plane.md section 2 (independent high-precision computation).
         let table = [
             (0.0, -0.749076675679),
             (0.2, -0.680127589496),

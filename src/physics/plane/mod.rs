@@ -1,8 +1,8 @@
-//! The plane problem (paper 001, Soldatenkov 2007; verified formulas in `physics/plane.md`):
+//! The plane problem (paper 001, Soldatenkov 2007, `docs/references.md`; verified formulas in `docs/physics/plane.md`):
 //! a rigid parabolic punch g(x) = x^2/(2R) slides with Coulomb friction and adhesion over an
 //! elastic strip bonded to a rigid base; the strip wears, W' = -k q2.
 //!
-//! Conventions (plane.md section 1): x along the surface, positive in the punch's direction of
+//! Conventions (docs/physics/plane.md section 1): x along the surface, positive in the punch's direction of
 //! motion, origin at the punch tip; contact zone [-a, b] with b the leading edge; q2 > 0 pressure;
 //! q1 shear on the strip, positive in +x.
 
@@ -27,7 +27,7 @@ pub enum Model {
     Wide,
     /// Narrow strip, (a+b)/h -> inf: Winkler foundation (section 5).
     Narrow,
-    /// Any thickness: the exact strip kernels (3.7), solved by collocation (plane.md section 6).
+    /// Any thickness: the exact strip kernels (3.7), solved by collocation (docs/physics/plane.md section 6).
     Strip,
 }
 

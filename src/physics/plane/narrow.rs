@@ -1,4 +1,4 @@
-//! Narrow strip ((a+b)/h -> inf), the Winkler foundation: paper 001 section 5, plane.md section 4.
+//! Narrow strip ((a+b)/h -> inf), the Winkler foundation: paper 001 section 5, docs/physics/plane.md section 4.
 //!
 //! v = -beta (q2 - q2(0)), lambda = k/beta, q2' - lambda q2 = -g'/beta (5.3). With L = a + b,
 //! y = lambda L and u = a + x in [0, L], everything is written in overflow-safe, cancellation-free
@@ -69,7 +69,7 @@ pub struct Shape {
     pub s: f64,
 }
 
-/// hh, G, S of plane.md section 4 at y >= 0.
+/// hh, G, S of docs/physics/plane.md section 4 at y >= 0.
 ///
 /// With d = 1/2 - hh the identities hh^3 + (1 - hh)^3 = 1/4 + 3 d^2 and G = 2d/y give
 /// S = (2 d^2 - (G - 1/6))/y, in which both terms are O(y) and of the same sign: no cancellation.
@@ -234,7 +234,7 @@ mod tests {
 
     #[test]
     fn leading_terms_of_the_series() {
-        // plane.md section 4: hh = 1/2 - y/12 + ..., G = 1/6 - y^2/360, S = y/60 - y^3/1890.
+        // docs/physics/plane.md section 4: hh = 1/2 - y/12 + ..., G = 1/6 - y^2/360, S = y/60 - y^3/1890.
         let y = 1e-3;
         let s = shape(y);
         assert!((s.hh - (0.5 - y / 12.0 + y.powi(3) / 720.0)).abs() < 1e-18);

@@ -1,4 +1,4 @@
-//! The strip of any thickness (plane.md section 6): the wear-contact equation with the exact
+//! The strip of any thickness (docs/physics/plane.md section 6): the wear-contact equation with the exact
 //! kernels (3.7),
 //!   gamma q2 + (1/m) p.v. int q2/(s-x) ds + (1/(m h)) int q2(s) [R2(z) + mu chi B12(z)] ds
 //!     = -x/R - (tau0/m) [pi chi + chi l12((b-x)/h) + chi l12((a+x)/h)],    z = (s-x)/h,
@@ -126,7 +126,7 @@ pub struct Collocation {
     bary: Vec<f64>,
 }
 
-/// The number of nodes that resolves the strip: 40 + 4 L/h (plane.md suggests 60 + 5 L/h for
+/// The number of nodes that resolves the strip: 40 + 4 L/h (docs/physics/plane.md suggests 60 + 5 L/h for
 /// 1e-11; this keeps N against 1.5 N within 1e-8, tested).
 pub fn nodes_for(l_over_h: f64) -> usize {
     (40.0 + 4.0 * l_over_h).ceil().min(400.0) as usize

@@ -1,4 +1,4 @@
-//! Whether an operating point lies where its model holds, in words (plane.md sections 3, 4).
+//! Whether an operating point lies where its model holds, in words (docs/physics/plane.md sections 3, 4).
 
 use serde::Serialize;
 

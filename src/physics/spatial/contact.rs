@@ -1,4 +1,4 @@
-//! The complete-contact check p > 0 (1.3), spatial.md section 4.
+//! The complete-contact check p > 0 (1.3), docs/physics/spatial.md section 4.
 
 use serde::Serialize;
 

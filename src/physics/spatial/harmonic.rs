@@ -1,10 +1,10 @@
-//! One harmonic of the wavy punch: the layer's response to a surface wave (spatial.md section 2)
+//! One harmonic of the wavy punch: the layer's response to a surface wave (docs/physics/spatial.md section 2)
 //! and the closed-form evolution under punch wear (section 3).
 
 use crate::physics::elastic::strip_transfer;
 use crate::physics::{Friction, Material};
 
-/// The layer's compliances for a surface wave of wavenumber k (spatial.md section 2), all [m/Pa]:
+/// The layer's compliances for a surface wave of wavenumber k (docs/physics/spatial.md section 2), all [m/Pa]:
 ///   u_z^ = -A p^ + i sx B tau^,  u_x^ = (sx^2 C + sy^2 Ct) tau^ + i sx B p^.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LayerResponse {
@@ -56,7 +56,7 @@ impl Harmonic {
     }
 }
 
-/// How one harmonic evolves (spatial.md section 3). All rates use k_w = k V.
+/// How one harmonic evolves (docs/physics/spatial.md section 3). All rates use k_w = k V.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Evolution {
     /// Layer response at this wavenumber.
