@@ -2,10 +2,10 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use wearlab::physics::Spacing;
 use wearlab::physics::plane::profile::profile;
-use wearlab::physics::plane::sweep::{LoadSweep, sweep};
+use wearlab::physics::plane::sweep::sweep;
 use wearlab::physics::plane::{Model, solve};
+use wearlab::physics::{Spacing, SweepRange};
 use wearlab::preset::bundled;
 
 fn refresh(c: &mut Criterion) {
@@ -15,7 +15,7 @@ fn refresh(c: &mut Criterion) {
     ] {
         let preset = bundled(file).unwrap().unwrap();
         let inputs = preset.plane_inputs();
-        let loads = LoadSweep {
+        let loads = SweepRange {
             points: 200,
             spacing: Spacing::Log,
             ..preset.plane.sweep
@@ -59,7 +59,7 @@ fn strip_sweep(c: &mut Criterion) {
         ("strip_sweep/upto_5h", 10.0, 500.0),
         ("strip_sweep/20h", 1e4, 2e4),
     ] {
-        let loads = LoadSweep {
+        let loads = SweepRange {
             min,
             max,
             points: 100,

@@ -113,3 +113,45 @@ impl Spacing {
             .collect()
     }
 }
+
+/// The range of a sweep (loads P [N/m] of the plane mu*(P) sweep, mean pressures pbar [Pa] of
+/// the spatial mu*(pbar) sweep): `points` values from `min` to `max`, both included.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweepRange {
+    /// Smallest value (unit of the swept quantity), > 0 for a log sweep.
+    pub min: f64,
+    /// Largest value, > min.
+    pub max: f64,
+    /// Number of values, >= 2 (`limits::SWEEP_POINTS`).
+    pub points: usize,
+    /// Log or linear spacing.
+    pub spacing: Spacing,
+}
+
+impl SweepRange {
+    /// The swept values.
+    pub fn values(&self) -> Vec<f64> {
+        self.spacing.points(self.min, self.max, self.points)
+    }
+
+    /// The one rule between the two ends: min < max. `names` are what the caller calls the ends
+    /// (e.g. `["load_min", "load_max"]`), `show` how it writes a value; the error says which end
+    /// must move.
+    pub fn check_order(
+        &self,
+        names: [&str; 2],
+        show: impl Fn(f64) -> String,
+    ) -> Result<(), String> {
+        if self.min < self.max {
+            Ok(())
+        } else {
+            Err(format!(
+                "{} = {} must be larger than {} = {}",
+                names[1],
+                show(self.max),
+                names[0],
+                show(self.min)
+            ))
+        }
+    }
+}

@@ -423,35 +423,11 @@ pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
         }
         Key::Radius => p.plane.radius = value,
         Key::Load => p.plane.load = value,
-        Key::LoadMin if value >= p.plane.sweep.max => {
-            return Err(format!(
-                "P min must stay below P max = {}",
-                format_si(p.plane.sweep.max, "N/m")
-            ));
-        }
         Key::LoadMin => p.plane.sweep.min = value,
-        Key::LoadMax if value <= p.plane.sweep.min => {
-            return Err(format!(
-                "P max must stay above P min = {}",
-                format_si(p.plane.sweep.min, "N/m")
-            ));
-        }
         Key::LoadMax => p.plane.sweep.max = value,
         Key::LoadPoints => p.plane.sweep.points = value as usize,
         Key::LoadScale => p.plane.sweep.spacing = spacing(value),
-        Key::PressureMin if value >= p.spatial.sweep.max => {
-            return Err(format!(
-                "pbar min must stay below pbar max = {}",
-                format_si(p.spatial.sweep.max, "Pa")
-            ));
-        }
         Key::PressureMin => p.spatial.sweep.min = value,
-        Key::PressureMax if value <= p.spatial.sweep.min => {
-            return Err(format!(
-                "pbar max must stay above pbar min = {}",
-                format_si(p.spatial.sweep.min, "Pa")
-            ));
-        }
         Key::PressureMax => p.spatial.sweep.max = value,
         Key::PressurePoints => p.spatial.sweep.points = value as usize,
         Key::PressureScale => p.spatial.sweep.spacing = spacing(value),
@@ -466,6 +442,12 @@ pub fn set(preset: &Preset, r: &Row, value: f64) -> Result<Preset, String> {
         Key::PhaseX(n) => with_harmonic(&mut p, n, |h| h.phase_x = value),
         Key::PhaseY(n) => with_harmonic(&mut p, n, |h| h.phase_y = value),
     }
+    p.plane
+        .sweep
+        .check_order(["P min", "P max"], |v| format_si(v, "N/m"))?;
+    p.spatial
+        .sweep
+        .check_order(["pbar min", "pbar max"], |v| format_si(v, "Pa"))?;
     if p.problem == Problem::Spatial {
         wearlab::physics::spatial::validate_harmonics(&p.spatial.harmonics).map_err(|e| {
             e.to_string()

@@ -503,3 +503,17 @@ fn sweep_rows_edit_points_and_scale() {
     press(&mut app, KeyCode::Right);
     assert_eq!(app.preset.plane.sweep.points, 70);
 }
+
+#[test]
+fn the_form_keeps_a_sweep_in_order_with_the_same_rule_as_the_file() {
+    let mut app = App::new(bundled("polymer-coating.toml"), None, None);
+    select(&mut app, Key::LoadMin);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "200 kN/m");
+    assert!(press(&mut app, KeyCode::Enter).is_empty());
+    assert_eq!(
+        app.message.as_ref().unwrap().0,
+        "P min: P max = 100 kN/m must be larger than P min = 200 kN/m"
+    );
+    assert_eq!(app.preset.plane.sweep.min, 100.0);
+}

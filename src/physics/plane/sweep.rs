@@ -2,22 +2,9 @@
 
 use serde::Serialize;
 
-use crate::physics::Spacing;
+use crate::physics::SweepRange;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
-
-/// The loads of a sweep.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LoadSweep {
-    /// Smallest load [N/m], > 0.
-    pub min: f64,
-    /// Largest load [N/m], > min.
-    pub max: f64,
-    /// Number of loads, >= 2.
-    pub points: usize,
-    /// Log or linear spacing.
-    pub spacing: Spacing,
-}
 
 /// The sweep; entries are None where the model has no solution at that load.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -34,13 +21,13 @@ pub struct Sweep {
     pub normal_force: Vec<Option<f64>>,
 }
 
-/// Solves the model at every load of the sweep (the inputs' own load is ignored).
-pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &LoadSweep) -> Sweep {
+/// Solves the model at every load of the sweep (loads P [N/m]) (the inputs' own load is ignored).
+pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
     let valid = inputs.validate().is_ok();
     if model == Model::Strip {
         return by_contact_width(inputs, loads, valid);
     }
-    let load = loads.spacing.points(loads.min, loads.max, loads.points);
+    let load = loads.values();
     let wide = (valid && model == Model::Wide).then(|| WideConstants::new(inputs));
     let solutions: Vec<_> = load
         .iter()
@@ -73,12 +60,11 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
 /// The strip sweep, parametrized by the contact width: Brent finds only the widths of the end
 /// loads, then one linear solve per point gives its load (so the loads are the solutions', spaced
 /// like the requested ones in contact width).
-fn by_contact_width(inputs: &PlaneInputs, loads: &LoadSweep, valid: bool) -> Sweep {
+fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sweep {
     let none = || {
-        gather(
-            loads.spacing.points(loads.min, loads.max, loads.points),
-            &vec![None; loads.points.max(2)],
-        )
+        let load = loads.values();
+        let none = vec![None; load.len()];
+        gather(load, &none)
     };
     if !valid || inputs.material.is_half_space() {
         return none();

@@ -2,9 +2,9 @@
 
 use serde::Serialize;
 
-use crate::physics::Spacing;
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, evolution};
 use crate::physics::spatial::{SpatialInputs, solve_with};
+use crate::physics::{Spacing, SweepRange};
 
 /// Values at evenly spaced times over [0, duration].
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -54,19 +54,6 @@ pub fn history(
     }
 }
 
-/// The mean pressures of a sweep.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PressureSweep {
-    /// Smallest pbar [Pa].
-    pub min: f64,
-    /// Largest pbar [Pa].
-    pub max: f64,
-    /// Number of points >= 2.
-    pub points: usize,
-    /// Log or linear.
-    pub spacing: Spacing,
-}
-
 /// mu* against pbar at one time; None where contact is not complete.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MeanPressureSweep {
@@ -86,9 +73,9 @@ pub fn pressure_sweep(
     evolutions: &[Evolution],
     time: f64,
     oscillation_min: f64,
-    spec: &PressureSweep,
+    spec: &SweepRange,
 ) -> MeanPressureSweep {
-    let pressures = spec.spacing.points(spec.min, spec.max, spec.points);
+    let pressures = spec.values();
     let psi = solve_with(inputs, evolutions, time).psi;
     let mu = inputs.friction.coefficient;
     MeanPressureSweep {

@@ -1,0 +1,185 @@
+//! Preset files (schema 1, TOML, SI units; `design.md`): the validated preset, its defaults and
+//! its errors. The file format is in `file`, the checks in `check`, the bundled list in `bundled`.
+
+mod bundled;
+mod check;
+mod file;
+
+use std::fmt;
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+
+use crate::physics::plane::{Model, PlaneInputs};
+use crate::physics::spatial::SpatialInputs;
+use crate::physics::spatial::harmonic::Harmonic;
+use crate::physics::{Friction, Material, Spacing, SweepRange};
+
+pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
+pub use check::parse;
+pub use file::{load, save, to_toml, write_atomically};
+
+/// The schema version this build reads and writes.
+pub const SCHEMA: i64 = 1;
+
+/// Which problem a preset opens on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Problem {
+    /// The plane problem (parabolic punch on a strip).
+    Plane,
+    /// The spatial problem (wavy punch on a layer).
+    Spatial,
+}
+
+/// The `[plane]` section.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlaneSection {
+    /// Which model solves it.
+    pub model: Model,
+    /// Punch radius R [m].
+    pub radius: f64,
+    /// Load per unit length P [N/m].
+    pub load: f64,
+    /// The loads of the mu*(P) sweep.
+    pub sweep: SweepRange,
+}
+
+/// The `[spatial]` section.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialSection {
+    /// Mean pressure pbar [Pa].
+    pub mean_pressure: f64,
+    /// Sliding speed V [m/s].
+    pub sliding_speed: f64,
+    /// The instant shown t [s].
+    pub time: f64,
+    /// Extent of the time charts [s].
+    pub duration: f64,
+    /// Points per side of the field grid.
+    pub grid: usize,
+    /// The mean pressures of the mu*(pbar) sweep.
+    pub sweep: SweepRange,
+    /// The punch harmonics at t = 0.
+    pub harmonics: Vec<Harmonic>,
+}
+
+/// A validated preset.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Preset {
+    /// Short title.
+    pub name: String,
+    /// What the preset shows and what to look at.
+    pub description: String,
+    /// The problem the explorer opens on.
+    pub problem: Problem,
+    /// The strip / layer.
+    pub material: Material,
+    /// Friction law.
+    pub friction: Friction,
+    /// Wear coefficient k [1/Pa].
+    pub wear: f64,
+    /// The plane problem (defaults when the file has no `[plane]`).
+    pub plane: PlaneSection,
+    /// The spatial problem (defaults when the file has no `[spatial]`).
+    pub spatial: SpatialSection,
+}
+
+impl Preset {
+    /// The plane solver's inputs at the preset's load.
+    pub fn plane_inputs(&self) -> PlaneInputs {
+        PlaneInputs {
+            material: self.material,
+            friction: self.friction,
+            wear: self.wear,
+            radius: self.plane.radius,
+            load: self.plane.load,
+        }
+    }
+}
+
+impl Preset {
+    /// The spatial solver's inputs.
+    pub fn spatial_inputs(&self) -> SpatialInputs {
+        SpatialInputs {
+            material: self.material,
+            friction: self.friction,
+            wear: self.wear,
+            sliding_speed: self.spatial.sliding_speed,
+            mean_pressure: self.spatial.mean_pressure,
+            harmonics: self.spatial.harmonics.clone(),
+        }
+    }
+}
+
+/// The `[plane]` section a preset without one gets: a wide strip, R = 50 mm, P = 1e4 N/m.
+pub fn default_plane_section() -> PlaneSection {
+    PlaneSection {
+        model: Model::Wide,
+        radius: 0.05,
+        load: 1e4,
+        sweep: default_load_sweep(1e4),
+    }
+}
+
+/// The `[spatial]` section a preset without one gets: pbar = 50 MPa, V = 1 m/s, one 1-D wave of
+/// 1 mm wavelength and 40 nm amplitude, t = 0, duration 200 s, a 64-point grid.
+pub fn default_spatial_section() -> SpatialSection {
+    SpatialSection {
+        mean_pressure: 5e7,
+        sliding_speed: 1.0,
+        time: 0.0,
+        duration: 200.0,
+        grid: 64,
+        sweep: default_pressure_sweep(5e7),
+        harmonics: vec![Harmonic {
+            amplitude: 4e-8,
+            wavenumber_x: 2.0 * std::f64::consts::PI / 1e-3,
+            wavenumber_y: 0.0,
+            phase_x: 0.0,
+            phase_y: std::f64::consts::FRAC_PI_2,
+        }],
+    }
+}
+
+/// The default mean-pressure sweep: pbar/10 to 10 pbar, 60 points, log.
+pub fn default_pressure_sweep(mean_pressure: f64) -> SweepRange {
+    SweepRange {
+        min: mean_pressure / 10.0,
+        max: mean_pressure * 10.0,
+        points: 60,
+        spacing: Spacing::Log,
+    }
+}
+
+/// The default sweep when a preset gives none: P/100 to 100 P, 60 points, log.
+pub fn default_load_sweep(load: f64) -> SweepRange {
+    SweepRange {
+        min: load / 100.0,
+        max: load * 100.0,
+        points: 60,
+        spacing: Spacing::Log,
+    }
+}
+
+/// What is wrong with a preset file, and where.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PresetError {
+    /// The file.
+    pub path: PathBuf,
+    /// 1-based line, when the problem has one.
+    pub line: Option<usize>,
+    /// What is wrong and what is allowed.
+    pub reason: String,
+}
+
+impl fmt::Display for PresetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "{}:{}: {}", self.path.display(), line, self.reason),
+            None => write!(f, "{}: {}", self.path.display(), self.reason),
+        }
+    }
+}
+
+impl std::error::Error for PresetError {}
