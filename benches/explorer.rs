@@ -6,7 +6,7 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use std::hint::black_box;
-use wearlab::engine::Engine;
+use wearlab::engine::{Engine, Request};
 use wearlab::preset::bundled;
 
 // The explorer lives in the binary; the bench compiles the same model, form and view modules
@@ -27,7 +27,7 @@ fn app_on(file: &str, engine: &mut Engine) -> App {
     let mut app = App::new(preset, None, None);
     for cmd in app.start() {
         if let Command::Solve(g, p) = cmd {
-            update(&mut app, Msg::Solved(g, Box::new(engine.run(&p))));
+            update(&mut app, Msg::Solved(g, Box::new(engine.run(&full(*p)))));
         }
     }
     app
@@ -65,7 +65,7 @@ fn bench(c: &mut Criterion) {
             };
             for cmd in update(&mut app, Msg::Key(KeyEvent::new(dir, KeyModifiers::NONE))) {
                 if let Command::Solve(g, p) = cmd {
-                    update(&mut app, Msg::Solved(g, Box::new(engine.run(&p))));
+                    update(&mut app, Msg::Solved(g, Box::new(engine.run(&full(*p)))));
                 }
             }
             terminal.draw(|f| view(&app, options, f)).unwrap().area
@@ -75,3 +75,10 @@ fn bench(c: &mut Criterion) {
 
 criterion_group!(benches, bench);
 criterion_main!(benches);
+
+fn full(preset: wearlab::preset::Preset) -> Request {
+    Request {
+        preset,
+        overlays: true,
+    }
+}

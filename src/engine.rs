@@ -1,24 +1,19 @@
-//! The incremental engine behind the explorer: cached stages, so an edit recomputes only what it
-//! touches, and a background worker that always works on the newest request (design.md).
+//! The incremental engine behind the explorer: the library's pipeline stages
+//! (`plane::operating_point`, `sweep`, `spatial::evolutions`, `spatial::state_at`, `history`,
+//! `dispersion`), each cached by the typed inputs it depends on, so an edit recomputes only what it
+//! touches; and a background worker that always works on the newest request and answers in
+//! stages, the operating point (what the status shows) first.
 
-use std::collections::HashMap;
-use std::sync::mpsc::{Receiver, Sender, channel};
+use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread;
 
-use crate::physics::SolveError;
-use crate::physics::plane::energy::{Energy, energy};
-use crate::physics::plane::profile::{Profile, profile};
 use crate::physics::plane::sweep::{Sweep, sweep};
-use crate::physics::plane::validity::{Validity, check};
-use crate::physics::plane::{Model, PlaneSolution, solve};
-use crate::physics::spatial::contact::{self, Contact};
-use crate::physics::spatial::field::{Field, field};
-use crate::physics::spatial::harmonic::{Evolution, Harmonic, evolution};
-use crate::physics::spatial::history::{
-    Dispersion, History, MeanPressureSweep, dispersion, history, pressure_sweep,
-};
-use crate::physics::spatial::{Cell, SpatialSolution, solve_with};
+use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
+use crate::physics::spatial::harmonic::Evolution;
+use crate::physics::spatial::history::{Dispersion, History, dispersion, history};
+use crate::physics::spatial::{self, SpatialInputs, SpatialState, StateAt, state_at};
+use crate::physics::{Friction, Material, SolveError, SweepRange};
 use crate::preset::{Preset, Problem};
 
 /// Points of the plane profile drawn by the explorer.
@@ -28,54 +23,59 @@ pub const DISPERSION_POINTS: usize = 120;
 /// Points of the spatial time history.
 pub const HISTORY_POINTS: usize = 200;
 
-/// The plane operating point with everything derived from it.
-#[derive(Clone, Debug)]
-pub struct PlanePoint {
-    /// The solution.
-    pub solution: PlaneSolution,
-    /// Its profile.
-    pub profile: Profile,
-    /// I, J.
-    pub energy: Energy,
-    /// Validity verdict.
-    pub validity: Validity,
+/// What the explorer asks the engine for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Request {
+    /// The preset to solve; its `problem` says which.
+    pub preset: Preset,
+    /// Also sweep the plane models other than the preset's (the overlays of mu*(P)); asked only
+    /// while a chart that draws them is visible.
+    pub overlays: bool,
 }
 
-/// Everything the explorer shows for the plane problem.
+/// What is known of the plane problem.
 #[derive(Clone, Debug)]
 pub struct PlaneOutput {
     /// The operating point, or why there is none.
-    pub point: Result<Arc<PlanePoint>, SolveError>,
-    /// mu*(P) etc. for every model, the preset's model first.
-    pub sweeps: Vec<(Model, Arc<Sweep>)>,
+    pub point: Result<Arc<OperatingPoint>, SolveError>,
+    /// The preset's model swept over the preset's loads; None until computed.
+    pub sweep: Option<Arc<Sweep>>,
+    /// The other models' sweeps, when asked for and computed.
+    pub overlays: Vec<(Model, Arc<Sweep>)>,
 }
 
-/// Everything the explorer shows for the spatial problem.
+/// What is known of the spatial problem.
 #[derive(Clone, Debug)]
 pub struct SpatialOutput {
-    /// The solution at time t.
-    pub solution: SpatialSolution,
-    /// The period cell.
-    pub cell: Cell,
-    /// Complete-contact check.
-    pub contact: Contact,
-    /// Fields over the cell.
-    pub field: Field,
-    /// A_n(t), mu*(t) over the duration.
-    pub history: Arc<History>,
-    /// mu* against pbar.
-    pub sweep: MeanPressureSweep,
+    /// Everything at the preset's time.
+    pub state: Arc<SpatialState>,
+    /// A_n(t), mu*(t) over the duration; None until computed.
+    pub history: Option<Arc<History>>,
     /// Drift velocity against wavenumber and direction.
     pub dispersion: Arc<Dispersion>,
 }
 
-/// The engine's answer to one request.
+/// The engine's answer to one request, at one stage.
 #[derive(Clone, Debug)]
 pub enum Output {
     /// Plane problem.
     Plane(PlaneOutput),
-    /// Spatial problem.
-    Spatial(Result<Box<SpatialOutput>, SolveError>),
+    /// Spatial problem, or why its inputs cannot be solved.
+    Spatial(Result<SpatialOutput, SolveError>),
+}
+
+/// One delivery of the worker: the request it answers, what is known so far, and whether it is
+/// the last delivery for that request.
+#[derive(Clone, Debug)]
+pub struct Answer {
+    /// The generation number the request was submitted with.
+    pub generation: u64,
+    /// The request answered (the inputs every value in `output` was computed from).
+    pub request: Arc<Request>,
+    /// The results so far.
+    pub output: Output,
+    /// True when nothing more comes for this request.
+    pub complete: bool,
 }
 
 /// How often each stage has been computed (for tests of the caching).
@@ -85,46 +85,83 @@ pub struct StageCounts {
     pub operating_point: usize,
     /// Plane load sweeps.
     pub load_sweep: usize,
-    /// Spatial harmonic responses.
+    /// Spatial harmonic responses (with the dispersion curves).
     pub responses: usize,
     /// Spatial histories.
     pub history: usize,
-    /// Spatial states at time t (with field and contact check).
+    /// Spatial states at time t (with field, contact check and mean-pressure sweep).
     pub state: usize,
 }
 
-/// A cache of one value per key, keeping only the latest few keys.
-struct Cache<V> {
-    entries: HashMap<String, V>,
+/// A cache of the latest `capacity` values by key: a hit moves its entry to the front, a new
+/// entry pushes out the least recently used one.
+struct Cache<K, V> {
+    entries: VecDeque<(K, V)>,
+    capacity: usize,
 }
 
-impl<V: Clone> Cache<V> {
-    fn new() -> Self {
+impl<K: PartialEq, V: Clone> Cache<K, V> {
+    fn new(capacity: usize) -> Self {
         Cache {
-            entries: HashMap::new(),
+            entries: VecDeque::with_capacity(capacity + 1),
+            capacity,
         }
     }
 
-    fn get_or(&mut self, key: String, counter: &mut usize, compute: impl FnOnce() -> V) -> V {
-        if let Some(v) = self.entries.get(&key) {
-            return v.clone();
+    fn get(&mut self, key: &K) -> Option<V> {
+        let i = self.entries.iter().position(|(k, _)| k == key)?;
+        let entry = self.entries.remove(i)?;
+        let value = entry.1.clone();
+        self.entries.push_front(entry);
+        Some(value)
+    }
+
+    fn get_or(&mut self, key: K, counter: &mut usize, compute: impl FnOnce() -> V) -> V {
+        if let Some(v) = self.get(&key) {
+            return v;
         }
         *counter += 1;
         let v = compute();
-        if self.entries.len() > 8 {
-            self.entries.clear();
-        }
-        self.entries.insert(key, v.clone());
+        self.entries.push_front((key, v.clone()));
+        self.entries.truncate(self.capacity);
         v
     }
 }
 
+/// What the harmonic responses and the dispersion curves depend on.
+#[derive(Clone, Debug, PartialEq)]
+struct ResponseKey {
+    material: Material,
+    friction: Friction,
+    wear_rate: f64,
+    waves: Vec<(f64, f64)>,
+}
+
+impl ResponseKey {
+    fn of(inputs: &SpatialInputs) -> ResponseKey {
+        ResponseKey {
+            material: inputs.material,
+            friction: inputs.friction,
+            wear_rate: inputs.wear_rate(),
+            waves: inputs
+                .harmonics
+                .iter()
+                .map(|h| (h.wavenumber_x, h.wavenumber_y))
+                .collect(),
+        }
+    }
+}
+
+type Responses = Arc<(Vec<Evolution>, Arc<Dispersion>)>;
+
 /// The staged, cached solver.
 pub struct Engine {
-    points: Cache<Result<Arc<PlanePoint>, SolveError>>,
-    sweeps: Cache<Arc<Sweep>>,
-    responses: Cache<Arc<(Vec<Evolution>, Arc<Dispersion>)>>,
-    histories: Cache<Arc<History>>,
+    points: Cache<(PlaneInputs, Model), Result<Arc<OperatingPoint>, SolveError>>,
+    /// Keyed by the inputs at unit load: a sweep does not depend on the load.
+    sweeps: Cache<(PlaneInputs, Model, SweepRange), Arc<Sweep>>,
+    responses: Cache<ResponseKey, Responses>,
+    histories: Cache<(SpatialInputs, f64), Arc<History>>,
+    states: Cache<(SpatialInputs, StateAt), Result<Arc<SpatialState>, SolveError>>,
     /// Stage evaluation counts.
     pub counts: StageCounts,
 }
@@ -135,136 +172,157 @@ impl Default for Engine {
     }
 }
 
+/// Whether the engine should go on to the next stage after a delivery.
+pub type Proceed = bool;
+
 impl Engine {
-    /// An engine with empty caches.
+    /// An engine with empty caches: 8 operating points, 6 sweeps (two settings of three models),
+    /// 4 sets of harmonic responses, 4 histories and 2 spatial states (a 512-point grid holds
+    /// 6 MB).
     pub fn new() -> Engine {
         Engine {
-            points: Cache::new(),
-            sweeps: Cache::new(),
-            responses: Cache::new(),
-            histories: Cache::new(),
+            points: Cache::new(8),
+            sweeps: Cache::new(6),
+            responses: Cache::new(4),
+            histories: Cache::new(4),
+            states: Cache::new(2),
             counts: StageCounts::default(),
         }
     }
 
-    /// Solves the preset's problem, reusing every stage whose inputs did not change.
-    pub fn run(&mut self, preset: &Preset) -> Output {
-        match preset.problem {
-            Problem::Plane => Output::Plane(self.plane(preset)),
-            Problem::Spatial => Output::Spatial(self.spatial(preset)),
+    /// Solves a request to the end, reusing every stage whose inputs did not change.
+    pub fn run(&mut self, request: &Request) -> Output {
+        let mut last = None;
+        self.run_staged(request, |output, _| {
+            last = Some(output);
+            true
+        });
+        last.expect("every request is answered at least once")
+    }
+
+    /// Solves a request stage by stage: `deliver(output, complete)` gets what is known after the
+    /// stage the status needs (the operating point, the state at t) and again when the rest is
+    /// done; when it returns false, the remaining stages are skipped.
+    pub fn run_staged(&mut self, request: &Request, deliver: impl FnMut(Output, bool) -> Proceed) {
+        match request.preset.problem {
+            Problem::Plane => self.plane(request, deliver),
+            Problem::Spatial => self.spatial(&request.preset, deliver),
         }
     }
 
-    fn plane(&mut self, preset: &Preset) -> PlaneOutput {
+    fn plane(&mut self, request: &Request, mut deliver: impl FnMut(Output, bool) -> Proceed) {
+        let preset = &request.preset;
         let inputs = preset.plane_inputs();
         let model = preset.plane.model;
-        let point = self.points.get_or(
-            format!("{inputs:?}{model:?}"),
-            &mut self.counts.operating_point,
-            || {
-                solve(&inputs, model).map(|solution| {
-                    Arc::new(PlanePoint {
-                        profile: profile(&solution, PROFILE_POINTS),
-                        energy: energy(&solution),
-                        validity: check(&solution),
-                        solution,
-                    })
-                })
-            },
-        );
-        // the sweep does not depend on the load: key it without
+        let point = self
+            .points
+            .get_or((inputs, model), &mut self.counts.operating_point, || {
+                operating_point(&inputs, model, PROFILE_POINTS).map(Arc::new)
+            });
         let unloaded = inputs.with_load(1.0);
-        let mut models = vec![model];
-        models.extend(Model::ALL.iter().filter(|m| {
-            **m != model && !(**m == Model::Narrow && unloaded.material.is_half_space())
-        }));
-        let sweeps = models
+        let range = preset.plane.sweep;
+        let others: Vec<Model> = Model::ALL
             .into_iter()
-            .map(|m| {
-                let key = format!("{unloaded:?}{m:?}{:?}", preset.plane.sweep);
-                let s = self.sweeps.get_or(key, &mut self.counts.load_sweep, || {
-                    Arc::new(sweep(&unloaded, m, &preset.plane.sweep))
-                });
-                (m, s)
-            })
+            .filter(|m| *m != model && !(*m == Model::Narrow && inputs.material.is_half_space()))
+            .filter(|_| request.overlays)
             .collect();
-        PlaneOutput { point, sweeps }
+        let mut out = PlaneOutput {
+            point,
+            sweep: self.sweeps.get(&(unloaded, model, range)),
+            overlays: Vec::new(),
+        };
+        let cached: Vec<_> = others
+            .iter()
+            .map_while(|m| Some((*m, self.sweeps.get(&(unloaded, *m, range))?)))
+            .collect();
+        if out.sweep.is_some() && cached.len() == others.len() {
+            out.overlays = cached;
+            deliver(Output::Plane(out), true);
+            return;
+        }
+        if !deliver(Output::Plane(out.clone()), false) {
+            return;
+        }
+        let mut sweep_of = |m: Model| {
+            self.sweeps
+                .get_or((unloaded, m, range), &mut self.counts.load_sweep, || {
+                    Arc::new(sweep(&unloaded, m, &range))
+                })
+        };
+        out.sweep = Some(sweep_of(model));
+        out.overlays = others.into_iter().map(|m| (m, sweep_of(m))).collect();
+        deliver(Output::Plane(out), true);
     }
 
-    fn spatial(&mut self, preset: &Preset) -> Result<Box<SpatialOutput>, SolveError> {
+    fn spatial(&mut self, preset: &Preset, mut deliver: impl FnMut(Output, bool) -> Proceed) {
         let inputs = preset.spatial_inputs();
-        inputs.validate()?;
-        let sp = &preset.spatial;
-        let waves: Vec<(f64, f64)> = inputs
-            .harmonics
-            .iter()
-            .map(|h| (h.wavenumber_x, h.wavenumber_y))
-            .collect();
-        let key = format!(
-            "{:?}{:?}{}{waves:?}",
-            inputs.material,
-            inputs.friction,
-            inputs.wear_rate()
-        );
-        let responses = self.responses.get_or(key, &mut self.counts.responses, || {
-            let evolutions = inputs
-                .harmonics
-                .iter()
-                .map(|h: &Harmonic| {
-                    evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h)
-                })
-                .collect();
-            Arc::new((evolutions, Arc::new(dispersion(&inputs, DISPERSION_POINTS))))
-        });
-        let evolutions = &responses.0;
-        let key = format!("{inputs:?}{}", sp.duration);
-        let hist = self.histories.get_or(key, &mut self.counts.history, || {
-            Arc::new(history(&inputs, evolutions, sp.duration, HISTORY_POINTS))
-        });
-        self.counts.state += 1;
-        let solution = solve_with(&inputs, evolutions, sp.time);
-        let cell = Cell::of(&inputs.harmonics);
-        let contact = contact::check(&solution, &cell);
-        let field = field(&solution, &cell, sp.grid);
-        let sweep = pressure_sweep(
-            &inputs,
-            evolutions,
-            sp.time,
-            contact.min_pressure - inputs.mean_pressure,
-            &sp.sweep,
-        );
-        Ok(Box::new(SpatialOutput {
-            solution,
-            cell,
-            contact,
-            field,
-            history: hist,
-            sweep,
+        if let Err(e) = inputs.validate() {
+            deliver(Output::Spatial(Err(e)), true);
+            return;
+        }
+        let responses =
+            self.responses
+                .get_or(ResponseKey::of(&inputs), &mut self.counts.responses, || {
+                    let evolutions = spatial::evolutions(&inputs);
+                    Arc::new((evolutions, Arc::new(dispersion(&inputs, DISPERSION_POINTS))))
+                });
+        let at = preset.spatial_state_at();
+        let state = self
+            .states
+            .get_or((inputs.clone(), at), &mut self.counts.state, || {
+                state_at(&inputs, &responses.0, &at).map(Arc::new)
+            });
+        let state = match state {
+            Ok(s) => s,
+            Err(e) => {
+                deliver(Output::Spatial(Err(e)), true);
+                return;
+            }
+        };
+        let duration = preset.spatial.duration;
+        let mut out = SpatialOutput {
+            state,
+            history: self.histories.get(&(inputs.clone(), duration)),
             dispersion: Arc::clone(&responses.1),
-        }))
+        };
+        if out.history.is_some() {
+            deliver(Output::Spatial(Ok(out)), true);
+            return;
+        }
+        if !deliver(Output::Spatial(Ok(out.clone())), false) {
+            return;
+        }
+        let evolutions = &responses.0;
+        out.history = Some(self.histories.get_or(
+            (inputs.clone(), duration),
+            &mut self.counts.history,
+            || Arc::new(history(&inputs, evolutions, duration, HISTORY_POINTS)),
+        ));
+        deliver(Output::Spatial(Ok(out)), true);
     }
 }
 
-type Slot = Arc<(Mutex<Option<(u64, Preset)>>, Condvar)>;
+type Slot = Arc<(Mutex<Option<(u64, Arc<Request>)>>, Condvar)>;
 
 /// A background thread running the engine: one job at a time, one pending slot that a newer
-/// request overwrites (older pending work is dropped unseen).
+/// request overwrites (older pending work is dropped unseen). A job stops after its first
+/// delivery when a newer request is waiting.
 pub struct Worker {
     slot: Slot,
-    results: Receiver<(u64, Output)>,
 }
 
 impl Worker {
-    /// Starts the worker thread.
-    pub fn spawn() -> Worker {
+    /// Starts the worker thread; `deliver` gets every answer and returns false when nobody
+    /// listens any more (the thread then ends).
+    pub fn spawn(mut deliver: impl FnMut(Answer) -> bool + Send + 'static) -> Worker {
         let slot: Slot = Arc::new((Mutex::new(None), Condvar::new()));
-        let (tx, results): (Sender<(u64, Output)>, _) = channel();
         let thread_slot = Arc::clone(&slot);
         thread::spawn(move || {
             let mut engine = Engine::new();
+            let (lock, cvar) = &*thread_slot;
+            let newer_waits = || lock.lock().is_ok_and(|pending| pending.is_some());
             loop {
-                let (generation, preset) = {
-                    let (lock, cvar) = &*thread_slot;
+                let (generation, request) = {
                     let mut pending = lock.lock().expect("the UI never panics holding the slot");
                     while pending.is_none() {
                         pending = cvar
@@ -273,26 +331,31 @@ impl Worker {
                     }
                     pending.take().expect("checked above")
                 };
-                let output = engine.run(&preset);
-                if tx.send((generation, output)).is_err() {
-                    return; // the UI is gone
+                let mut listening = true;
+                engine.run_staged(&request, |output, complete| {
+                    listening = deliver(Answer {
+                        generation,
+                        request: Arc::clone(&request),
+                        output,
+                        complete,
+                    });
+                    listening && !newer_waits()
+                });
+                if !listening {
+                    return;
                 }
             }
         });
-        Worker { slot, results }
+        Worker { slot }
     }
 
     /// Asks for a solve; replaces any request not yet started.
-    pub fn submit(&self, generation: u64, preset: Preset) {
+    pub fn submit(&self, generation: u64, request: Request) {
         let (lock, cvar) = &*self.slot;
         *lock
             .lock()
-            .expect("the worker never panics holding the slot") = Some((generation, preset));
+            .expect("the worker never panics holding the slot") =
+            Some((generation, Arc::new(request)));
         cvar.notify_one();
-    }
-
-    /// A finished result, if any (never blocks).
-    pub fn try_recv(&self) -> Option<(u64, Output)> {
-        self.results.try_recv().ok()
     }
 }

@@ -4,15 +4,16 @@
 use serde::Serialize;
 
 use crate::physics::SolveError;
-use crate::physics::plane::energy::{Energy, energy};
-use crate::physics::plane::profile::{Profile, profile};
+use crate::physics::plane::Model;
+use crate::physics::plane::energy::Energy;
+use crate::physics::plane::operating_point;
+use crate::physics::plane::profile::Profile;
 use crate::physics::plane::sweep::{Sweep, sweep};
-use crate::physics::plane::validity::{Validity, check};
-use crate::physics::plane::{Model, solve};
-use crate::physics::spatial::contact::{self, Contact};
-use crate::physics::spatial::field::{Field, field};
-use crate::physics::spatial::history::{MeanPressureSweep, pressure_sweep};
-use crate::physics::spatial::{self, Cell};
+use crate::physics::plane::validity::Validity;
+use crate::physics::spatial::contact::Contact;
+use crate::physics::spatial::field::Field;
+use crate::physics::spatial::history::MeanPressureSweep;
+use crate::physics::spatial::{self, state_at};
 use crate::preset::Preset;
 
 /// The full plane report.
@@ -56,7 +57,8 @@ pub struct PlaneReport {
 pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, SolveError> {
     let inputs = preset.plane_inputs();
     let model = preset.plane.model;
-    let sol = solve(&inputs, model)?;
+    let point = operating_point(&inputs, model, points)?;
+    let sol = &point.solution;
     Ok(PlaneReport {
         problem: "plane",
         model,
@@ -70,9 +72,9 @@ pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, Solve
         psi: sol.psi,
         delta_g: sol.delta_g,
         mu_star: sol.mu_star,
-        energy: energy(&sol),
-        validity: check(&sol),
-        profile: profile(&sol, points),
+        energy: point.energy,
+        validity: point.validity,
+        profile: point.profile,
         sweep: sweep(&inputs, model, &preset.plane.sweep),
     })
 }
@@ -150,21 +152,16 @@ pub fn spatial_report(
     probes: &[[f64; 2]],
 ) -> Result<SpatialReport, SolveError> {
     let inputs = preset.spatial_inputs();
-    let time = time.unwrap_or(preset.spatial.time);
-    let sol = spatial::solve(&inputs, time)?;
-    let cell = Cell::of(&inputs.harmonics);
-    let contact = contact::check(&sol, &cell);
-    let evolutions: Vec<_> = sol.harmonics.iter().map(|h| h.evolution).collect();
-    let sweep = pressure_sweep(
-        &inputs,
-        &evolutions,
-        time,
-        contact.min_pressure - inputs.mean_pressure,
-        &preset.spatial.sweep,
-    );
+    inputs.validate()?;
+    let mut at = preset.spatial_state_at();
+    if let Some(t) = time {
+        at.time = t;
+    }
+    let state = state_at(&inputs, &spatial::evolutions(&inputs), &at)?;
+    let sol = &state.solution;
     Ok(SpatialReport {
         problem: "spatial",
-        time,
+        time: at.time,
         mean_pressure: inputs.mean_pressure,
         load: sol.load,
         mu_star: sol.mu_star,
@@ -184,7 +181,7 @@ pub fn spatial_report(
                 phase_y: h.state.phase_y,
             })
             .collect(),
-        contact,
+        contact: state.contact,
         probes: probes
             .iter()
             .map(|&[x, y]| Probe {
@@ -195,8 +192,8 @@ pub fn spatial_report(
                 shape: sol.shape(x, y),
             })
             .collect(),
-        sweep,
-        field: field(&sol, &cell, preset.spatial.grid),
+        sweep: state.sweep,
+        field: state.field,
     })
 }
 

@@ -11,8 +11,8 @@ use std::path::PathBuf;
 use serde::{Deserialize, Serialize};
 
 use crate::physics::plane::{Model, PlaneInputs};
-use crate::physics::spatial::SpatialInputs;
 use crate::physics::spatial::harmonic::Harmonic;
+use crate::physics::spatial::{SpatialInputs, StateAt};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
@@ -108,6 +108,15 @@ impl Preset {
             sliding_speed: self.spatial.sliding_speed,
             mean_pressure: self.spatial.mean_pressure,
             harmonics: self.spatial.harmonics.clone(),
+        }
+    }
+
+    /// Where the spatial state is evaluated: the preset's time, grid and mean-pressure sweep.
+    pub fn spatial_state_at(&self) -> StateAt {
+        StateAt {
+            time: self.spatial.time,
+            grid: self.spatial.grid,
+            sweep: self.spatial.sweep,
         }
     }
 }

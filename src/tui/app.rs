@@ -238,7 +238,7 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
             // A result older than the one on screen is dropped; a newer one is shown even when a
             // still newer request is pending (playing time supersedes every request before its
             // answer arrives, and must still move the screen).
-            if generation > app.shown {
+            if generation >= app.shown {
                 app.output = Some(*output);
                 app.shown = generation;
             }

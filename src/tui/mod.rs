@@ -16,7 +16,7 @@ use ratatui::crossterm::event::{
     self, DisableMouseCapture, EnableMouseCapture, Event, KeyEventKind,
 };
 use ratatui::crossterm::execute;
-use wearlab::engine::{Output, Worker};
+use wearlab::engine::{Answer, Output, Request, Worker};
 use wearlab::preset::{self, Preset};
 
 use app::{App, Command, Msg, update};
@@ -64,13 +64,20 @@ fn event_loop(
     mut app: App,
     render: RenderOptions,
 ) -> io::Result<()> {
-    let worker = Worker::spawn();
+    let (answers, results) = std::sync::mpsc::channel::<Answer>();
+    let worker = Worker::spawn(move |a| answers.send(a).is_ok());
     let mut commands = app.start();
     let mut redraw = true;
     loop {
         for cmd in commands.drain(..) {
             match cmd {
-                Command::Solve(generation, preset) => worker.submit(generation, *preset),
+                Command::Solve(generation, preset) => worker.submit(
+                    generation,
+                    Request {
+                        preset: *preset,
+                        overlays: true,
+                    },
+                ),
                 Command::Save(path, preset) => save(&mut app, &path, &preset),
                 Command::Export => export(&mut app),
                 Command::Quit => return Ok(()),
@@ -98,8 +105,11 @@ fn event_loop(
         } else if app.playing {
             commands = update(&mut app, Msg::Tick);
         }
-        while let Some((generation, output)) = worker.try_recv() {
-            commands.extend(update(&mut app, Msg::Solved(generation, Box::new(output))));
+        while let Ok(answer) = results.try_recv() {
+            commands.extend(update(
+                &mut app,
+                Msg::Solved(answer.generation, Box::new(answer.output)),
+            ));
             redraw = true;
         }
     }
@@ -132,7 +142,7 @@ pub fn chart_csv(app: &App) -> Option<(String, String)> {
         .join("-");
     match app.output.as_ref()? {
         Output::Spatial(Ok(out)) if app.chart == 0 => {
-            let f = &out.field;
+            let f = &out.state.field;
             let mut text = String::from("x,y,pressure\n");
             for (j, y) in f.y.iter().enumerate() {
                 for (i, x) in f.x.iter().enumerate() {

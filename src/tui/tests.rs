@@ -3,7 +3,7 @@
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::Engine;
+use wearlab::engine::{Engine, Request};
 use wearlab::preset::{BUNDLED, Preset, Problem};
 
 use crate::tui::app::{App, Command, Mode, Msg, update};
@@ -47,7 +47,7 @@ fn settle(app: &mut App, cmds: Vec<Command>) {
     let mut engine = Engine::new();
     for c in cmds {
         if let Command::Solve(generation, preset) = c {
-            let out = engine.run(&preset);
+            let out = engine.run(&full(*preset));
             update(app, Msg::Solved(generation, Box::new(out)));
         }
     }
@@ -240,7 +240,10 @@ fn stale_results_are_dropped() {
     let (Command::Solve(g1, p1), Command::Solve(g2, p2)) = (&first[0], &second[0]) else {
         panic!()
     };
-    let (out1, out2) = (engine.run(p1), engine.run(p2));
+    let (out1, out2) = (
+        engine.run(&full(*p1.clone())),
+        engine.run(&full(*p2.clone())),
+    );
     // the newer answer arrives first: shown, and nothing is pending any more
     update(&mut app, Msg::Solved(*g2, Box::new(out2)));
     assert!(!app.solving());
@@ -266,7 +269,7 @@ fn playing_time_moves_the_screen_although_every_tick_supersedes_the_last_request
         let next = update(&mut app, Msg::Tick);
         for c in pending {
             if let Command::Solve(g, p) = c {
-                update(&mut app, Msg::Solved(g, Box::new(engine.run(&p))));
+                update(&mut app, Msg::Solved(g, Box::new(engine.run(&full(*p)))));
             }
         }
         pending = next;
@@ -274,7 +277,7 @@ fn playing_time_moves_the_screen_although_every_tick_supersedes_the_last_request
     let Some(wearlab::engine::Output::Spatial(Ok(out))) = &app.output else {
         panic!()
     };
-    assert!(out.solution.time > 0.0, "the screen moved on");
+    assert!(out.state.solution.time > 0.0, "the screen moved on");
     assert!(app.solving(), "and the newest tick is still pending");
 }
 
@@ -516,4 +519,11 @@ fn the_form_keeps_a_sweep_in_order_with_the_same_rule_as_the_file() {
         "P min: P max = 100 kN/m must be larger than P min = 200 kN/m"
     );
     assert_eq!(app.preset.plane.sweep.min, 100.0);
+}
+
+fn full(preset: Preset) -> Request {
+    Request {
+        preset,
+        overlays: true,
+    }
 }

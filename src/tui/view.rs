@@ -334,8 +334,10 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
                 overlays: true,
                 marker_label: "now",
                 curves: out
-                    .sweeps
+                    .sweep
                     .iter()
+                    .map(|s| (app.preset.plane.model, s))
+                    .chain(out.overlays.iter().map(|(m, s)| (*m, s)))
                     .map(|(m, s)| {
                         sweep_curve(format!("mu* {}", m.name()), &s.mu_star, &s.load, 1.0)
                     })
@@ -344,7 +346,9 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
             }]
         }
         _ => {
-            let (_, s) = &out.sweeps[0];
+            let Some(s) = &out.sweep else {
+                return Err("solving…".into());
+            };
             vec![ChartSpec {
                 x_label: "P [N/m]".into(),
                 y_label: "edge".into(),
@@ -367,7 +371,7 @@ pub fn plane_charts(app: &App, out: &PlaneOutput) -> Result<Vec<ChartSpec>, Stri
 pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
     match app.chart {
         1 => {
-            let f = &out.field;
+            let f = &out.state.field;
             let row = f.n / 2;
             let x: Vec<f64> = f.x.clone();
             let line = |v: &[f64]| -> Vec<(f64, f64)> {
@@ -409,7 +413,9 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
             ]
         }
         2 => {
-            let h = &out.history;
+            let Some(h) = &out.history else {
+                return Vec::new();
+            };
             let t = app.preset.spatial.time;
             let amplitudes = h
                 .amplitudes
@@ -420,7 +426,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     points: h.time.iter().copied().zip(a.iter().copied()).collect(),
                 })
                 .collect();
-            let mu_at_t = out.solution.mu_star;
+            let mu_at_t = out.state.solution.mu_star;
             vec![
                 ChartSpec {
                     x_label: "t [s]".into(),
@@ -432,6 +438,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                     marker_label: "now",
                     curves: amplitudes,
                     markers: out
+                        .state
                         .solution
                         .harmonics
                         .iter()
@@ -460,7 +467,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
             ]
         }
         3 => {
-            let s = &out.sweep;
+            let s = &out.state.sweep;
             let log = app.preset.spatial.sweep.spacing == Spacing::Log;
             let lx = |p: f64| if log { p.log10() } else { p };
             vec![ChartSpec {
@@ -481,9 +488,15 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
                         .collect(),
                 }],
                 markers: out
+                    .state
                     .contact
                     .complete
-                    .then(|| (lx(app.preset.spatial.mean_pressure), out.solution.mu_star))
+                    .then(|| {
+                        (
+                            lx(app.preset.spatial.mean_pressure),
+                            out.state.solution.mu_star,
+                        )
+                    })
                     .into_iter()
                     .collect(),
             }]
@@ -512,6 +525,7 @@ pub fn spatial_charts(app: &App, out: &SpatialOutput) -> Vec<ChartSpec> {
             let h = app.preset.material.thickness;
             let unit = if d.scaled_by_thickness { h } else { 1.0 };
             let marks: Vec<(f64, f64)> = out
+                .state
                 .solution
                 .harmonics
                 .iter()
@@ -676,7 +690,7 @@ fn ramp(t: f64) -> Color {
 const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
 
 fn draw_heatmap(out: &SpatialOutput, style: RenderOptions, buf: &mut Buffer, area: Rect) {
-    let f = &out.field;
+    let f = &out.state.field;
     let [lo, hi] = bounds(f.pressure.iter().copied());
     let bar = 12u16;
     let w = area.width.saturating_sub(bar + 1).max(4);
@@ -731,8 +745,8 @@ fn draw_heatmap(out: &SpatialOutput, style: RenderOptions, buf: &mut Buffer, are
     );
     let caption = format!(
         "p(x, y) over {} x {}   x ->, sliding of the layer <-",
-        format_si(out.cell.lx, "m"),
-        format_si(out.cell.ly, "m")
+        format_si(out.state.cell.lx, "m"),
+        format_si(out.state.cell.ly, "m")
     );
     Paragraph::new(caption).render(
         Rect {
@@ -795,7 +809,7 @@ fn draw_status(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         },
         Some(Output::Spatial(Err(e))) => lines.push(Line::styled(e.to_string(), bad)),
         Some(Output::Spatial(Ok(out))) => {
-            let s = &out.solution;
+            let s = &out.state.solution;
             lines.push(Line::from(format!(
                 "t = {}  mu* = {:.6}  psi = {}  (mu = {})",
                 format_si(s.time, "s"),
@@ -803,13 +817,13 @@ fn draw_status(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
                 format_si(s.psi, "Pa"),
                 app.preset.friction.coefficient
             )));
-            match out.contact.failure() {
+            match out.state.contact.failure() {
                 Some(why) => lines.push(Line::styled(why, bad)),
                 None => lines.push(Line::styled(
                     format!(
                         "complete contact, p_min = {} ({})",
-                        format_si(out.contact.min_pressure, "Pa"),
-                        if out.contact.exact {
+                        format_si(out.state.contact.min_pressure, "Pa"),
+                        if out.state.contact.exact {
                             "certified"
                         } else {
                             "bound"

@@ -9,6 +9,7 @@
 pub mod energy;
 pub mod kernels;
 pub mod narrow;
+pub mod operating_point;
 pub mod profile;
 pub mod strip;
 pub mod sweep;
@@ -18,6 +19,8 @@ pub mod wide;
 use serde::{Deserialize, Serialize};
 
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
+
+pub use operating_point::{OperatingPoint, operating_point};
 
 /// Which asymptotic model of the strip to solve.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]

@@ -10,11 +10,14 @@ pub mod contact;
 pub mod field;
 pub mod harmonic;
 pub mod history;
+pub mod state;
 
 use std::f64::consts::PI;
 
-use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution, state_at};
+use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution};
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
+
+pub use state::{SpatialState, StateAt, state_at};
 
 /// The inputs of the spatial problem.
 #[derive(Clone, Debug, PartialEq)]
@@ -155,7 +158,7 @@ pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -
         .map(|(h, ev)| HarmonicSolution {
             initial: *h,
             evolution: *ev,
-            state: state_at(h, ev, time),
+            state: harmonic::state_at(h, ev, time),
         })
         .collect();
     let psi = deformation_friction(&harmonics);
