@@ -1,5 +1,6 @@
 //! The `wearlab` binary: the command line around the library.
 
+use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -8,9 +9,12 @@ use clap::{Parser, Subcommand, ValueEnum};
 mod tui;
 
 use wearlab::physics::SolveError;
+use wearlab::physics::limits::{self, Limit};
 use wearlab::preset::{self, Preset, Problem};
-use wearlab::report;
+use wearlab::{finite, report};
 
+/// Exit code when the result could not be written (closed pipe, full disk).
+const EXIT_OUTPUT: u8 = 1;
 /// Exit code for invalid input (bad file, bad value, bad arguments).
 const EXIT_INVALID: u8 = 2;
 /// Exit code when the solver cannot answer.
@@ -45,14 +49,14 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Json)]
         format: Format,
-        /// Number of profile points, both ends included (plane).
-        #[arg(long, default_value_t = 201, value_parser = clap::value_parser!(u32).range(2..=100_000))]
-        points: u32,
+        /// Number of profile points, both ends included (plane; default 201).
+        #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = parse_points)]
+        points: Option<usize>,
         /// The instant t [s] to solve at, overriding the preset's spatial.time (spatial).
-        #[arg(long, value_parser = parse_time)]
+        #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_time)]
         time: Option<f64>,
         /// Also report the fields at the point X,Y [m] (spatial; repeatable).
-        #[arg(long, value_name = "X,Y", value_parser = parse_probe)]
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true, value_parser = parse_probe)]
         probe: Vec<[f64; 2]>,
     },
 }
@@ -63,23 +67,39 @@ enum Format {
     Csv,
 }
 
-fn parse_time(text: &str) -> Result<f64, String> {
-    let t: f64 = text
+/// Profile points when `--points` is not given.
+const DEFAULT_POINTS: usize = 201;
+
+fn number(text: &str, name: &str, limit: &Limit) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
         .parse()
-        .map_err(|_| format!("'{text}' is not a number of seconds"))?;
-    wearlab::physics::limits::TIME.check("--time", t)?;
-    Ok(t)
+        .map_err(|_| format!("'{text}' is not a number (allowed {})", limit.allowed))?;
+    limit.check(name, v)?;
+    Ok(v)
+}
+
+fn parse_points(text: &str) -> Result<usize, String> {
+    number(text, "--points", &limits::PROFILE_POINTS).map(|n| n as usize)
+}
+
+fn parse_time(text: &str) -> Result<f64, String> {
+    number(text, "--time", &limits::TIME)
 }
 
 fn parse_probe(text: &str) -> Result<[f64; 2], String> {
-    let parts: Vec<&str> = text.split(',').collect();
-    match parts.as_slice() {
-        [x, y] => match (x.trim().parse::<f64>(), y.trim().parse::<f64>()) {
-            (Ok(x), Ok(y)) if x.is_finite() && y.is_finite() => Ok([x, y]),
-            _ => Err(format!("'{text}' is not two numbers X,Y in metres")),
-        },
+    match text.split(',').collect::<Vec<_>>().as_slice() {
+        [x, y] => Ok([
+            number(x, "x", &limits::PROBE)?,
+            number(y, "y", &limits::PROBE)?,
+        ]),
         _ => Err(format!("'{text}' is not a point X,Y in metres")),
     }
+}
+
+/// Writes a line on stderr; a closed or full stderr cannot be told, so its error is dropped.
+fn say(message: &str) {
+    let _ = writeln!(io::stderr(), "{message}");
 }
 
 fn main() -> ExitCode {
@@ -91,7 +111,15 @@ fn main() -> ExitCode {
             points,
             time,
             probe,
-        }) => solve(&preset, format, points as usize, time, &probe),
+        }) => solve(
+            &preset,
+            format,
+            &Overrides {
+                points,
+                time,
+                probes: probe,
+            },
+        ),
         None => explore(
             cli.preset,
             tui::Options {
@@ -104,55 +132,100 @@ fn main() -> ExitCode {
 
 fn load(path: &Path) -> Result<Preset, ExitCode> {
     preset::load(path).map_err(|e| {
-        eprintln!("error: {e}");
+        say(&format!("error: {e}"));
         ExitCode::from(EXIT_INVALID)
     })
 }
 
 fn solver_failure(e: SolveError) -> ExitCode {
-    eprintln!("error: {e}");
+    say(&format!("error: {e}"));
     match e {
         SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
         SolveError::NoSolution(_) => ExitCode::from(EXIT_UNSOLVABLE),
     }
 }
 
-fn solve(
-    path: &Path,
-    format: Format,
-    points: usize,
+/// The options of `solve` that apply to one problem only.
+struct Overrides {
+    points: Option<usize>,
     time: Option<f64>,
-    probes: &[[f64; 2]],
-) -> ExitCode {
+    probes: Vec<[f64; 2]>,
+}
+
+impl Overrides {
+    /// An option given for the other problem is an error: a script that asks for `--time` on a
+    /// plane preset expects an answer that depends on it, and would silently get one that does not.
+    fn check(&self, problem: Problem) -> Result<(), String> {
+        let (misplaced, this, other) = match problem {
+            Problem::Plane if self.time.is_some() => ("--time", "plane", "spatial"),
+            Problem::Plane if !self.probes.is_empty() => ("--probe", "plane", "spatial"),
+            Problem::Spatial if self.points.is_some() => ("--points", "spatial", "plane"),
+            _ => return Ok(()),
+        };
+        Err(format!(
+            "{misplaced} applies to {other} presets only; this preset solves problem = \"{this}\""
+        ))
+    }
+}
+
+/// Prints the result, after the last check that it holds only finite numbers.
+fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
+    if let Err(e) = guard {
+        say(&format!("error: {e}"));
+        return ExitCode::from(EXIT_UNSOLVABLE);
+    }
+    let mut out = io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            say(&format!("error: cannot write the result to stdout: {e}"));
+            ExitCode::from(EXIT_OUTPUT)
+        }
+    }
+}
+
+fn solve(path: &Path, format: Format, options: &Overrides) -> ExitCode {
     let preset = match load(path) {
         Ok(p) => p,
         Err(code) => return code,
     };
+    if let Err(why) = options.check(preset.problem) {
+        say(&format!("error: {why}"));
+        return ExitCode::from(EXIT_INVALID);
+    }
     match preset.problem {
-        Problem::Plane => match report::plane_report(&preset, points) {
-            Ok(r) => {
-                match format {
-                    Format::Json => println!("{}", report::to_json(&r)),
-                    Format::Csv => print!("{}", report::profile_csv(&r.profile)),
-                }
-                ExitCode::SUCCESS
+        Problem::Plane => {
+            let points = options.points.unwrap_or(DEFAULT_POINTS);
+            match report::plane_report(&preset, points) {
+                Ok(r) => match format {
+                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                    Format::Csv => {
+                        let csv = report::profile_csv(&r.profile);
+                        let guard = finite::check_csv(&csv);
+                        print(&csv, guard)
+                    }
+                },
+                Err(e) => solver_failure(e),
             }
-            Err(e) => solver_failure(e),
-        },
-        Problem::Spatial => match report::spatial_report(&preset, time, probes) {
+        }
+        Problem::Spatial => match report::spatial_report(&preset, options.time, &options.probes) {
             Ok(r) => {
-                match format {
-                    Format::Json => println!("{}", report::to_json(&r)),
-                    Format::Csv => print!("{}", report::field_csv(&r, &preset.friction)),
-                }
+                let printed = match format {
+                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                    Format::Csv => {
+                        let csv = report::field_csv(&r, &preset.friction);
+                        let guard = finite::check_csv(&csv);
+                        print(&csv, guard)
+                    }
+                };
                 match r.contact.failure() {
                     // The complete-contact solution does not hold: the numbers are printed for
                     // inspection, but the solver has no answer.
-                    Some(why) => {
-                        eprintln!("error: {why}");
+                    Some(why) if printed == ExitCode::SUCCESS => {
+                        say(&format!("error: {why}"));
                         ExitCode::from(EXIT_UNSOLVABLE)
                     }
-                    None => ExitCode::SUCCESS,
+                    _ => printed,
                 }
             }
             Err(e) => solver_failure(e),
@@ -161,6 +234,10 @@ fn solve(
 }
 
 fn explore(path: Option<PathBuf>, options: tui::Options) -> ExitCode {
+    if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
+        say("error: wearlab needs a terminal; use `wearlab solve` for scripts");
+        return ExitCode::from(EXIT_INVALID);
+    }
     let preset = match &path {
         Some(p) => match load(p) {
             Ok(p) => p,
@@ -171,7 +248,7 @@ fn explore(path: Option<PathBuf>, options: tui::Options) -> ExitCode {
     match tui::run(preset, path, options) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: the terminal failed: {e}");
+            say(&format!("error: the terminal failed: {e}"));
             ExitCode::FAILURE
         }
     }

@@ -81,7 +81,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&neg),
         format!(
-            "lab/broken.toml:{}: thickness = -0.001 is out of range: allowed h > 0 (m), or inf for a half-plane",
+            "lab/broken.toml:{}: thickness = -0.001 is out of range: allowed 1e-9 <= h <= 1e3 (m) or inf",
             line_of(&neg, "thickness")
         )
     );
@@ -212,7 +212,7 @@ fn broken_spatial_sections_name_the_line() {
     assert_eq!(
         error_of(&negative),
         format!(
-            "lab/broken.toml:{}: amplitude = -0.000001 is out of range: allowed 0 <= A < inf (m)",
+            "lab/broken.toml:{}: amplitude = -0.000001 is out of range: allowed 0 <= A <= 1 (m)",
             line_of(&negative, "amplitude")
         )
     );

@@ -435,11 +435,11 @@ fn bad_input_says_what_is_wrong() {
     );
     assert_eq!(
         err(&|i| i.harmonics[0].amplitude = -1e-6),
-        "invalid input: harmonic 1: amplitude = -0.000001 is out of range: allowed 0 <= A < inf (m)"
+        "invalid input: harmonic 1: amplitude = -0.000001 is out of range: allowed 0 <= A <= 1 (m)"
     );
     assert_eq!(
         err(&|i| i.material.thickness = 0.0),
-        "invalid input: thickness = 0 is out of range: allowed h > 0 (m), or inf for a half-plane"
+        "invalid input: thickness = 0 is out of range: allowed 1e-9 <= h <= 1e3 (m) or inf"
     );
     assert_eq!(
         err(&|i| i.harmonics.clear()),

@@ -1,18 +1,87 @@
 //! The allowed range of every parameter, in one place: the solvers, the preset files and the
 //! explorer's form all check against these and quote `allowed` when a value is rejected.
+//!
+//! The ranges cover every real contact by orders of magnitude and are chosen so that no formula
+//! of the solvers overflows or divides by zero (the products are worked out in the README's
+//! parameter table). The largest ones:
+//! - plane modulus m = pi E/(2 (1 - nu^2)) in [1.6e2, 2.1e13] Pa; the Hertz width sqrt(8 R P/m)
+//!   in [6e-16, 2.3e8] m, and the wide model's search spans 1e-4 .. 1e6 times it, so L^4 (the
+//!   Winkler psi) stays below 1e58;
+//! - m k <= 2.1e12 keeps the exponent shift theta = arctan(m gamma/pi)/pi at least 1e-13 away
+//!   from +-1/2 (1 - 4 theta^2 > 0, (4.6));
+//! - the Winkler compliance beta = (1 - 2nu)(1 + nu) h/((1 - nu) E) lies in [1e-38, 30] m/Pa and
+//!   lambda = k/beta below 1e37 1/m (the Winkler forms use exponentials of negative arguments);
+//! - G k <= 5e22 Pa/m and the layer's normal compliance >= 1e-38 m/Pa, so 1/M <= 1e38 Pa/m, the
+//!   Hessian bound sum k^2 A/M <= 1e58 Pa/m^2 and the decay rate k V/M <= 1e40 1/s (exp(-beta t)
+//!   underflows to 0, never NaN); phases stay below 1e53 rad (sin is finite);
+//! - a sweep's max/min is at most the ratio of its parameter's bounds (1e21), so its logarithm is
+//!   finite.
 
-/// One parameter's range.
+/// One parameter's range: [min, max] (max excluded when `max_excluded`), plus 0 and +inf where
+/// allowed.
 #[derive(Clone, Copy, Debug)]
 pub struct Limit {
     /// What is allowed, in words, with the unit.
     pub allowed: &'static str,
-    ok: fn(f64) -> bool,
+    /// Smallest allowed value (apart from 0 when `zero`).
+    pub min: f64,
+    /// Largest allowed value (excluded when `max_excluded`).
+    pub max: f64,
+    max_excluded: bool,
+    zero: bool,
+    infinite: bool,
+    whole: bool,
+}
+
+const fn range(allowed: &'static str, min: f64, max: f64) -> Limit {
+    Limit {
+        allowed,
+        min,
+        max,
+        max_excluded: false,
+        zero: false,
+        infinite: false,
+        whole: false,
+    }
 }
 
 impl Limit {
+    const fn or_zero(self) -> Limit {
+        Limit { zero: true, ..self }
+    }
+    const fn or_infinite(self) -> Limit {
+        Limit {
+            infinite: true,
+            ..self
+        }
+    }
+    const fn whole(self) -> Limit {
+        Limit {
+            whole: true,
+            ..self
+        }
+    }
+    const fn below_max(self) -> Limit {
+        Limit {
+            max_excluded: true,
+            ..self
+        }
+    }
+
     /// Whether `value` is allowed.
     pub fn accepts(&self, value: f64) -> bool {
-        (self.ok)(value)
+        if (value == 0.0 && self.zero) || (value == f64::INFINITY && self.infinite) {
+            return true;
+        }
+        if self.whole && value.fract() != 0.0 {
+            return false;
+        }
+        let below_max = if self.max_excluded {
+            value < self.max
+        } else {
+            value <= self.max
+        };
+        value >= self.min && below_max
     }
 
     /// Err with "`name` = value is out of range: allowed ..." when `value` is not allowed.
@@ -21,10 +90,21 @@ impl Limit {
             Ok(())
         } else {
             Err(format!(
-                "{name} = {value} is out of range: allowed {}",
+                "{name} = {} is out of range: allowed {}",
+                show(value),
                 self.allowed
             ))
         }
+    }
+}
+
+/// A value as typed: plain digits for ordinary magnitudes, an exponent for huge or tiny ones.
+pub fn show(value: f64) -> String {
+    let size = value.abs();
+    if size != 0.0 && !(1e-6..1e9).contains(&size) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
     }
 }
 
@@ -35,96 +115,61 @@ pub fn check_all(checks: &[(&Limit, &str, f64)]) -> Result<(), String> {
         .try_for_each(|(limit, name, value)| limit.check(name, *value))
 }
 
-fn positive_finite(v: f64) -> bool {
-    v > 0.0 && v.is_finite()
-}
-
-fn non_negative_finite(v: f64) -> bool {
-    v >= 0.0 && v.is_finite()
-}
-
-/// Young's modulus E [Pa].
-pub const YOUNGS_MODULUS: Limit = Limit {
-    allowed: "0 < E < inf (Pa)",
-    ok: positive_finite,
-};
+/// Young's modulus E [Pa]: soft gels (100 Pa) to ten times diamond.
+pub const YOUNGS_MODULUS: Limit = range("1e2 <= E <= 1e13 (Pa)", 1e2, 1e13);
 /// Poisson's ratio nu.
-pub const POISSON_RATIO: Limit = Limit {
-    allowed: "0 <= nu < 0.5",
-    ok: |v| (0.0..0.5).contains(&v),
-};
-/// Thickness h [m]; inf is the half-plane / half-space.
-pub const THICKNESS: Limit = Limit {
-    allowed: "h > 0 (m), or inf for a half-plane",
-    ok: |v| v > 0.0,
-};
-/// Friction coefficient mu.
-pub const FRICTION: Limit = Limit {
-    allowed: "0 <= mu < inf",
-    ok: non_negative_finite,
-};
-/// Adhesive shear stress tau0 [Pa].
-pub const ADHESION: Limit = Limit {
-    allowed: "0 <= tau0 < inf (Pa)",
-    ok: non_negative_finite,
-};
-/// Wear coefficient k [1/Pa].
-pub const WEAR: Limit = Limit {
-    allowed: "0 <= k < inf (1/Pa)",
-    ok: non_negative_finite,
-};
-/// Punch radius R [m].
-pub const RADIUS: Limit = Limit {
-    allowed: "0 < R < inf (m)",
-    ok: positive_finite,
-};
-/// Load per unit length P [N/m].
-pub const LINE_LOAD: Limit = Limit {
-    allowed: "0 < P < inf (N/m)",
-    ok: positive_finite,
-};
+pub const POISSON_RATIO: Limit = range("0 <= nu < 0.5", 0.0, 0.5).below_max();
+/// Thickness h [m]: a nanometre coating to a kilometre; inf is the half-plane / half-space.
+pub const THICKNESS: Limit = range("1e-9 <= h <= 1e3 (m) or inf", 1e-9, 1e3).or_infinite();
+/// Friction coefficient mu (measured values stay below about 5).
+pub const FRICTION: Limit = range("0 <= mu <= 10", 0.0, 10.0);
+/// Adhesive shear stress tau0 [Pa] (the ideal shear strength of the strongest solids is ~1e10).
+pub const ADHESION: Limit = range("0 <= tau0 <= 1e10 (Pa)", 0.0, 1e10);
+/// Wear coefficient k [1/Pa] (severe wear of the softest solids is ~1e-7).
+pub const WEAR: Limit = range("0 <= k <= 0.1 (1/Pa)", 0.0, 0.1);
+/// Punch radius R [m]: a nanometre tip to a nearly flat punch.
+pub const RADIUS: Limit = range("1e-9 <= R <= 1e6 (m)", 1e-9, 1e6);
+/// Load per unit length P [N/m], also the ends of the load sweep.
+pub const LINE_LOAD: Limit = range("1e-9 <= P <= 1e12 (N/m)", 1e-9, 1e12);
 /// Number of sweep points.
-pub const SWEEP_POINTS: Limit = Limit {
-    allowed: "a whole number from 2 to 2000",
-    ok: |v| (2.0..=2000.0).contains(&v) && v.fract() == 0.0,
-};
+pub const SWEEP_POINTS: Limit = range("a whole number from 2 to 2000", 2.0, 2000.0).whole();
+/// Number of points of a plane profile (`wearlab solve --points`).
+pub const PROFILE_POINTS: Limit = range("a whole number from 2 to 100000", 2.0, 100_000.0).whole();
 /// Sliding speed V [m/s].
-pub const SPEED: Limit = Limit {
-    allowed: "0 <= V < inf (m/s)",
-    ok: non_negative_finite,
-};
-/// Mean pressure pbar [Pa].
-pub const MEAN_PRESSURE: Limit = Limit {
-    allowed: "0 < pbar < inf (Pa)",
-    ok: positive_finite,
-};
+pub const SPEED: Limit = range("0 <= V <= 1e3 (m/s)", 0.0, 1e3);
+/// Mean pressure pbar [Pa], also the ends of the mean-pressure sweep.
+pub const MEAN_PRESSURE: Limit = range("1e-3 <= pbar <= 1e12 (Pa)", 1e-3, 1e12);
 /// Harmonic amplitude A [m].
-pub const AMPLITUDE: Limit = Limit {
-    allowed: "0 <= A < inf (m)",
-    ok: non_negative_finite,
-};
-/// Wavenumber [rad/m].
-pub const WAVENUMBER: Limit = Limit {
-    allowed: "0 <= w < inf (rad/m)",
-    ok: non_negative_finite,
-};
+pub const AMPLITUDE: Limit = range("0 <= A <= 1 (m)", 0.0, 1.0);
+/// Wavenumber [rad/m]: 0, or a wavelength from 0.6 nm to 6 km.
+pub const WAVENUMBER: Limit = range("0, or 1e-3 <= w <= 1e10 (rad/m)", 1e-3, 1e10).or_zero();
 /// Phase [rad].
-pub const PHASE: Limit = Limit {
-    allowed: "a finite angle (rad)",
-    ok: f64::is_finite,
-};
-/// Time t [s].
-pub const TIME: Limit = Limit {
-    allowed: "0 <= t < inf (s)",
-    ok: non_negative_finite,
-};
+pub const PHASE: Limit = range("-1e6 <= rho <= 1e6 (rad)", -1e6, 1e6);
+/// Number of harmonics of the spatial punch.
+pub const HARMONICS: Limit = range("a whole number from 1 to 64", 1.0, 64.0).whole();
+/// Time t [s] (up to 30,000 years).
+pub const TIME: Limit = range("0 <= t <= 1e12 (s)", 0.0, 1e12);
 /// Duration of the time charts [s].
-pub const DURATION: Limit = Limit {
-    allowed: "0 < duration < inf (s)",
-    ok: positive_finite,
-};
+pub const DURATION: Limit = range("0 < duration <= 1e12 (s)", f64::MIN_POSITIVE, 1e12);
 /// Points per side of the field grid.
-pub const GRID: Limit = Limit {
-    allowed: "a whole number from 8 to 512",
-    ok: |v| (8.0..=512.0).contains(&v) && v.fract() == 0.0,
-};
+pub const GRID: Limit = range("a whole number from 8 to 512", 8.0, 512.0).whole();
+/// A probe coordinate x or y [m] (`wearlab solve --probe`).
+pub const PROBE: Limit = range("-1e6 <= x, y <= 1e6 (m)", -1e6, 1e6);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bounds_zero_infinity_and_whole_numbers() {
+        assert!(POISSON_RATIO.accepts(0.0) && !POISSON_RATIO.accepts(0.5));
+        assert!(THICKNESS.accepts(f64::INFINITY) && !THICKNESS.accepts(1e4));
+        assert!(WAVENUMBER.accepts(0.0) && !WAVENUMBER.accepts(1e-4));
+        assert!(!YOUNGS_MODULUS.accepts(f64::INFINITY) && !YOUNGS_MODULUS.accepts(1e308));
+        assert!(!GRID.accepts(8.5) && GRID.accepts(512.0));
+        assert!(!DURATION.accepts(0.0));
+        for limit in [YOUNGS_MODULUS, FRICTION, TIME, WAVENUMBER, THICKNESS] {
+            assert!(!limit.accepts(f64::NAN) && !limit.accepts(-1.0));
+        }
+    }
+}

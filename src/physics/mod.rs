@@ -1,5 +1,6 @@
 //! The physics: pure functions of validated parameter structs, SI units throughout.
 
+pub mod checks;
 pub mod elastic;
 pub mod limits;
 pub mod plane;

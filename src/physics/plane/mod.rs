@@ -18,7 +18,7 @@ pub mod wide;
 
 use serde::{Deserialize, Serialize};
 
-use crate::physics::{Friction, Material, SolveError, limits, validate_common};
+use crate::physics::{Friction, Material, SolveError, checks, limits, validate_common};
 
 pub use operating_point::{OperatingPoint, operating_point};
 
@@ -167,14 +167,17 @@ impl PlaneSolution {
     }
 }
 
-/// Solves the plane problem at the inputs' load with the chosen model.
+/// Solves the plane problem at the inputs' load with the chosen model; the solution has passed
+/// the physical checks (`physics::checks::plane`).
 pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
     inputs.validate()?;
-    match model {
+    let sol = match model {
         Model::Wide => wide::solve(inputs),
         Model::Narrow => narrow::solve(inputs),
         Model::Strip => strip::solve(inputs),
-    }
+    }?;
+    checks::plane(&sol)?;
+    Ok(sol)
 }
 
 /// m [Pa], gamma [1/Pa] and theta of the dominant equation (4.3): gamma = pi chi mu/m - k,

@@ -6,7 +6,7 @@
 
 use crate::physics::SolveError;
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw, total_friction};
-use crate::physics::roots::{bracket, brent};
+use crate::physics::roots::{BRENT_ITERATIONS, bracket_or_why, brent};
 
 /// Winkler compliance of the normal displacement, beta = (1 - 2nu)(1 + nu) h / ((1 - nu) E) [m/Pa] (5.1).
 pub fn winkler_beta(inputs: &PlaneInputs) -> f64 {
@@ -171,15 +171,16 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     let p = inputs.load;
     let f = |l: f64| state(inputs, beta, lambda, l).load - p;
     let l0 = (12.0 * beta * inputs.radius * p).cbrt();
-    let Some((lo, hi)) = bracket(l0, (0.5, 60), (2.0, 200), f) else {
-        return Err(SolveError::NoSolution(format!(
-            "the narrow-strip model finds no contact width for P = {p:.4e} N/m \
-             (friction and adhesion leave no net normal load: check tau0 k < 1)"
-        )));
-    };
+    let (lo, hi) = bracket_or_why(l0, (0.5, 60), (2.0, 200), f).map_err(|why| {
+        SolveError::NoSolution(format!(
+            "the narrow-strip model finds no contact width for P = {p:.4e} N/m: {why} \
+             (friction and adhesion may leave no net normal load: check tau0 k < 1)"
+        ))
+    })?;
     let l = brent(lo, hi, f).ok_or_else(|| {
         SolveError::NoSolution(format!(
-            "the contact width did not converge at P = {p:.4e} N/m"
+            "the contact width did not converge at P = {p:.4e} N/m \
+             (Brent's method, {BRENT_ITERATIONS} iterations)"
         ))
     })?;
     let s = state(inputs, beta, lambda, l);

@@ -2,9 +2,9 @@
 
 use serde::Serialize;
 
-use crate::physics::SweepRange;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
+use crate::physics::{SweepRange, checks};
 
 /// The sweep; entries are None where the model has no solution at that load.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -39,6 +39,7 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
                 Model::Narrow => narrow::solve(&at).ok(),
                 Model::Strip => unreachable!("the strip sweep runs by contact width"),
             }
+            .filter(|sol| checks::plane(sol).is_ok())
         })
         .collect();
     gather(load, &solutions)
@@ -59,7 +60,7 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
 
 /// The strip sweep, parametrized by the contact width: Brent finds only the widths of the end
 /// loads, then one linear solve per point gives its load (so the loads are the solutions', spaced
-/// like the requested ones in contact width).
+/// like the requested ones in contact width; a width that fails the checks is left out).
 fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sweep {
     let none = || {
         let load = loads.values();
@@ -90,20 +91,24 @@ fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sw
     };
     // one set of rules for the whole sweep, with the nodes the widest contact needs
     let rules = strip::Rules::new(inputs, strip::nodes_for(l_max / h));
+    // a width whose collocation fails the checks has no load: it is left out of the curve
     let solutions: Vec<Option<PlaneSolution>> = loads
         .spacing
         .points(l_min, l_max, loads.points)
         .into_iter()
-        .map(|l| {
+        .filter_map(|l| {
             let col = strip::collocate_on(inputs, kernels.as_ref(), l, &rules);
             let at = inputs.with_load(col.load);
             (col.load > 0.0 && col.phi.iter().all(|v| v.is_finite()))
                 .then(|| strip::solution(&at, col, Model::Strip))
+                .filter(|sol| checks::plane(sol).is_ok())
         })
+        .map(Some)
         .collect();
     let load = solutions
         .iter()
-        .map(|s| s.as_ref().map_or(f64::NAN, |s| s.inputs.load))
+        .flatten()
+        .map(|s| s.inputs.load)
         .collect::<Vec<_>>();
     gather(load, &solutions)
 }

@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 use crate::physics::SolveError;
 use crate::physics::elastic::chi_c12;
 use crate::physics::plane::{PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction};
-use crate::physics::roots::{brent, march_up};
+use crate::physics::roots::{BRENT_ITERATIONS, NoBracket, brent, march_up};
 
 /// The constants of the wide solution that do not depend on the contact width.
 #[derive(Clone, Copy, Debug)]
@@ -99,16 +99,20 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
     let p = inputs.load;
     let hertz = (8.0 * inputs.radius * p / c.m).sqrt();
     let f = |l: f64| state(c, inputs, l).load - p;
-    let (lo, hi) = march_up(hertz * 1e-4, 1.1, hertz * 1e6, f).map_err(|(l_max, f_max)| {
-        SolveError::NoSolution(format!(
+    let (lo, hi) = march_up(hertz * 1e-4, 1.1, hertz * 1e6, f).map_err(|why| match why {
+        NoBracket::NoPositive { best_x, best_f, .. } => SolveError::NoSolution(format!(
             "the wide-strip model has no contact at P = {p:.4e} N/m: it carries at most \
-             P = {:.4e} N/m (contact width {l_max:.4e} m, far outside its range of validity)",
-            f_max + p,
-        ))
+             P = {:.4e} N/m (contact width {best_x:.4e} m, far outside its range of validity)",
+            best_f + p,
+        )),
+        other => SolveError::NoSolution(format!(
+            "the wide-strip model finds no contact width at P = {p:.4e} N/m: {other}"
+        )),
     })?;
     let l = brent(lo, hi, f).ok_or_else(|| {
         SolveError::NoSolution(format!(
-            "the contact width did not converge at P = {p:.4e} N/m"
+            "the contact width did not converge at P = {p:.4e} N/m \
+             (Brent's method, {BRENT_ITERATIONS} iterations)"
         ))
     })?;
     let s = state(c, inputs, l);

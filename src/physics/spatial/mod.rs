@@ -15,7 +15,7 @@ pub mod state;
 use std::f64::consts::PI;
 
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution};
-use crate::physics::{Friction, Material, SolveError, limits, validate_common};
+use crate::physics::{Friction, Material, SolveError, checks, limits, validate_common};
 
 pub use state::{SpatialState, StateAt, state_at};
 
@@ -176,13 +176,16 @@ pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -
     }
 }
 
-/// Validates and solves at time t [s] >= 0.
+/// Validates and solves at time t [s] >= 0; the solution has passed the physical checks
+/// (`physics::checks::spatial`).
 pub fn solve(inputs: &SpatialInputs, time: f64) -> Result<SpatialSolution, SolveError> {
     inputs.validate()?;
     limits::TIME
         .check("time", time)
         .map_err(SolveError::InvalidInput)?;
-    Ok(solve_with(inputs, &evolutions(inputs), time))
+    let sol = solve_with(inputs, &evolutions(inputs), time);
+    checks::spatial(&sol)?;
+    Ok(sol)
 }
 
 impl SpatialSolution {
@@ -245,32 +248,42 @@ impl SpatialSolution {
 pub enum Period {
     /// No harmonic varies along this axis.
     Constant,
-    /// Every nonzero wavenumber is an integer multiple of `base` [rad/m]; the period is 2 pi/base.
+    /// Every nonzero wavenumber is a whole multiple of `base` [rad/m] (to `COMMENSURATE_ULPS`);
+    /// the period is 2 pi/base.
     Commensurate { base: f64 },
-    /// The wavenumbers have no common base (up to 1/64 of the smallest): no finite period.
-    Incommensurate,
+    /// The search found no common base (none of w_min/q, q <= `PERIOD_SEARCH`, makes every
+    /// wavenumber a whole multiple): no period is known. This is not a proof that there is none.
+    NotFound,
 }
 
-/// The common base of wavenumbers, if any: the smallest nonzero one divided by q <= 64 such that
-/// every wavenumber is an integer multiple, to relative accuracy 1e-9.
+/// The largest denominator q the period search tries.
+pub const PERIOD_SEARCH: usize = 64;
+/// How close (in units of the last place of the ratio) w/base must be to a whole number. A
+/// 17-digit number in a preset holds w to half an ulp, so a ratio the file means to be whole is
+/// within a few ulps of it; anything farther (e.g. 1e-10 relative) beats over a finite length,
+/// and the pattern has no period.
+pub const COMMENSURATE_ULPS: f64 = 8.0;
+
+/// The common base of wavenumbers, if one is found: the smallest nonzero one divided by
+/// q <= `PERIOD_SEARCH` such that every wavenumber is a whole multiple to `COMMENSURATE_ULPS`.
 pub fn period_of(wavenumbers: impl Iterator<Item = f64>) -> Period {
     let ws: Vec<f64> = wavenumbers.filter(|w| *w != 0.0).collect();
     let Some(w_min) = ws.iter().copied().reduce(f64::min) else {
         return Period::Constant;
     };
-    (1..=64)
+    (1..=PERIOD_SEARCH)
         .map(|q| w_min / q as f64)
         .find(|base| {
             ws.iter().all(|w| {
                 let ratio = w / base;
-                (ratio - ratio.round()).abs() < 1e-9 * ratio
+                (ratio - ratio.round()).abs() <= COMMENSURATE_ULPS * f64::EPSILON * ratio
             })
         })
-        .map_or(Period::Incommensurate, |base| Period::Commensurate { base })
+        .map_or(Period::NotFound, |base| Period::Commensurate { base })
 }
 
-/// The cell shown and searched: one period per axis, or (incommensurate or constant axes) the
-/// longest wavelength present.
+/// The cell shown and searched: one period per axis, or (no period found, or a constant axis)
+/// the longest wavelength present.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cell {
     /// Extent along x [m].
@@ -293,9 +306,7 @@ impl Cell {
         let longest = 2.0 * PI / k_min;
         let extent = |p: Period, ws: &mut dyn Iterator<Item = f64>| match p {
             Period::Commensurate { base } => 2.0 * PI / base,
-            Period::Incommensurate => {
-                2.0 * PI / ws.filter(|w| *w > 0.0).fold(f64::INFINITY, f64::min)
-            }
+            Period::NotFound => 2.0 * PI / ws.filter(|w| *w > 0.0).fold(f64::INFINITY, f64::min),
             Period::Constant => longest,
         };
         let period_x = period_of(harmonics.iter().map(|h| h.wavenumber_x));
@@ -310,7 +321,6 @@ impl Cell {
 
     /// True when the pattern repeats in the cell along both axes.
     pub fn is_periodic(&self) -> bool {
-        !matches!(self.period_x, Period::Incommensurate)
-            && !matches!(self.period_y, Period::Incommensurate)
+        !matches!(self.period_x, Period::NotFound) && !matches!(self.period_y, Period::NotFound)
     }
 }

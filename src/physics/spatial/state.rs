@@ -11,7 +11,7 @@ use crate::physics::spatial::field::{Field, field};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{MeanPressureSweep, pressure_sweep};
 use crate::physics::spatial::{Cell, SpatialInputs, SpatialSolution, solve_with};
-use crate::physics::{SolveError, SweepRange, limits};
+use crate::physics::{SolveError, SweepRange, checks, limits};
 
 /// Everything about the spatial problem at one instant.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,7 +39,8 @@ pub struct StateAt {
     pub sweep: SweepRange,
 }
 
-/// The state at `at.time` from validated inputs and their evolutions (`spatial::evolutions`).
+/// The state at `at.time` from validated inputs and their evolutions (`spatial::evolutions`); the
+/// solution has passed the physical checks (`physics::checks::spatial`).
 pub fn state_at(
     inputs: &SpatialInputs,
     evolutions: &[Evolution],
@@ -49,6 +50,7 @@ pub fn state_at(
         .check("time", at.time)
         .map_err(SolveError::InvalidInput)?;
     let solution = solve_with(inputs, evolutions, at.time);
+    checks::spatial(&solution)?;
     let cell = Cell::of(&inputs.harmonics);
     let contact = contact::check(&solution, &cell);
     let sweep = pressure_sweep(

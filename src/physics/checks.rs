@@ -1,0 +1,171 @@
+//! The physical checks every solution passes before anyone sees it: exit 0 means right. A
+//! solution that fails one is `SolveError::NoSolution` naming the failed check (exit 3 on the
+//! command line), never a number with a warning. `plane` runs inside `plane::solve` and on every
+//! point of a load sweep; `spatial` inside `spatial::solve` and `spatial::state_at`.
+
+use crate::physics::SolveError;
+use crate::physics::plane::{PlaneSolution, PressureLaw};
+use crate::physics::spatial::SpatialSolution;
+
+/// Relative size of a negative collocation pressure that is still round-off.
+const PRESSURE_ROUND_OFF: f64 = 1e-6;
+/// Relative tolerance of the load balance P = Q2 - mu psi - tau0 Delta_g (3.11): the root
+/// searches stop at 1e-6 (sweep ends) or 1e-15 (operating point) in the contact width.
+const BALANCE_TOLERANCE: f64 = 1e-6;
+
+fn finite(what: &str, fields: &[(&str, f64)]) -> Result<(), SolveError> {
+    match fields.iter().find(|(_, v)| !v.is_finite()) {
+        Some((name, v)) => Err(SolveError::NoSolution(format!(
+            "{what} is not a finite number: {name} = {v} (these inputs are beyond what the \
+             solver can represent)"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The plane solution's checks: every number finite; the load balance (3.11) holds; Q2 > 0 and
+/// a + b > 0; the pressure is nowhere negative beyond round-off; without a tilt of the surface
+/// (no adhesion, and no friction on a strip of finite thickness) the contact holds the punch tip.
+pub fn plane(sol: &PlaneSolution) -> Result<(), SolveError> {
+    let model = sol.model.name();
+    let what = format!("the {model} model's answer");
+    let inputs = &sol.inputs;
+    let (mu, tau0, p) = (
+        inputs.friction.coefficient,
+        inputs.friction.adhesion,
+        inputs.load,
+    );
+    finite(
+        &what,
+        &[
+            ("a", sol.a),
+            ("b", sol.b),
+            ("Q2", sol.normal_force),
+            ("Q1", sol.friction_force),
+            ("T", sol.tangential_force),
+            ("psi", sol.psi),
+            ("Delta_g", sol.delta_g),
+            ("mu*", sol.mu_star),
+            ("theta", sol.theta.unwrap_or(0.0)),
+            ("gamma", sol.gamma.unwrap_or(0.0)),
+        ],
+    )?;
+    let fail = |why: String| {
+        Err(SolveError::NoSolution(format!(
+            "{what} fails a check: {why}"
+        )))
+    };
+    let terms = [sol.normal_force, mu * sol.psi, tau0 * sol.delta_g];
+    let balance = terms[0] - terms[1] - terms[2];
+    let scale = terms.iter().fold(p, |s, t| s.max(t.abs()));
+    if (balance - p).abs() > BALANCE_TOLERANCE * scale {
+        return fail(format!(
+            "its forces carry P = Q2 - mu psi - tau0 Delta_g = {balance:.4e} N/m, not the load \
+             P = {p:.4e} N/m (the root search converged on a false root)"
+        ));
+    }
+    if sol.normal_force <= 0.0 {
+        return fail(format!(
+            "the normal contact force Q2 = {:.4e} N/m is not positive",
+            sol.normal_force
+        ));
+    }
+    if sol.contact_width() <= 0.0 {
+        return fail(format!(
+            "the contact width a + b = {:.4e} m is not positive",
+            sol.contact_width()
+        ));
+    }
+    if let Some(why) = negative_pressure(&sol.law) {
+        return fail(why);
+    }
+    let tilted = tau0 > 0.0 || (mu > 0.0 && !inputs.material.is_half_space());
+    if !tilted && (sol.a < 0.0 || sol.b < 0.0) {
+        return fail(format!(
+            "the contact zone [-a, b] = [{:.4e}, {:.4e}] m does not contain the punch tip, \
+             although nothing tilts the surface (no adhesion, no friction on a strip)",
+            -sol.a, sol.b
+        ));
+    }
+    Ok(())
+}
+
+/// Why the pressure law is negative somewhere, if it is. The wide law c u^(1/2-theta)
+/// (L-u)^(1/2+theta) is positive when c > 0 and |theta| < 1/2; the Winkler law (5.7) is positive
+/// for beta > 0 and lambda >= 0 (expm1 is convex); the collocation is checked at its nodes.
+fn negative_pressure(law: &PressureLaw) -> Option<String> {
+    match law {
+        &PressureLaw::Wide { c, theta } => (!(c > 0.0 && theta.abs() < 0.5)).then(|| {
+            format!("the pressure law q2 = c (a+x)^(1/2-theta) (b-x)^(1/2+theta) has c = {c:e}, theta = {theta} (needs c > 0, |theta| < 1/2)")
+        }),
+        &PressureLaw::Narrow { lambda, beta } => (!(beta > 0.0 && lambda >= 0.0)).then(|| {
+            format!("the Winkler law has beta = {beta:e} m/Pa, lambda = {lambda:e} 1/m (needs beta > 0, lambda >= 0)")
+        }),
+        PressureLaw::Strip(col) => {
+            let largest = col.phi.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let (i, lowest) = col
+                .phi
+                .iter()
+                .copied()
+                .enumerate()
+                .fold((0, f64::INFINITY), |m, (i, v)| if v < m.1 { (i, v) } else { m });
+            (lowest < -PRESSURE_ROUND_OFF * largest).then(|| {
+                let u = 0.5 * col.l * (1.0 + col.nodes[i]);
+                format!(
+                    "the pressure is negative inside the contact (q2/w = {lowest:.3e} Pa at \
+                     {u:.4e} m from the trailing edge, against a largest {largest:.3e} Pa): the \
+                     collocation does not resolve this contact"
+                )
+            })
+        }
+    }
+}
+
+/// The spatial solution's checks: every number finite, every layer compliance positive, and the
+/// vertical force on the punch P = pbar - mu psi positive (mu* = T/P needs it).
+pub fn spatial(sol: &SpatialSolution) -> Result<(), SolveError> {
+    let what = "the spatial solution";
+    for (n, h) in sol.harmonics.iter().enumerate() {
+        let ev = &h.evolution;
+        finite(
+            &format!("harmonic {} of {what}", n + 1),
+            &[
+                ("M", ev.m),
+                ("1/M", 1.0 / ev.m),
+                ("decay rate", ev.decay_rate),
+                ("phase rate", ev.phase_rate),
+                ("drift velocity", ev.drift_velocity),
+                ("phase lead", ev.phase_lead),
+                ("amplitude", h.state.amplitude),
+                ("phase_x", h.state.phase_x),
+            ],
+        )?;
+        if ev.response.a.is_nan() || ev.response.a <= 0.0 {
+            return Err(SolveError::NoSolution(format!(
+                "harmonic {} of {what} fails a check: the layer's normal compliance at \
+                 k = {:.4e} rad/m is {:e} m/Pa, not positive (round-off of the layer functions)",
+                n + 1,
+                h.initial.wavenumber(),
+                ev.response.a
+            )));
+        }
+    }
+    finite(
+        what,
+        &[
+            ("psi", sol.psi),
+            ("P", sol.load),
+            ("T", sol.tangential),
+            ("mu*", sol.mu_star),
+        ],
+    )?;
+    if sol.load <= 0.0 {
+        return Err(SolveError::NoSolution(format!(
+            "{what} fails a check: the vertical force on the punch P = pbar - mu psi = {:.4e} Pa \
+             is not positive (friction on the slopes outweighs the mean pressure {:.4e} Pa), so \
+             mu* = T/P is undefined",
+            sol.load, sol.inputs.mean_pressure
+        )));
+    }
+    Ok(())
+}
