@@ -1,43 +1,87 @@
-//! The explorer's speed: drawing the full screen at 120x40, and a keystroke on a plane preset
-//! (update, re-solve of the changed stages, draw), as the user sees it.
+//! The explorer's speed: drawing the full screen at 120x40; a keystroke that re-solves (update,
+//! the engine's stages, draw), each iteration at a load never solved before; and a load nudge on
+//! the wide model through the real loop (key into the channel, the worker thread, the answer back,
+//! the draw) until the new operating point is on screen.
+
+use std::hint::black_box;
+use std::sync::mpsc::channel;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use std::hint::black_box;
-use wearlab::engine::{Engine, Request};
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+use wearlab::engine::{Answer, Engine};
 use wearlab::preset::bundled;
 
-// The explorer lives in the binary; the bench compiles the same model, form and view modules
-// (not the event loop). Parts the bench does not call are allowed to be unused here.
+// The explorer lives in the binary; the bench compiles the same modules (not the terminal set-up
+// and not the tests). Parts it does not call are allowed to be unused here.
 #[allow(dead_code)]
 #[path = "../src/tui"]
 mod tui {
+    pub mod actions;
     pub mod app;
+    pub mod charts;
+    pub mod effects;
+    pub mod event_loop;
     pub mod form;
+    pub mod glossary;
+    pub mod keys;
+    pub mod update;
     pub mod view;
 }
 
-use tui::app::{App, Command, Msg, update};
+use tui::app::{App, Command, Msg, Places};
+use tui::event_loop::{Loop, Wake};
+use tui::update::update;
 use tui::view::{RenderOptions, view};
 
-fn app_on(file: &str, engine: &mut Engine) -> App {
-    let preset = bundled(file).unwrap().unwrap();
-    let mut app = App::new(preset, None, None);
-    for cmd in app.start() {
-        if let Command::Solve(g, p) = cmd {
-            update(&mut app, Msg::Solved(g, Box::new(engine.run(&full(*p)))));
+const OPTIONS: RenderOptions = RenderOptions {
+    ascii: false,
+    color: true,
+};
+
+/// Solves the commands' requests stage by stage and hands every answer to `update`.
+fn deliver(app: &mut App, engine: &mut Engine, commands: Vec<Command>) {
+    for c in commands {
+        if let Command::Solve(generation, request) = c {
+            let request = std::sync::Arc::new(*request);
+            let mut answers = Vec::new();
+            engine.run_staged(&request, |output, complete| {
+                answers.push(Answer {
+                    generation,
+                    request: request.clone(),
+                    output,
+                    complete,
+                });
+                true
+            });
+            for a in answers {
+                update(app, Msg::Answer(Box::new(a)));
+            }
         }
     }
+}
+
+fn app_on(file: &str, engine: &mut Engine) -> App {
+    let mut app = App::new(bundled(file).unwrap().unwrap(), None, Places::default());
+    let commands = app.start();
+    deliver(&mut app, engine, commands);
     app
 }
 
+fn select_load(app: &mut App) {
+    app.ui.selected = app
+        .rows()
+        .iter()
+        .position(|r| r.param.label == "P")
+        .unwrap();
+}
+
+fn right() -> KeyEvent {
+    KeyEvent::new(KeyCode::Right, KeyModifiers::NONE)
+}
+
 fn bench(c: &mut Criterion) {
-    let options = RenderOptions {
-        ascii: false,
-        color: true,
-    };
     let mut engine = Engine::new();
     for file in ["polymer-coating.toml", "dispersion.toml"] {
         let app = app_on(file, &mut engine);
@@ -45,40 +89,58 @@ fn bench(c: &mut Criterion) {
         c.bench_function(&format!("explorer_draw_120x40/{file}"), |b| {
             b.iter(|| {
                 terminal
-                    .draw(|f| view(black_box(&app), options, f))
+                    .draw(|f| view(black_box(&app), OPTIONS, f))
                     .unwrap()
                     .area
             })
         });
     }
+
+    // every iteration starts from a load never seen, so the nudge re-solves the operating point
     let mut app = app_on("polymer-coating.toml", &mut engine);
-    // select the load
-    app.selected = 8;
+    select_load(&mut app);
     let mut terminal = Terminal::new(TestBackend::new(120, 40)).unwrap();
-    let mut dir = KeyCode::Right;
-    c.bench_function("explorer_keystroke/plane_load", |b| {
+    let mut i = 0u64;
+    c.bench_function("explorer_keystroke/plane_load_resolve", |b| {
         b.iter(|| {
-            dir = if dir == KeyCode::Right {
-                KeyCode::Left
-            } else {
-                KeyCode::Right
-            };
-            for cmd in update(&mut app, Msg::Key(KeyEvent::new(dir, KeyModifiers::NONE))) {
-                if let Command::Solve(g, p) = cmd {
-                    update(&mut app, Msg::Solved(g, Box::new(engine.run(&full(*p)))));
-                }
+            i += 1;
+            app.doc.preset.plane.load = 5000.0 + i as f64 * 1e-3;
+            let commands = update(&mut app, Msg::Key(right()));
+            deliver(&mut app, &mut engine, commands);
+            terminal.draw(|f| view(&app, OPTIONS, f)).unwrap().area
+        })
+    });
+
+    // the same nudge through the loop the user runs: worker thread, channel, draw
+    let (tx, rx) = channel();
+    let keys = tx.clone();
+    let terminal = Terminal::new(TestBackend::new(120, 40)).unwrap();
+    let app = App::new(
+        bundled("polymer-coating.toml").unwrap().unwrap(),
+        None,
+        Places::default(),
+    );
+    let mut l = Loop::new(terminal, app, OPTIONS, tx, rx).unwrap();
+    while l.app.solve.solving() {
+        l.step().unwrap();
+    }
+    select_load(&mut l.app);
+    let mut i = 0u64;
+    c.bench_function("explorer_nudge_to_status/wide_loop", |b| {
+        b.iter(|| {
+            i += 1;
+            l.app.doc.preset.plane.load = 5000.0 + i as f64 * 1e-3;
+            let before = l.app.solve.generation;
+            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            // the key, then the answer with the new operating point
+            let shown = |a: &App| a.solve.shown.as_ref().map(|s| s.generation);
+            while l.app.solve.generation == before || shown(&l.app) != Some(l.app.solve.generation)
+            {
+                l.step().unwrap();
             }
-            terminal.draw(|f| view(&app, options, f)).unwrap().area
         })
     });
 }
 
 criterion_group!(benches, bench);
 criterion_main!(benches);
-
-fn full(preset: wearlab::preset::Preset) -> Request {
-    Request {
-        preset,
-        overlays: true,
-    }
-}

@@ -55,12 +55,8 @@ pub fn format_si(value: f64, unit: &str) -> String {
         return format!("0 {unit}");
     }
     let mag = value.abs();
-    let (prefix, exp) = PREFIXES
-        .iter()
-        .rev()
-        .find(|(_, e)| mag >= scale(0.9995, *e))
-        .copied()
-        .unwrap_or(PREFIXES[0]);
+    // the power of ten, a multiple of 3, that leaves 1 <= |scaled| < 1000 after rounding
+    let exp = 3 * ((mag / 0.9995).log10() / 3.0).floor() as i32;
     let scaled = scale(value, -exp);
     let digits = if scaled.abs() >= 99.95 {
         0
@@ -69,7 +65,11 @@ pub fn format_si(value: f64, unit: &str) -> String {
     } else {
         2
     };
-    format!("{scaled:.digits$} {prefix}{unit}")
+    match PREFIXES.iter().find(|(_, e)| *e == exp) {
+        Some((prefix, _)) => format!("{scaled:.digits$} {prefix}{unit}"),
+        // past the prefixes: engineering notation, so the text stays short
+        None => format!("{scaled:.digits$}e{exp} {unit}"),
+    }
 }
 
 fn round_sig(value: f64, sig: i32) -> f64 {
@@ -136,6 +136,11 @@ mod tests {
         assert_eq!(format_si(-2.749e-7, "m/s"), "-275 nm/s");
         assert_eq!(format_si(5000.0, "N/m"), "5.00 kN/m");
         assert_eq!(format_si(3141.6, "rad/m"), "3142 rad/m");
+        // past the prefixes (T, f): engineering notation
+        assert_eq!(format_si(3e30, "Pa"), "3.00e30 Pa");
+        assert_eq!(format_si(999.96e12, "Pa"), "1.00e15 Pa");
+        assert_eq!(format_si(-1.5e-20, "m"), "-15.0e-21 m");
+        assert_eq!(format_si(999e12, "Pa"), "999 TPa");
     }
 
     #[test]

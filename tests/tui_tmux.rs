@@ -1,6 +1,6 @@
-//! End to end: the real binary in tmux, driven by keys as a person would (edit a value, type
-//! garbage, resize below 80x24, open the help, quit), asserting on the captured screen and on a
-//! clean exit with the terminal restored. Skipped (with a message) where tmux is not installed;
+//! End to end: the real binary in tmux, driven by keys as a person would (the footers at 80 and
+//! 120 columns, the help, the choice rows, edit a value, type garbage, resize below 80x24, Ctrl-C
+//! while typing), asserting on the captured screen and on a clean exit with the terminal restored. Skipped (with a message) where tmux is not installed;
 //! `.ci/run` installs it.
 
 use std::path::Path;
@@ -44,6 +44,15 @@ fn keys(k: &[&str]) {
     tmux(&args);
 }
 
+/// The last line of the screen (the key footer), without trailing blanks.
+fn footer() -> String {
+    screen().lines().last().unwrap_or("").trim_end().to_string()
+}
+
+fn resize(w: &str, h: &str) {
+    tmux(&["resize-window", "-t", "e2e", "-x", w, "-y", h]);
+}
+
 #[test]
 fn a_session_in_tmux() {
     if Command::new("tmux").arg("-V").output().is_err() {
@@ -67,23 +76,70 @@ fn a_session_in_tmux() {
         "-s",
         "e2e",
         "-x",
-        "100",
+        "80",
         "-y",
-        "30",
+        "24",
         &script,
     ]);
     wait_for("valid: (a+b)/h = 0.061");
 
-    // edit the load: P is the ninth row
-    for _ in 0..8 {
+    // the footers of both problems at 80 and 120 columns
+    assert_eq!(
+        footer(),
+        "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ? help q quit"
+    );
+    resize("120", "40");
+    wait_for("u undo  ? help  q quit");
+    assert_eq!(
+        footer(),
+        "↑↓ field  ←→ nudge (⇧ more)  ⏎ type  Tab chart  p problem  m model  o open  s save  e export  u undo  ? help  q quit"
+    );
+    keys(&["p"]);
+    wait_for("space play +/- harmonic");
+    assert_eq!(
+        footer(),
+        "↑↓ field ←→ nudge ⏎ type Tab chart p problem space play +/- harmonic o open s save e export u undo ? help q quit"
+    );
+    resize("80", "24");
+    wait_for("+/- harm o s e u");
+    assert_eq!(
+        footer(),
+        "↑↓ ←→ nudge ⏎ type Tab chart p problem space play +/- harm o s e u ? help q quit"
+    );
+    keys(&["u"]);
+    wait_for("undo: problem spatial -> plane");
+
+    // the help names every model; Enter on a choice row lists the choices
+    keys(&["?"]);
+    let help = wait_for("cycle the plane model");
+    assert!(
+        help.contains("  m                 cycle the plane model (wide, narrow, strip)"),
+        "{help}"
+    );
+    keys(&["Escape"]);
+    for _ in 0..6 {
         keys(&["j"]);
+    }
+    keys(&["Enter"]);
+    let list = wait_for("model: one of wide, narrow, strip");
+    assert!(list.contains("│ strip"), "{list}");
+    keys(&["Escape"]);
+    for _ in 0..6 {
+        keys(&["j"]);
+    }
+    keys(&["Enter"]);
+    wait_for("scale: one of log, linear");
+    keys(&["Escape"]);
+
+    // edit the load: P is the ninth row
+    for _ in 0..4 {
+        keys(&["k"]);
     }
     keys(&["Enter"]);
     keys(&["-l", "2e4"]);
     keys(&["Enter"]);
-    let s = wait_for("20.0 kN/m");
-    assert!(s.contains("(edited)"), "{s}");
-    wait_for("(a+b)/h = 0.122 > 0.1: the wide-strip");
+    wait_for("20.0 kN/m");
+    wait_for("! contact width/thickness (a+b)/h = 0.122 > 0.1:");
 
     // garbage is refused with the reason; the old value stays
     keys(&["Enter"]);
@@ -95,19 +151,15 @@ fn a_session_in_tmux() {
     assert!(screen().contains("20.0 kN/m"));
 
     // too small, then big enough again
-    tmux(&["resize-window", "-t", "e2e", "-x", "60", "-y", "20"]);
+    resize("60", "20");
     wait_for("terminal too small");
-    tmux(&["resize-window", "-t", "e2e", "-x", "100", "-y", "30"]);
+    resize("80", "24");
     wait_for("operating point");
 
-    // help and back
-    keys(&["?"]);
-    wait_for("help (any key closes)");
-    keys(&["x"]);
-    wait_for("operating point");
-
-    // quit asks because of the unsaved edit
-    keys(&["q"]);
+    // Ctrl-C while typing asks (there is an unsaved edit), and y quits
+    keys(&["Enter"]);
+    keys(&["-l", "3"]);
+    keys(&["C-c"]);
     wait_for("unsaved edits: quit anyway? y/n");
     keys(&["y"]);
     let deadline = Instant::now() + Duration::from_secs(10);

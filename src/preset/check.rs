@@ -7,7 +7,6 @@ use std::path::Path;
 use toml::Spanned;
 
 use crate::physics::limits::{self, Limit};
-use crate::physics::plane::Model;
 use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::validate_harmonics;
 use crate::physics::{Friction, Material, Spacing, SweepRange};
@@ -161,7 +160,7 @@ impl Checker<'_> {
         let pl = plane.get_ref();
         let radius = self.value(&pl.radius, "radius", &limits::RADIUS)?;
         let load = self.value(&pl.load, "load", &limits::LINE_LOAD)?;
-        if pl.model != Model::Wide && material.thickness.is_infinite() {
+        if pl.model.needs_finite_thickness() && material.is_half_space() {
             return Err(self.error(
                 Some(plane.span()),
                 format!(

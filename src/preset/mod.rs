@@ -17,7 +17,7 @@ use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
 pub use check::parse;
-pub use file::{load, save, to_toml, write_atomically};
+pub use file::{SaveTarget, load, resolve_save_path, save, to_toml, write_atomically};
 
 /// The schema version this build reads and writes.
 pub const SCHEMA: i64 = 1;
@@ -30,6 +30,16 @@ pub enum Problem {
     Plane,
     /// The spatial problem (wavy punch on a layer).
     Spatial,
+}
+
+impl Problem {
+    /// The name used in preset files ("plane", "spatial").
+    pub fn name(self) -> &'static str {
+        match self {
+            Problem::Plane => "plane",
+            Problem::Spatial => "spatial",
+        }
+    }
 }
 
 /// The `[plane]` section.

@@ -46,6 +46,12 @@ impl Model {
             Model::Strip => "strip",
         }
     }
+
+    /// True for the models that need a finite thickness (all but the wide one, which is exact
+    /// for the half-plane).
+    pub fn needs_finite_thickness(self) -> bool {
+        self != Model::Wide
+    }
 }
 
 /// The inputs of one plane solve at one load.

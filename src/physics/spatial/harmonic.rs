@@ -116,16 +116,6 @@ pub struct HarmonicState {
     pub phase_y: f64,
 }
 
-impl HarmonicState {
-    /// The coefficients (a, b, c, d) [m] of (1.6): U = a c_x c_y + b s_x c_y + c c_x s_y + d s_x s_y.
-    pub fn coefficients(&self) -> [f64; 4] {
-        let (sx, cx) = self.phase_x.sin_cos();
-        let (sy, cy) = self.phase_y.sin_cos();
-        let amp = self.amplitude;
-        [amp * sx * sy, amp * cx * sy, amp * sx * cy, amp * cx * cy]
-    }
-}
-
 /// The state at time t [s]: A(t) = A(0) e^{-beta t}, rho_x(t) = rho_x(0) - Omega t.
 pub fn state_at(h: &Harmonic, ev: &Evolution, t: f64) -> HarmonicState {
     HarmonicState {

@@ -15,8 +15,6 @@ pub struct History {
     pub amplitudes: Vec<Vec<f64>>,
     /// mu*(t).
     pub mu_star: Vec<f64>,
-    /// pbar - sum A_n(t)/M_n [Pa], the complete-contact bound.
-    pub lower_bound: Vec<f64>,
 }
 
 /// The history over [0, duration] at `points` >= 2 times.
@@ -40,16 +38,6 @@ pub fn history(
             })
             .collect(),
         mu_star: sols.iter().map(|s| s.mu_star).collect(),
-        lower_bound: sols
-            .iter()
-            .map(|s| {
-                s.inputs.mean_pressure
-                    - s.harmonics
-                        .iter()
-                        .map(|h| h.state.amplitude / h.evolution.m)
-                        .sum::<f64>()
-            })
-            .collect(),
         time,
     }
 }

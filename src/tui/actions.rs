@@ -1,0 +1,271 @@
+//! What each action of the key table does to the model (part of `update`: pure).
+
+use wearlab::physics::spatial::harmonic::Harmonic;
+use wearlab::preset::{Preset, Problem};
+
+use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
+use crate::tui::charts::{Chart, NoFigure, export as csv};
+use crate::tui::form::{self, Change};
+use crate::tui::keys::Action;
+
+/// The most harmonics `+` makes.
+pub const MAX_HARMONICS: usize = 64;
+
+/// Carries out an action of the main screen.
+pub fn act(app: &mut App, action: Action) -> Vec<Command> {
+    let rows = app.rows().len();
+    match action {
+        Action::PrevField => {
+            app.ui.selected = app.ui.selected.checked_sub(1).unwrap_or(rows - 1);
+            Vec::new()
+        }
+        Action::NextField => {
+            app.ui.selected = (app.ui.selected + 1) % rows;
+            Vec::new()
+        }
+        Action::Nudge { up, large } => {
+            let row = app.row();
+            let value = form::nudged(&app.doc.preset, &row, up, large);
+            set(app, value)
+        }
+        Action::Edit => {
+            let row = app.row();
+            match row.choices() {
+                Some(names) => {
+                    app.ui.mode = Mode::Choosing(form::get(&app.doc.preset, &row) as usize);
+                    app.say(format!("{}: one of {}", row.name(), names.join(", ")));
+                }
+                None => {
+                    app.ui.mode = Mode::Editing(String::new());
+                    app.say(format!("type {} ({})", row.name(), row.param.limit.allowed));
+                }
+            }
+            Vec::new()
+        }
+        Action::NextChart | Action::PrevChart => {
+            let step = if action == Action::NextChart { 1 } else { -1 };
+            app.ui.chart = app.ui.chart.step(step);
+            if app.ui.chart.draws_overlays() && !app.solve.overlays {
+                vec![app.request()]
+            } else {
+                Vec::new()
+            }
+        }
+        Action::SwitchProblem => {
+            let mut next = app.doc.preset.clone();
+            next.problem = match next.problem {
+                Problem::Plane => Problem::Spatial,
+                Problem::Spatial => Problem::Plane,
+            };
+            let change = Change {
+                name: "problem".into(),
+                from: app.doc.preset.problem.name().into(),
+                to: next.problem.name().into(),
+            };
+            app.ui.selected = 0;
+            app.ui.playing = false;
+            apply(app, next, change)
+        }
+        Action::CycleModel => {
+            let row = app
+                .rows()
+                .into_iter()
+                .find(|r| r.param.label == "model")
+                .expect("the plane form has a model row");
+            let value = form::nudged(&app.doc.preset, &row, true, false);
+            match form::set(&app.doc.preset, &row, value) {
+                Ok((next, change)) => {
+                    let commands = apply(app, next, change);
+                    app.say(format!("model: {}", app.doc.preset.plane.model.name()));
+                    commands
+                }
+                Err(why) => {
+                    app.complain(why);
+                    Vec::new()
+                }
+            }
+        }
+        Action::PlayPause => {
+            app.ui.playing = !app.ui.playing;
+            app.say(if app.ui.playing {
+                "playing time (space pauses)"
+            } else {
+                "paused"
+            });
+            Vec::new()
+        }
+        Action::AddHarmonic => add_harmonic(app),
+        Action::RemoveHarmonic => remove_harmonic(app),
+        Action::Open => vec![Command::ListPresets],
+        Action::Save => {
+            app.ui.mode = Mode::SaveAs(String::new());
+            app.say("save as: a name (saved in your preset folder) or a path, e.g. ~/lab.toml");
+            Vec::new()
+        }
+        Action::Export => export(app, app.ui.chart),
+        Action::Undo => match app.doc.undo.pop() {
+            Some((previous, change)) => {
+                app.doc.preset = previous;
+                app.doc.dirty = true;
+                app.fit();
+                app.say(format!(
+                    "undo: {} {} -> {}",
+                    change.name, change.to, change.from
+                ));
+                vec![app.request()]
+            }
+            None => {
+                app.say("nothing to undo");
+                Vec::new()
+            }
+        },
+        Action::Help => {
+            app.ui.mode = Mode::Help(0);
+            Vec::new()
+        }
+        Action::Quit => quit(app),
+    }
+}
+
+/// Sets the selected row to `value`, or says why not.
+fn set(app: &mut App, value: f64) -> Vec<Command> {
+    let row = app.row();
+    match form::set(&app.doc.preset, &row, value) {
+        Ok((next, change)) => apply(app, next, change),
+        Err(why) => {
+            app.complain(format!("{}: {why}", row.name()));
+            Vec::new()
+        }
+    }
+}
+
+/// Replaces the preset by an edited one (undo keeps the old) and asks for a solve.
+pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
+    if next == app.doc.preset {
+        return Vec::new();
+    }
+    let previous = std::mem::replace(&mut app.doc.preset, next);
+    app.doc.undo.push((previous, change));
+    if app.doc.undo.len() > UNDO_DEPTH {
+        app.doc.undo.remove(0);
+    }
+    app.doc.dirty = true;
+    app.fit();
+    vec![app.request()]
+}
+
+/// Opens a preset (undo can go back).
+pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
+    let Ok(preset) = entry.preset else {
+        return Vec::new();
+    };
+    let change = Change {
+        name: "preset".into(),
+        from: app.doc.preset.name.clone(),
+        to: preset.name.clone(),
+    };
+    app.doc
+        .undo
+        .push((std::mem::replace(&mut app.doc.preset, preset), change));
+    app.doc.path = entry.path;
+    app.doc.dirty = false;
+    app.ui.selected = 0;
+    app.ui.chart = Chart::first(app.doc.preset.problem);
+    app.ui.playing = false;
+    app.say(format!("opened {}", entry.source));
+    vec![app.request()]
+}
+
+/// Quits, or asks first when there are unsaved edits.
+pub fn quit(app: &mut App) -> Vec<Command> {
+    if app.doc.dirty {
+        app.ui.mode = Mode::ConfirmQuit;
+        Vec::new()
+    } else {
+        vec![Command::Quit]
+    }
+}
+
+/// Exports `chart` as drawn; waits for its result while it has none.
+pub fn export(app: &mut App, chart: Chart) -> Vec<Command> {
+    let Some(answer) = &app.solve.shown else {
+        app.ui.export_waiting = Some(chart);
+        app.say("the export waits for the chart's result (solving…)");
+        return Vec::new();
+    };
+    match csv::csv(chart, answer) {
+        Ok(text) => vec![Command::Export(csv::file_name(chart).into(), text)],
+        Err(NoFigure::Solving) => {
+            app.ui.export_waiting = Some(chart);
+            app.say("the export waits for the chart's result (solving…)");
+            Vec::new()
+        }
+        Err(NoFigure::Error(why)) => {
+            app.complain(format!("nothing to export: {why}"));
+            Vec::new()
+        }
+    }
+}
+
+/// Adds a harmonic at the first free multiple (2x, 3x, ...) of the last one's wave vector with
+/// half its amplitude, or says why it cannot.
+fn add_harmonic(app: &mut App) -> Vec<Command> {
+    let harmonics = &app.doc.preset.spatial.harmonics;
+    let n = harmonics.len();
+    if n >= MAX_HARMONICS {
+        app.complain(format!(
+            "the punch has {n} harmonics, the most + adds: remove one with - first"
+        ));
+        return Vec::new();
+    }
+    let last = harmonics[n - 1];
+    // at most 64 wave vectors are taken, so one of 65 multiples is free unless out of range
+    let added = (2..=MAX_HARMONICS as u32 + 2).find_map(|m| {
+        let mut next = app.doc.preset.clone();
+        next.spatial.harmonics.push(Harmonic {
+            amplitude: last.amplitude / 2.0,
+            wavenumber_x: last.wavenumber_x * m as f64,
+            wavenumber_y: last.wavenumber_y * m as f64,
+            ..last
+        });
+        form::consistent(&next).ok().map(|()| next)
+    });
+    match added {
+        Some(next) => {
+            let change = Change {
+                name: "harmonics".into(),
+                from: n.to_string(),
+                to: (n + 1).to_string(),
+            };
+            let commands = apply(app, next, change);
+            app.say(format!("added harmonic {}", n + 1));
+            commands
+        }
+        None => {
+            app.complain(
+                "cannot add a harmonic: every multiple of the last wave vector up to 66x is taken or out of range; edit wx, wy instead",
+            );
+            Vec::new()
+        }
+    }
+}
+
+/// Removes the selected harmonic (or the last one).
+fn remove_harmonic(app: &mut App) -> Vec<Command> {
+    let n = app.doc.preset.spatial.harmonics.len();
+    if n <= 1 {
+        app.complain("the punch needs at least one harmonic");
+        return Vec::new();
+    }
+    let index = app.row().harmonic.unwrap_or(n - 1);
+    let mut next = app.doc.preset.clone();
+    next.spatial.harmonics.remove(index);
+    let change = Change {
+        name: "harmonics".into(),
+        from: n.to_string(),
+        to: (n - 1).to_string(),
+    };
+    let commands = apply(app, next, change);
+    app.say(format!("removed harmonic {}", index + 1));
+    commands
+}

@@ -1,0 +1,285 @@
+//! The charts as data: each problem's charts are an enum, and each chart has a title, a help
+//! text and a pure builder from an engine answer to the figure it draws. The view draws that
+//! figure and `e` exports it, so what is exported is by construction what is drawn. A new chart
+//! is one variant and one arm of its problem's `def` (title, help, builder).
+
+pub mod export;
+mod plane;
+mod spatial;
+
+use wearlab::engine::{Answer, Output, PlaneOutput, SpatialOutput};
+use wearlab::preset::{Preset, Problem};
+
+/// One axis of a plot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    /// What is along it ("x", "P", "mu*").
+    pub label: String,
+    /// SI unit of the values ("" for none); ticks carry it with a prefix.
+    pub unit: &'static str,
+    /// Logarithmic scale (values <= 0 are not drawn).
+    pub log: bool,
+}
+
+/// A named set of points in data coordinates (SI units, never log-transformed).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// Legend text.
+    pub name: String,
+    /// (x, y) pairs.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// One x-y plot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plot {
+    /// The horizontal axis.
+    pub x: Axis,
+    /// The vertical axis.
+    pub y: Axis,
+    /// The curves, drawn as lines.
+    pub series: Vec<Series>,
+    /// How many of the first curves set the y range; the others are overlays, clipped, so that a
+    /// model far outside the range does not flatten the one being explored.
+    pub focus: usize,
+    /// Marked points (the operating point, the current time, the harmonics), drawn as blocks.
+    pub markers: Option<Series>,
+}
+
+/// A scalar field over a rectangle, drawn as a heatmap.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Map {
+    /// What the values are ("pressure").
+    pub name: &'static str,
+    /// Grid x [m], increasing.
+    pub x: Vec<f64>,
+    /// Grid y [m], increasing.
+    pub y: Vec<f64>,
+    /// Values, row-major: index j * x.len() + i for (x_i, y_j).
+    pub values: Vec<f64>,
+    /// Unit of the values.
+    pub unit: &'static str,
+    /// The line under the map.
+    pub caption: String,
+}
+
+/// What a chart draws.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Figure {
+    /// One or more plots stacked vertically.
+    Plots(Vec<Plot>),
+    /// A heatmap.
+    Map(Map),
+}
+
+/// Why a chart has nothing to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NoFigure {
+    /// The stage it needs has not arrived yet.
+    Solving,
+    /// The solver could not answer; the reason.
+    Error(String),
+}
+
+type Build<O> = fn(&Preset, &O) -> Result<Figure, NoFigure>;
+
+/// A chart's definition.
+struct Def<O> {
+    title: &'static str,
+    help: &'static str,
+    overlays: bool,
+    build: Build<O>,
+}
+
+/// The charts of the plane problem, in Tab order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlaneChart {
+    /// q2 and q1 against x.
+    Pressure,
+    /// Wear per pass and wear rate against x.
+    Wear,
+    /// mu* against load, the other models overlaid.
+    MuStar,
+    /// a and b against load.
+    Edges,
+}
+
+impl PlaneChart {
+    const ALL: [PlaneChart; 4] = [Self::Pressure, Self::Wear, Self::MuStar, Self::Edges];
+
+    fn def(self) -> Def<PlaneOutput> {
+        match self {
+            Self::Pressure => Def {
+                title: "pressure and shear",
+                help: "Pressure q2(x) and shear q1 = mu q2 + tau0 over the contact [-a, b]; b is the leading edge. A peak behind the tip (a > b) means friction dominates, ahead of it wear.",
+                overlays: false,
+                build: plane::pressure,
+            },
+            Self::Wear => Def {
+                title: "wear",
+                help: "Wear per pass: the depth a strip point loses while the punch passes over it (k times the integral of q2 from x to b). Wear rate k q2: depth per unit sliding distance.",
+                overlays: false,
+                build: plane::wear,
+            },
+            Self::MuStar => Def {
+                title: "mu* against load",
+                help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The block marks the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
+                overlays: true,
+                build: plane::mu_star,
+            },
+            Self::Edges => Def {
+                title: "contact edges against load",
+                help: "Contact edges a (trailing) and b (leading) against load, for the preset's model.",
+                overlays: false,
+                build: plane::edges,
+            },
+        }
+    }
+}
+
+/// The charts of the spatial problem, in Tab order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SpatialChart {
+    /// p(x, y) over the period cell.
+    PressureMap,
+    /// p and U along the middle line.
+    Line,
+    /// A_n(t) and mu*(t).
+    History,
+    /// mu* against pbar.
+    MuStar,
+    /// c against kh.
+    Dispersion,
+}
+
+impl SpatialChart {
+    const ALL: [SpatialChart; 5] = [
+        Self::PressureMap,
+        Self::Line,
+        Self::History,
+        Self::MuStar,
+        Self::Dispersion,
+    ];
+
+    fn def(self) -> Def<SpatialOutput> {
+        match self {
+            Self::PressureMap => Def {
+                title: "pressure map",
+                help: "Contact pressure over one period cell (colour bar: Pa). The layer slides towards -x; friction on it points to +x.",
+                overlays: false,
+                build: spatial::pressure_map,
+            },
+            Self::Line => Def {
+                title: "pressure and shape along a line",
+                help: "Pressure and shape along the middle line y = const: the pressure leads the shape by the phase lead phi.",
+                overlays: false,
+                build: spatial::line,
+            },
+            Self::History => Def {
+                title: "amplitudes and mu* in time",
+                help: "Harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. The blocks mark the current time.",
+                overlays: false,
+                build: spatial::history,
+            },
+            Self::MuStar => Def {
+                title: "mu* against mean pressure",
+                help: "mu* against the mean pressure, drawn only where contact is complete (p > 0 everywhere).",
+                overlays: false,
+                build: spatial::mu_star,
+            },
+            Self::Dispersion => Def {
+                title: "dispersion: drift velocity",
+                help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards.",
+                overlays: false,
+                build: spatial::dispersion,
+            },
+        }
+    }
+}
+
+/// A chart of either problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Chart {
+    /// A plane chart.
+    Plane(PlaneChart),
+    /// A spatial chart.
+    Spatial(SpatialChart),
+}
+
+impl Chart {
+    /// The charts of a problem, in Tab order.
+    pub fn all(problem: Problem) -> Vec<Chart> {
+        match problem {
+            Problem::Plane => PlaneChart::ALL.map(Chart::Plane).to_vec(),
+            Problem::Spatial => SpatialChart::ALL.map(Chart::Spatial).to_vec(),
+        }
+    }
+
+    /// The first chart of a problem.
+    pub fn first(problem: Problem) -> Chart {
+        Chart::all(problem)[0]
+    }
+
+    /// The problem the chart belongs to.
+    pub fn problem(self) -> Problem {
+        match self {
+            Chart::Plane(_) => Problem::Plane,
+            Chart::Spatial(_) => Problem::Spatial,
+        }
+    }
+
+    /// Position (from 1) and count within its problem, for "2/4".
+    pub fn position(self) -> (usize, usize) {
+        let all = Chart::all(self.problem());
+        let i = all.iter().position(|c| *c == self).expect("listed");
+        (i + 1, all.len())
+    }
+
+    /// The chart `step` places further in Tab order (wrapping).
+    pub fn step(self, step: isize) -> Chart {
+        let all = Chart::all(self.problem());
+        let (i, n) = self.position();
+        all[(i as isize - 1 + step).rem_euclid(n as isize) as usize]
+    }
+
+    /// The title.
+    pub fn title(self) -> &'static str {
+        match self {
+            Chart::Plane(c) => c.def().title,
+            Chart::Spatial(c) => c.def().title,
+        }
+    }
+
+    /// What the chart means, for the help.
+    pub fn help(self) -> &'static str {
+        match self {
+            Chart::Plane(c) => c.def().help,
+            Chart::Spatial(c) => c.def().help,
+        }
+    }
+
+    /// True when the chart draws the other plane models (the engine computes them only then).
+    pub fn draws_overlays(self) -> bool {
+        match self {
+            Chart::Plane(c) => c.def().overlays,
+            Chart::Spatial(c) => c.def().overlays,
+        }
+    }
+
+    /// The figure for an answer, from the inputs the answer carries (never from the form).
+    pub fn build(self, answer: &Answer) -> Result<Figure, NoFigure> {
+        let preset = &answer.request.preset;
+        match (self, &answer.output) {
+            (Chart::Plane(c), Output::Plane(out)) => (c.def().build)(preset, out),
+            (Chart::Spatial(c), Output::Spatial(Ok(out))) => (c.def().build)(preset, out),
+            (Chart::Spatial(_), Output::Spatial(Err(e))) => Err(NoFigure::Error(e.to_string())),
+            // the answer is for the other problem: the chart's own is on its way
+            _ => Err(NoFigure::Solving),
+        }
+    }
+}
+
+/// x-y pairs from two columns.
+fn zip(x: &[f64], y: &[f64]) -> Vec<(f64, f64)> {
+    x.iter().copied().zip(y.iter().copied()).collect()
+}

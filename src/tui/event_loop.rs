@@ -1,0 +1,153 @@
+//! The event loop. It sleeps on one channel fed by the input thread and by the solver's worker,
+//! so it wakes on a key and on a result alike (and on the frame clock while time plays); it
+//! carries out `update`'s commands (solving, files) and reports back with messages.
+
+use std::io;
+use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender};
+use std::time::{Duration, Instant};
+
+use ratatui::Terminal;
+use ratatui::backend::Backend;
+use ratatui::crossterm::event::{Event, KeyEventKind};
+use wearlab::engine::{Answer, Worker};
+
+use crate::tui::app::{App, Command, Msg};
+use crate::tui::effects;
+use crate::tui::update::update;
+use crate::tui::view::{RenderOptions, view};
+
+/// How often time advances while playing.
+pub const FRAME: Duration = Duration::from_millis(100);
+
+/// What wakes the loop.
+#[derive(Debug)]
+pub enum Wake {
+    /// A terminal event from the input thread.
+    Input(Event),
+    /// An answer from the worker.
+    Answer(Box<Answer>),
+}
+
+/// The event loop over any backend (a real terminal, or a test buffer).
+pub struct Loop<B: Backend> {
+    /// The terminal drawn on.
+    pub terminal: Terminal<B>,
+    /// The model.
+    pub app: App,
+    render: RenderOptions,
+    wake: Receiver<Wake>,
+    worker: Worker,
+    next_frame: Instant,
+}
+
+impl<B: Backend> Loop<B> {
+    /// Starts the worker (answering into `tx`), asks for the first solve and draws.
+    pub fn new(
+        terminal: Terminal<B>,
+        app: App,
+        render: RenderOptions,
+        tx: Sender<Wake>,
+        rx: Receiver<Wake>,
+    ) -> io::Result<Loop<B>> {
+        let worker = Worker::spawn(move |a| tx.send(Wake::Answer(Box::new(a))).is_ok());
+        let mut l = Loop {
+            terminal,
+            app,
+            render,
+            wake: rx,
+            worker,
+            next_frame: Instant::now() + FRAME,
+        };
+        let commands = l.app.start();
+        l.perform(commands);
+        l.draw()?;
+        Ok(l)
+    }
+
+    /// Runs until the user quits.
+    pub fn run(&mut self) -> io::Result<()> {
+        while self.step()? {}
+        Ok(())
+    }
+
+    /// Sleeps until a key, a result or the next frame of playing time; handles it and whatever
+    /// else has arrived meanwhile, then redraws once. False when the user quit.
+    pub fn step(&mut self) -> io::Result<bool> {
+        let first = if self.app.ui.playing {
+            let wait = self.next_frame.saturating_duration_since(Instant::now());
+            match self.wake.recv_timeout(wait) {
+                Ok(w) => Some(w),
+                Err(RecvTimeoutError::Timeout) => None,
+                Err(RecvTimeoutError::Disconnected) => return Ok(false),
+            }
+        } else {
+            match self.wake.recv() {
+                Ok(w) => Some(w),
+                Err(_) => return Ok(false),
+            }
+        };
+        let mut messages: Vec<Msg> = first.into_iter().filter_map(message).collect();
+        messages.extend(self.wake.try_iter().filter_map(message));
+        let now = Instant::now();
+        if self.app.ui.playing && now >= self.next_frame {
+            messages.push(Msg::Tick);
+            self.next_frame = now + FRAME;
+        }
+        for msg in messages {
+            let commands = update(&mut self.app, msg);
+            if !self.perform(commands) {
+                return Ok(false);
+            }
+        }
+        self.draw()?;
+        Ok(true)
+    }
+
+    fn draw(&mut self) -> io::Result<()> {
+        let (app, render) = (&self.app, self.render);
+        match self.terminal.draw(|f| view(app, render, f)) {
+            Ok(_) => Ok(()),
+            Err(e) => Err(io::Error::other(e.to_string())),
+        }
+    }
+
+    /// Carries out commands, and the commands of the messages they report; false on Quit.
+    fn perform(&mut self, mut commands: Vec<Command>) -> bool {
+        while !commands.is_empty() {
+            let mut reports = Vec::new();
+            for cmd in commands {
+                let report = match cmd {
+                    Command::Solve(generation, request) => {
+                        self.worker.submit(generation, *request);
+                        continue;
+                    }
+                    Command::ListPresets => {
+                        effects::list_presets(self.app.places.presets.as_deref())
+                    }
+                    Command::Save {
+                        target,
+                        preset,
+                        overwrite,
+                    } => effects::save(target, preset, overwrite),
+                    Command::Export(path, text) => effects::export(path, &text),
+                    Command::Quit => return false,
+                };
+                reports.push(report);
+            }
+            commands = reports
+                .into_iter()
+                .flat_map(|m| update(&mut self.app, m))
+                .collect();
+        }
+        true
+    }
+}
+
+/// The message of a wake-up (key releases and mouse events are none).
+fn message(wake: Wake) -> Option<Msg> {
+    match wake {
+        Wake::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => Some(Msg::Key(key)),
+        Wake::Input(_) => None,
+        Wake::Answer(answer) => Some(Msg::Answer(answer)),
+    }
+}

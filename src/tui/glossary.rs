@@ -1,0 +1,43 @@
+//! What every symbol of the status panel means, with its unit and sign convention (shown by `?`).
+
+use wearlab::preset::Problem;
+
+/// One symbol: how the status writes it, its unit, what it is.
+pub type Entry = (&'static str, &'static str, &'static str);
+
+/// The plane problem's status symbols.
+#[rustfmt::skip]
+pub const PLANE: [Entry; 9] = [
+    ("a, b", "m", "contact zone [-a, b] around the punch tip; b is the leading edge (the punch moves to +x)"),
+    ("theta", "-", "exponent shift of the pressure (wide and strip models; eq. 4.5): > 0 peak behind the tip (friction wins), < 0 ahead (wear wins)"),
+    ("Q2", "N/m", "normal contact force, the integral of the pressure q2 over the contact"),
+    ("psi", "N/m", "deformation component of friction, the integral of q2 g'(x) (eq. 2.2); > 0 adds to friction"),
+    ("mu*", "-", "total friction coefficient T/P = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P (eq. 3.13)"),
+    ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
+    ("I-J residual", "-", "|I - J| over the gross work: how well the solution meets the energy identity I = J (eq. 2.9); small is good"),
+    ("(a+b)/h", "-", "contact width over strip thickness: wide model for << 1, narrow (Winkler) for >> 1, strip for any"),
+    ("valid / !", "", "whether the model holds at this operating point, or why not"),
+];
+
+/// The spatial problem's status symbols.
+#[rustfmt::skip]
+pub const SPATIAL: [Entry; 10] = [
+    ("t", "s", "the instant shown (space plays time)"),
+    ("mu*", "-", "total friction coefficient mu + (1 + mu^2) psi/P at time t"),
+    ("psi", "Pa", "deformation component of friction per unit area, psi = -<p dg/dx>; > 0 adds to friction"),
+    ("p_min", "Pa", "smallest contact pressure in the cell: certified minimum, or the lower bound pbar - sum A_n/M_n when the wavenumbers do not share a period"),
+    ("n", "", "one row per harmonic, numbered as in the form; '+N more' counts those that do not fit (select a harmonic's row in the form to see it)"),
+    ("kh", "-", "wavenumber k = |(wx, wy)| times the layer thickness (k [rad/m] itself for a half-space)"),
+    ("1/beta", "s", "decay time of the harmonic's amplitude by wear, A(t) = A(0) exp(-beta t); inf without wear"),
+    ("c", "m/s", "drift velocity of the wave pattern, > 0 along +x (with the friction force on the layer, against its motion)"),
+    ("phi", "rad", "phase lead of the pressure harmonic over the shape harmonic (psi goes with -sin phi)"),
+    ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
+];
+
+/// The symbols of a problem's status.
+pub fn of(problem: Problem) -> &'static [Entry] {
+    match problem {
+        Problem::Plane => &PLANE,
+        Problem::Spatial => &SPATIAL,
+    }
+}

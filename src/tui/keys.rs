@@ -1,0 +1,382 @@
+//! Every key of the explorer in one place: the bindings of the main screen (key, action, help
+//! line, footer item) and the keys of the prompts. Key handling, the `?` help, the footer and
+//! README's key table are all drawn from these tables.
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use wearlab::preset::Problem;
+
+/// What a key on the main screen does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    /// Select the previous form row (wraps).
+    PrevField,
+    /// Select the next form row (wraps).
+    NextField,
+    /// Nudge the selected value down or up, by a small or a large step.
+    Nudge { up: bool, large: bool },
+    /// Type a value, or pick a choice.
+    Edit,
+    /// Show the next chart.
+    NextChart,
+    /// Show the previous chart.
+    PrevChart,
+    /// Switch between the plane and the spatial problem.
+    SwitchProblem,
+    /// Cycle the plane model.
+    CycleModel,
+    /// Play or pause time (spatial).
+    PlayPause,
+    /// Add a harmonic (spatial).
+    AddHarmonic,
+    /// Remove the selected harmonic (spatial).
+    RemoveHarmonic,
+    /// Open a preset.
+    Open,
+    /// Save the preset.
+    Save,
+    /// Export the visible chart as CSV.
+    Export,
+    /// Undo the last change.
+    Undo,
+    /// Show the help.
+    Help,
+    /// Quit (asks when there are unsaved edits).
+    Quit,
+}
+
+/// Every action, for the test that each one is bound.
+#[cfg(test)]
+pub const ACTIONS: [Action; 20] = [
+    Action::PrevField,
+    Action::NextField,
+    Action::Nudge {
+        up: false,
+        large: false,
+    },
+    Action::Nudge {
+        up: true,
+        large: false,
+    },
+    Action::Nudge {
+        up: false,
+        large: true,
+    },
+    Action::Nudge {
+        up: true,
+        large: true,
+    },
+    Action::Edit,
+    Action::NextChart,
+    Action::PrevChart,
+    Action::SwitchProblem,
+    Action::CycleModel,
+    Action::PlayPause,
+    Action::AddHarmonic,
+    Action::RemoveHarmonic,
+    Action::Open,
+    Action::Save,
+    Action::Export,
+    Action::Undo,
+    Action::Help,
+    Action::Quit,
+];
+
+/// A key with the modifiers that matter: Shift for non-character keys, Ctrl for letters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Key {
+    /// The key.
+    pub code: KeyCode,
+    /// Shift held (only compared for non-character keys; a character carries its own case).
+    pub shift: bool,
+    /// Ctrl held.
+    pub ctrl: bool,
+}
+
+const fn key(code: KeyCode) -> Key {
+    Key {
+        code,
+        shift: false,
+        ctrl: false,
+    }
+}
+
+const fn ch(c: char) -> Key {
+    key(KeyCode::Char(c))
+}
+
+const fn shift(code: KeyCode) -> Key {
+    Key {
+        code,
+        shift: true,
+        ctrl: false,
+    }
+}
+
+/// Ctrl-C: quits from every mode.
+pub const CTRL_C: Key = Key {
+    code: KeyCode::Char('c'),
+    shift: false,
+    ctrl: true,
+};
+
+impl Key {
+    /// Whether a key event is this key.
+    pub fn matches(&self, ev: &KeyEvent) -> bool {
+        let ctrl = ev.modifiers.contains(KeyModifiers::CONTROL);
+        let shift = ev.modifiers.contains(KeyModifiers::SHIFT);
+        match (self.code, ev.code) {
+            (KeyCode::Char(a), KeyCode::Char(b)) => {
+                a.eq_ignore_ascii_case(&b)
+                    && (a == b || ctrl)
+                    && ctrl == self.ctrl
+                    && !ev.modifiers.contains(KeyModifiers::ALT)
+            }
+            (a, b) => a == b && shift == self.shift && ctrl == self.ctrl,
+        }
+    }
+}
+
+/// One line of the key table: the keys and what they do, the help line and the footer item.
+#[derive(Clone, Copy, Debug)]
+pub struct Binding {
+    /// The keys and their actions.
+    pub keys: &'static [(Key, Action)],
+    /// How the help and README write the keys.
+    pub names: &'static str,
+    /// What they do, for the help and README.
+    pub help: &'static str,
+    /// The footer item: keys, word, a shorter word for narrow terminals, and the order in which
+    /// items take their shorter word when the footer does not fit (0: never).
+    pub footer: (&'static str, &'static str, &'static str, u8),
+    /// The problem the binding applies to (None: both).
+    pub only: Option<Problem>,
+}
+
+const fn binding(
+    keys: &'static [(Key, Action)],
+    names: &'static str,
+    help: &'static str,
+    footer: (&'static str, &'static str, &'static str, u8),
+    only: Option<Problem>,
+) -> Binding {
+    Binding {
+        keys,
+        names,
+        help,
+        footer,
+        only,
+    }
+}
+
+const fn nudge(up: bool, large: bool) -> Action {
+    Action::Nudge { up, large }
+}
+
+/// The main screen's key table, in help order.
+#[rustfmt::skip]
+pub const BINDINGS: [Binding; 14] = [
+    binding(
+        &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
+          (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
+        "Up/Down, k/j", "choose a field",
+        ("↑↓", "field", "", 4), None,
+    ),
+    binding(
+        &[(key(KeyCode::Left), nudge(false, false)), (ch('h'), nudge(false, false)),
+          (key(KeyCode::Right), nudge(true, false)), (ch('l'), nudge(true, false)),
+          (shift(KeyCode::Left), nudge(false, true)), (ch('H'), nudge(false, true)),
+          (shift(KeyCode::Right), nudge(true, true)), (ch('L'), nudge(true, true))],
+        "Left/Right, h/l", "nudge the value (x1.1 or a fixed step; Shift or H/L: x2 or ten steps)",
+        ("←→", "nudge (⇧ more)", "nudge", 1), None,
+    ),
+    binding(
+        &[(key(KeyCode::Enter), Action::Edit)],
+        "Enter", "type a value (3e9, 3 GPa, 50mm, inf) or pick a choice; Esc cancels",
+        ("⏎", "type", "type", 0), None,
+    ),
+    binding(
+        &[(key(KeyCode::Tab), Action::NextChart), (key(KeyCode::BackTab), Action::PrevChart),
+          (shift(KeyCode::BackTab), Action::PrevChart)],
+        "Tab, Shift-Tab", "next / previous chart",
+        ("Tab", "chart", "chart", 0), None,
+    ),
+    binding(
+        &[(ch('p'), Action::SwitchProblem)],
+        "p", "switch plane / spatial problem (a preset holds both)",
+        ("p", "problem", "problem", 0), None,
+    ),
+    binding(
+        &[(ch('m'), Action::CycleModel)],
+        "m", "cycle the plane model (wide, narrow, strip)",
+        ("m", "model", "model", 0), Some(Problem::Plane),
+    ),
+    binding(
+        &[(ch(' '), Action::PlayPause)],
+        "space", "play / pause time",
+        ("space", "play", "play", 0), Some(Problem::Spatial),
+    ),
+    binding(
+        &[(ch('+'), Action::AddHarmonic), (ch('-'), Action::RemoveHarmonic)],
+        "+ / -", "add a harmonic / remove the selected one (or the last)",
+        ("+/-", "harmonic", "harm", 3), Some(Problem::Spatial),
+    ),
+    binding(
+        &[(ch('o'), Action::Open)],
+        "o", "open a preset: bundled or your folder (asks first when there are unsaved edits)",
+        ("o", "open", "", 2), None,
+    ),
+    binding(
+        &[(ch('s'), Action::Save)],
+        "s", "save the preset (asks a name; asks before overwriting)",
+        ("s", "save", "", 2), None,
+    ),
+    binding(
+        &[(ch('e'), Action::Export)],
+        "e", "export the visible chart's data as CSV, headed by its parameters",
+        ("e", "export", "", 2), None,
+    ),
+    binding(
+        &[(ch('u'), Action::Undo)],
+        "u", "undo the last change (says what it undid)",
+        ("u", "undo", "", 2), None,
+    ),
+    binding(
+        &[(ch('?'), Action::Help)],
+        "?", "this help: keys, the chart, the status symbols",
+        ("?", "help", "help", 0), None,
+    ),
+    binding(
+        &[(ch('q'), Action::Quit), (CTRL_C, Action::Quit)],
+        "q, Ctrl-C", "quit (asks when there are unsaved edits; Ctrl-C works everywhere)",
+        ("q", "quit", "quit", 0), None,
+    ),
+];
+
+/// The binding of a key event on the main screen, with its action.
+pub fn lookup(ev: &KeyEvent) -> Option<(&'static Binding, Action)> {
+    BINDINGS.iter().find_map(|b| {
+        b.keys
+            .iter()
+            .find(|(k, _)| k.matches(ev))
+            .map(|(_, a)| (b, *a))
+    })
+}
+
+/// What a key does in a prompt (typing a value, a choice list, the help, the picker, the save
+/// prompt, a yes/no question).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PromptAction {
+    /// Move up in a list, or scroll up.
+    Up,
+    /// Move down, or scroll down.
+    Down,
+    /// A page up.
+    PageUp,
+    /// A page down.
+    PageDown,
+    /// Apply / open / save.
+    Accept,
+    /// Close without doing anything.
+    Cancel,
+    /// Delete the last character typed.
+    Backspace,
+    /// Answer yes.
+    Yes,
+    /// Answer no.
+    No,
+}
+
+/// The kinds of prompt, for their key lists.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Prompt {
+    /// Typing text (a value, a file name).
+    Text,
+    /// Choosing from a list (a choice row, the picker).
+    List,
+    /// Reading the help.
+    Help,
+    /// A yes/no question.
+    Question,
+}
+
+/// The keys of each prompt with their footer text ("" for a key the footer does not name).
+#[rustfmt::skip]
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 19] = [
+    (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
+    (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
+    (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
+    (Prompt::List, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
+    (Prompt::List, ch('k'), PromptAction::Up, ""),
+    (Prompt::List, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::List, ch('j'), PromptAction::Down, ""),
+    (Prompt::List, key(KeyCode::Enter), PromptAction::Accept, "⏎ take"),
+    (Prompt::List, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
+    (Prompt::Help, key(KeyCode::Up), PromptAction::Up, "↑↓ PgUp PgDn scroll"),
+    (Prompt::Help, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Help, key(KeyCode::PageUp), PromptAction::PageUp, ""),
+    (Prompt::Help, key(KeyCode::PageDown), PromptAction::PageDown, ""),
+    (Prompt::Help, key(KeyCode::Esc), PromptAction::Cancel, "Esc or ? close"),
+    (Prompt::Help, ch('?'), PromptAction::Cancel, ""),
+    (Prompt::Help, ch('q'), PromptAction::Cancel, ""),
+    (Prompt::Question, ch('y'), PromptAction::Yes, "y yes"),
+    (Prompt::Question, ch('n'), PromptAction::No, "n no"),
+    (Prompt::Question, key(KeyCode::Esc), PromptAction::No, "Esc no"),
+];
+
+/// What a key does in a prompt, if anything.
+pub fn prompt_action(prompt: Prompt, ev: &KeyEvent) -> Option<PromptAction> {
+    PROMPT_KEYS
+        .iter()
+        .find(|(p, k, _, _)| *p == prompt && k.matches(ev))
+        .map(|(_, _, a, _)| *a)
+}
+
+/// True for Ctrl-C, which quits from every mode.
+pub fn is_ctrl_c(ev: &KeyEvent) -> bool {
+    CTRL_C.matches(ev)
+}
+
+/// The footer of the main screen for a problem, fitted to `width` columns: items two spaces
+/// apart, else one space apart; while neither fits, items take their shorter word in the order
+/// of their rank.
+pub fn footer(problem: Problem, width: usize) -> String {
+    let items: Vec<_> = BINDINGS
+        .iter()
+        .filter(|b| b.only.is_none_or(|p| p == problem))
+        .map(|b| b.footer)
+        .collect();
+    let render = |shortened: u8, sep: &str| -> String {
+        items
+            .iter()
+            .map(|&(k, long, short, rank)| {
+                let word = if rank > 0 && rank <= shortened {
+                    short
+                } else {
+                    long
+                };
+                if word.is_empty() {
+                    k.to_string()
+                } else {
+                    format!("{k} {word}")
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(sep)
+    };
+    let fits = |s: &String| s.chars().count() <= width;
+    (0..=u8::MAX)
+        .flat_map(|shortened| [render(shortened, "  "), render(shortened, " ")])
+        .find(fits)
+        .unwrap_or_else(|| render(u8::MAX, " "))
+}
+
+/// The footer of a prompt: its keys, then Ctrl-C.
+pub fn prompt_footer(prompt: Prompt) -> String {
+    PROMPT_KEYS
+        .iter()
+        .filter(|(p, _, _, text)| *p == prompt && !text.is_empty())
+        .map(|(_, _, _, text)| *text)
+        .chain(["Ctrl-C quit"])
+        .collect::<Vec<_>>()
+        .join("  ")
+}

@@ -1,0 +1,188 @@
+//! `update` for the actions that reach files (open, save, export) and for quitting.
+
+use ratatui::crossterm::event::KeyCode;
+use wearlab::preset::SaveTarget;
+
+use super::update::message;
+use super::*;
+use crate::tui::app::{Mode, PickerEntry};
+
+#[test]
+fn o_lists_the_presets_and_asks_before_dropping_unsaved_edits() {
+    let mut app = app("polymer-coating.toml");
+    assert_eq!(
+        press(&mut app, KeyCode::Char('o')),
+        vec![Command::ListPresets]
+    );
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+        panic!()
+    };
+    update(&mut app, Msg::PresetsListed(entries.clone()));
+    press(&mut app, KeyCode::Down);
+    assert_eq!(press(&mut app, KeyCode::Enter).len(), 1);
+    assert_eq!(app.doc.preset, bundled("hertz-check.toml"));
+    // with an unsaved edit, opening asks
+    select(&mut app, "E", None);
+    press(&mut app, KeyCode::Right);
+    update(&mut app, Msg::PresetsListed(entries.clone()));
+    assert!(press(&mut app, KeyCode::Enter).is_empty());
+    assert!(matches!(app.ui.mode, Mode::ConfirmOpen(_)));
+    press(&mut app, KeyCode::Char('n'));
+    assert_eq!(message(&app), "not opened: your edits stay");
+    assert!(app.doc.dirty);
+    update(&mut app, Msg::PresetsListed(entries));
+    press(&mut app, KeyCode::Enter);
+    assert_eq!(press(&mut app, KeyCode::Char('y')).len(), 1);
+    assert_eq!(app.doc.preset, bundled("polymer-coating.toml"));
+    assert!(!app.doc.dirty);
+}
+
+#[test]
+fn a_broken_preset_in_the_picker_shows_its_error_and_keeps_the_state() {
+    let mut app = app("polymer-coating.toml");
+    let before = app.doc.preset.clone();
+    let broken = PickerEntry {
+        title: "(unreadable)".into(),
+        source: "lab/zz.toml".into(),
+        path: Some("lab/zz.toml".into()),
+        preset: Err("lab/zz.toml:3: missing field `poisson_ratio`".into()),
+    };
+    update(&mut app, Msg::PresetsListed(vec![broken]));
+    assert!(press(&mut app, KeyCode::Enter).is_empty());
+    assert!(app.ui.message.as_ref().unwrap().error);
+    assert_eq!(
+        message(&app),
+        "lab/zz.toml:3: missing field `poisson_ratio`"
+    );
+    assert_eq!(app.doc.preset, before);
+}
+
+#[test]
+fn s_starts_an_empty_prompt_and_never_overwrites_without_asking() {
+    let mut app = app("polymer-coating.toml");
+    app.places.presets = Some("/data/presets".into());
+    app.doc.path = Some("/data/presets/my lab 1.toml".into());
+    press(&mut app, KeyCode::Char('s'));
+    assert_eq!(
+        app.ui.mode,
+        Mode::SaveAs(String::new()),
+        "typing replaces, never appends"
+    );
+    type_text(&mut app, "my lab 1");
+    let cmds = press(&mut app, KeyCode::Enter);
+    let target = SaveTarget {
+        path: "/data/presets/my lab 1.toml".into(),
+        create_folder: true,
+    };
+    let [
+        Command::Save {
+            target: t,
+            overwrite: false,
+            ..
+        },
+    ] = cmds.as_slice()
+    else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(*t, target);
+    update(&mut app, Msg::SaveExists(target.clone()));
+    assert_eq!(app.ui.mode, Mode::ConfirmOverwrite(target.clone()));
+    assert!(press(&mut app, KeyCode::Char('n')).is_empty());
+    assert_eq!(message(&app), "not saved");
+    update(&mut app, Msg::SaveExists(target.clone()));
+    let cmds = press(&mut app, KeyCode::Char('y'));
+    assert!(matches!(
+        cmds.as_slice(),
+        [Command::Save {
+            overwrite: true,
+            ..
+        }]
+    ));
+    select(&mut app, "E", None);
+    press(&mut app, KeyCode::Right);
+    let saved = Box::new(app.doc.preset.clone());
+    update(&mut app, Msg::Saved(target.clone(), saved, Ok(())));
+    assert!(!app.doc.dirty);
+    assert_eq!(message(&app), "saved /data/presets/my lab 1.toml");
+    update(
+        &mut app,
+        Msg::Saved(
+            target,
+            Box::new(bundled("hertz-check.toml")),
+            Err("disk full".into()),
+        ),
+    );
+    assert_eq!(message(&app), "not saved: disk full");
+}
+
+#[test]
+fn e_exports_the_visible_chart_and_reports_where() {
+    let mut app = solved("polymer-coating.toml");
+    let cmds = press(&mut app, KeyCode::Char('e'));
+    let [Command::Export(path, text)] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(path.to_str(), Some("wearlab-pressure-and-shear.csv"));
+    assert!(text.contains("\n1,pressure q2,"));
+    update(&mut app, Msg::Exported(path.clone(), Ok(())));
+    assert_eq!(
+        message(&app),
+        "exported the chart to wearlab-pressure-and-shear.csv"
+    );
+}
+
+#[test]
+fn q_quits_and_asks_when_there_are_unsaved_edits() {
+    let mut app = app("polymer-coating.toml");
+    assert_eq!(press(&mut app, KeyCode::Char('q')), vec![Command::Quit]);
+    press(&mut app, KeyCode::Right);
+    assert!(press(&mut app, KeyCode::Char('q')).is_empty());
+    assert_eq!(app.ui.mode, Mode::ConfirmQuit);
+    press(&mut app, KeyCode::Char('n'));
+    assert_eq!(app.ui.mode, Mode::Normal);
+    press(&mut app, KeyCode::Char('q'));
+    assert_eq!(press(&mut app, KeyCode::Char('y')), vec![Command::Quit]);
+}
+
+#[test]
+fn ctrl_c_quits_from_every_mode() {
+    let target = SaveTarget {
+        path: "x.toml".into(),
+        create_folder: false,
+    };
+    let entry = PickerEntry {
+        title: "t".into(),
+        source: "s".into(),
+        path: None,
+        preset: Ok(bundled("hertz-check.toml")),
+    };
+    let modes = [
+        Mode::Normal,
+        Mode::Editing("3".into()),
+        Mode::Choosing(0),
+        Mode::Help(3),
+        Mode::Picker {
+            entries: vec![entry.clone()],
+            selected: 0,
+        },
+        Mode::SaveAs("my lab".into()),
+        Mode::ConfirmOverwrite(target),
+        Mode::ConfirmOpen(Box::new(entry)),
+        Mode::ConfirmQuit,
+    ];
+    for mode in modes {
+        let mut clean = app("polymer-coating.toml");
+        clean.ui.mode = mode.clone();
+        assert_eq!(ctrl(&mut clean, 'c'), vec![Command::Quit], "{mode:?}");
+        // with unsaved edits it asks, and a second Ctrl-C quits
+        let mut edited = app("polymer-coating.toml");
+        edited.doc.dirty = true;
+        edited.ui.mode = mode.clone();
+        let first = ctrl(&mut edited, 'c');
+        if mode != Mode::ConfirmQuit {
+            assert!(first.is_empty(), "{mode:?}");
+            assert_eq!(edited.ui.mode, Mode::ConfirmQuit);
+        }
+        assert_eq!(ctrl(&mut edited, 'c'), vec![Command::Quit], "{mode:?}");
+    }
+}

@@ -1,0 +1,134 @@
+//! The key table against itself, the help, the footers and README.
+
+use std::collections::HashSet;
+
+use wearlab::physics::plane::Model;
+use wearlab::preset::Problem;
+
+use crate::tui::keys::{ACTIONS, BINDINGS, Prompt, footer, lookup, prompt_footer};
+
+fn event(k: &crate::tui::keys::Key) -> ratatui::crossterm::event::KeyEvent {
+    use ratatui::crossterm::event::{KeyEvent, KeyModifiers};
+    let mut mods = KeyModifiers::NONE;
+    if k.shift {
+        mods |= KeyModifiers::SHIFT;
+    }
+    if k.ctrl {
+        mods |= KeyModifiers::CONTROL;
+    }
+    KeyEvent::new(k.code, mods)
+}
+
+#[test]
+fn every_action_is_bound_and_every_binding_has_help() {
+    for action in ACTIONS {
+        assert!(
+            BINDINGS
+                .iter()
+                .any(|b| b.keys.iter().any(|(_, a)| *a == action)),
+            "{action:?} has no key"
+        );
+    }
+    for b in &BINDINGS {
+        assert!(!b.names.is_empty() && !b.help.is_empty(), "{b:?}");
+        assert!(!b.footer.0.is_empty() && !b.footer.1.is_empty(), "{b:?}");
+    }
+}
+
+#[test]
+fn every_key_reaches_its_own_action_and_no_key_is_bound_twice() {
+    let mut seen = HashSet::new();
+    for b in &BINDINGS {
+        for (k, action) in b.keys {
+            assert!(seen.insert(format!("{k:?}")), "{k:?} bound twice");
+            let (_, found) = lookup(&event(k)).unwrap_or_else(|| panic!("{k:?} unbound"));
+            assert_eq!(found, *action, "{k:?}");
+        }
+    }
+}
+
+#[test]
+fn the_model_key_names_every_model() {
+    let m = BINDINGS.iter().find(|b| b.names == "m").unwrap();
+    let names: Vec<&str> = Model::ALL.iter().map(|m| m.name()).collect();
+    assert!(
+        m.help.contains(&format!("({})", names.join(", "))),
+        "{}",
+        m.help
+    );
+}
+
+#[test]
+fn readme_key_table_is_the_key_table() {
+    let readme = include_str!("../../../README.md");
+    let start = readme
+        .find("| key | what it does |")
+        .expect("README has the key table");
+    let rows: Vec<(String, String)> = readme[start..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            let cells: Vec<&str> = l.trim_matches('|').split(" | ").collect();
+            (
+                cells[0].trim().replace("\\|", "|"),
+                cells[1].trim().to_string(),
+            )
+        })
+        .collect();
+    let table: Vec<(String, String)> = BINDINGS
+        .iter()
+        .map(|b| (b.names.to_string(), b.help.to_string()))
+        .collect();
+    assert_eq!(rows, table);
+}
+
+#[test]
+fn footers_fit_and_name_every_key_of_the_problem() {
+    for problem in [Problem::Plane, Problem::Spatial] {
+        for width in [80, 120] {
+            let text = footer(problem, width);
+            assert!(text.chars().count() <= width, "{width}: {text}");
+            assert!(
+                text.ends_with("? help  q quit") || text.ends_with("? help q quit"),
+                "{text}"
+            );
+            for b in BINDINGS
+                .iter()
+                .filter(|b| b.only.is_none_or(|p| p == problem))
+            {
+                assert!(
+                    text.contains(b.footer.0),
+                    "{width} {problem:?} lacks {}: {text}",
+                    b.footer.0
+                );
+            }
+        }
+    }
+    // read as a user would (80 columns shortens the file keys' words, which the help gives)
+    assert_eq!(
+        footer(Problem::Plane, 80),
+        "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ? help q quit"
+    );
+    assert_eq!(
+        footer(Problem::Spatial, 80),
+        "↑↓ ←→ nudge ⏎ type Tab chart p problem space play +/- harm o s e u ? help q quit"
+    );
+    assert_eq!(
+        footer(Problem::Plane, 120),
+        "↑↓ field  ←→ nudge (⇧ more)  ⏎ type  Tab chart  p problem  m model  o open  s save  e export  u undo  ? help  q quit"
+    );
+    assert_eq!(
+        footer(Problem::Spatial, 120),
+        "↑↓ field ←→ nudge ⏎ type Tab chart p problem space play +/- harmonic o open s save e export u undo ? help q quit"
+    );
+}
+
+#[test]
+fn every_prompt_says_how_to_leave_it() {
+    for p in [Prompt::Text, Prompt::List, Prompt::Help, Prompt::Question] {
+        let text = prompt_footer(p);
+        assert!(text.contains("Esc"), "{p:?}: {text}");
+        assert!(text.ends_with("Ctrl-C quit"), "{p:?}: {text}");
+    }
+}

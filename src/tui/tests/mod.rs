@@ -1,0 +1,106 @@
+//! Tests of the explorer: `update` for every action of the key table, the key table against the
+//! help, footer and README, the charts' export against their builders, results labelled by their
+//! own inputs, the loop, and screen snapshots (TestBackend + insta).
+
+mod charts;
+mod files;
+mod keys;
+mod screens;
+mod stale;
+mod update;
+mod widgets;
+
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use wearlab::engine::{Answer, Engine};
+use wearlab::preset::Preset;
+
+use crate::tui::app::{App, Command, Msg, Places};
+use crate::tui::update::update;
+use crate::tui::view::{RenderOptions, view};
+
+fn bundled(file: &str) -> Preset {
+    wearlab::preset::bundled(file).unwrap().unwrap()
+}
+
+fn app(file: &str) -> App {
+    App::new(bundled(file), None, Places::default())
+}
+
+fn key(code: KeyCode) -> Msg {
+    Msg::Key(KeyEvent::new(code, KeyModifiers::NONE))
+}
+
+fn press(app: &mut App, code: KeyCode) -> Vec<Command> {
+    update(app, key(code))
+}
+
+fn ctrl(app: &mut App, c: char) -> Vec<Command> {
+    update(
+        app,
+        Msg::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::CONTROL)),
+    )
+}
+
+fn type_text(app: &mut App, text: &str) {
+    for c in text.chars() {
+        press(app, KeyCode::Char(c));
+    }
+}
+
+/// Selects the row with this label (of harmonic `n` when given).
+fn select(app: &mut App, label: &str, harmonic: Option<usize>) {
+    app.ui.selected = app
+        .rows()
+        .iter()
+        .position(|r| r.param.label == label && r.harmonic == harmonic)
+        .unwrap_or_else(|| panic!("no row {label}"));
+}
+
+/// Every answer the engine gives for the solve commands, all stages, as the worker would send.
+fn answers(engine: &mut Engine, commands: &[Command]) -> Vec<Answer> {
+    let mut out = Vec::new();
+    for c in commands {
+        if let Command::Solve(generation, request) = c {
+            let request = std::sync::Arc::new((**request).clone());
+            engine.run_staged(&request, |output, complete| {
+                out.push(Answer {
+                    generation: *generation,
+                    request: request.clone(),
+                    output,
+                    complete,
+                });
+                true
+            });
+        }
+    }
+    out
+}
+
+/// Delivers every answer to the commands (and to the commands those answers give).
+fn settle(app: &mut App, commands: Vec<Command>) {
+    let mut engine = Engine::new();
+    for a in answers(&mut engine, &commands) {
+        update(app, Msg::Answer(Box::new(a)));
+    }
+}
+
+/// An app on a bundled preset with its first solve delivered.
+fn solved(file: &str) -> App {
+    let mut app = app(file);
+    let commands = app.start();
+    settle(&mut app, commands);
+    app
+}
+
+fn screen(app: &App, w: u16, h: u16, options: RenderOptions) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+    terminal.draw(|f| view(app, options, f)).unwrap();
+    terminal.backend().to_string()
+}
+
+const PLAIN: RenderOptions = RenderOptions {
+    ascii: false,
+    color: false,
+};

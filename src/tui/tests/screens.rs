@@ -1,0 +1,124 @@
+//! Screen snapshots, each read as a user would before it was accepted.
+
+use ratatui::crossterm::event::KeyCode;
+
+use super::*;
+use crate::tui::charts::{Chart, PlaneChart, SpatialChart};
+use crate::tui::view::popups::help_lines;
+
+const ASCII: RenderOptions = RenderOptions {
+    ascii: true,
+    color: false,
+};
+
+#[test]
+fn plane_screens() {
+    let mut app = solved("polymer-coating.toml");
+    insta::assert_snapshot!("plane_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("plane_120x40", screen(&app, 120, 40, PLAIN));
+    press(&mut app, KeyCode::Tab);
+    let cmds = press(&mut app, KeyCode::Tab);
+    settle(&mut app, cmds);
+    assert_eq!(app.ui.chart, Chart::Plane(PlaneChart::MuStar));
+    insta::assert_snapshot!("plane_mu_star_120x40", screen(&app, 120, 40, PLAIN));
+    insta::assert_snapshot!("plane_mu_star_ascii_80x24", screen(&app, 80, 24, ASCII));
+}
+
+#[test]
+fn spatial_screens() {
+    let mut app = solved("dispersion.toml");
+    insta::assert_snapshot!("spatial_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("spatial_120x40", screen(&app, 120, 40, PLAIN));
+    app.ui.chart = Chart::Spatial(SpatialChart::History);
+    insta::assert_snapshot!("spatial_history_120x40", screen(&app, 120, 40, PLAIN));
+    let lost = solved("contact-lost.toml");
+    insta::assert_snapshot!("spatial_contact_lost_80x24", screen(&lost, 80, 24, PLAIN));
+    let mut drift = solved("rubber-backward-drift.toml");
+    drift.ui.chart = Chart::Spatial(SpatialChart::Dispersion);
+    insta::assert_snapshot!("spatial_dispersion_120x40", screen(&drift, 120, 40, PLAIN));
+}
+
+#[test]
+fn many_harmonics_show_how_many_more_and_follow_the_selection() {
+    let mut app = app("dispersion.toml");
+    for _ in 0..5 {
+        press(&mut app, KeyCode::Char('+'));
+    }
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    let s = screen(&app, 80, 24, PLAIN);
+    // 80x24 with contact lost: room for two harmonics' rows under the header
+    assert!(s.contains("phi  +7 more"), "{s}");
+    assert!(s.contains("│  1 1.571 "), "{s}");
+    select(&mut app, "A", Some(8));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("phi  +7 more"), "{s}");
+    assert!(s.contains("│  8 ") && s.contains("│  9 "), "{s}");
+    insta::assert_snapshot!("spatial_nine_harmonics_80x24", s);
+}
+
+#[test]
+fn help_picker_choices_error_and_too_small() {
+    let mut app = solved("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('?'));
+    insta::assert_snapshot!("help_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("help_120x40", screen(&app, 120, 40, PLAIN));
+    press(&mut app, KeyCode::Esc);
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+        panic!()
+    };
+    update(&mut app, Msg::PresetsListed(entries));
+    insta::assert_snapshot!("picker_80x24", screen(&app, 80, 24, PLAIN));
+    press(&mut app, KeyCode::Esc);
+    select(&mut app, "model", None);
+    press(&mut app, KeyCode::Enter);
+    insta::assert_snapshot!("choices_80x24", screen(&app, 80, 24, PLAIN));
+    press(&mut app, KeyCode::Esc);
+    select(&mut app, "h", None);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "-3 mm");
+    press(&mut app, KeyCode::Enter);
+    insta::assert_snapshot!("error_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("too_small_60x20", screen(&app, 60, 20, PLAIN));
+}
+
+#[test]
+fn the_help_explains_every_status_symbol_of_both_problems() {
+    for file in ["polymer-coating.toml", "dispersion.toml"] {
+        let app = solved(file);
+        let help: String = help_lines(&app, PLAIN, 76)
+            .iter()
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let status = screen(&app, 120, 40, PLAIN);
+        for symbol in [
+            "a = ",
+            "b = ",
+            "theta",
+            "Q2",
+            "psi",
+            "mu*",
+            "I-J residual",
+            "kh",
+            "1/beta",
+            " c ",
+            "phi",
+            "p_min",
+            "(a+b)/h",
+        ] {
+            if status.contains(symbol) {
+                let name = symbol
+                    .trim()
+                    .trim_end_matches(" =")
+                    .trim_end_matches('=')
+                    .trim();
+                assert!(
+                    help.contains(&format!("  {name}"))
+                        || help.contains(&format!("{name},"))
+                        || help.contains(&format!(", {name}")),
+                    "{file}: {name} not in the help"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,290 @@
+//! `update(&mut App, Msg)`: the only place the model changes. A pure function: it never draws,
+//! never solves and never touches a file; it returns the commands the loop carries out, and the
+//! loop reports back with messages (`Answer`, `PresetsListed`, `Saved`, `Exported`, ...).
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use wearlab::engine::Answer;
+use wearlab::preset::{Problem, resolve_save_path};
+
+use crate::tui::actions::{act, apply, export, open, quit};
+use crate::tui::app::{App, Command, Mode, Msg};
+use crate::tui::keys::{self, Prompt, PromptAction};
+
+/// Changes the model for one message; returns what the loop must do.
+pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
+    match msg {
+        Msg::Key(key) => on_key(app, key),
+        Msg::Tick => tick(app),
+        Msg::Answer(answer) => on_answer(app, *answer),
+        Msg::PresetsListed(entries) => {
+            app.ui.mode = Mode::Picker {
+                entries,
+                selected: 0,
+            };
+            Vec::new()
+        }
+        Msg::SaveExists(target) => {
+            app.ui.mode = Mode::ConfirmOverwrite(target);
+            Vec::new()
+        }
+        Msg::Saved(target, preset, result) => {
+            match result {
+                Ok(()) => {
+                    // edits made while the file was written stay unsaved
+                    app.doc.dirty = app.doc.preset != *preset;
+                    app.say(format!("saved {}", target.path.display()));
+                    app.doc.path = Some(target.path);
+                }
+                Err(why) => app.complain(format!("not saved: {why}")),
+            }
+            Vec::new()
+        }
+        Msg::Exported(path, result) => {
+            match result {
+                Ok(()) => app.say(format!("exported the chart to {}", path.display())),
+                Err(why) => app.complain(format!("export failed: {}: {why}", path.display())),
+            }
+            Vec::new()
+        }
+    }
+}
+
+fn tick(app: &mut App) -> Vec<Command> {
+    if !app.ui.playing || app.doc.preset.problem != Problem::Spatial {
+        return Vec::new();
+    }
+    let sp = &mut app.doc.preset.spatial;
+    sp.time += sp.duration / 100.0;
+    if sp.time > sp.duration {
+        sp.time = 0.0;
+    }
+    // playing is not an edit to undo, but the time is saved with the preset
+    app.doc.dirty = true;
+    vec![app.request()]
+}
+
+fn on_answer(app: &mut App, answer: Answer) -> Vec<Command> {
+    // An answer older than the one on screen is dropped; a newer one is shown even when a still
+    // newer request is pending (playing time supersedes every request before its answer comes,
+    // and must still move the screen).
+    let newer = app.solve.shown.as_ref().is_none_or(|s| {
+        answer.generation > s.generation || (answer.generation == s.generation && !s.complete)
+    });
+    if newer {
+        app.solve.shown = Some(answer);
+    }
+    match app.ui.export_waiting {
+        Some(chart) if !app.solve.solving() => {
+            app.ui.export_waiting = None;
+            export(app, chart)
+        }
+        _ => Vec::new(),
+    }
+}
+
+fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
+    if keys::is_ctrl_c(&key) {
+        return match app.ui.mode {
+            Mode::ConfirmQuit => vec![Command::Quit],
+            _ => quit(app),
+        };
+    }
+    match app.ui.mode.clone() {
+        Mode::Normal => match keys::lookup(&key) {
+            Some((binding, action)) => match binding.only {
+                Some(problem) if problem != app.doc.preset.problem => {
+                    app.complain(format!(
+                        "{}: {} is for the {} problem (p switches)",
+                        binding.names,
+                        binding.help,
+                        problem.name()
+                    ));
+                    Vec::new()
+                }
+                _ => act(app, action),
+            },
+            None => Vec::new(),
+        },
+        Mode::Editing(buffer) => text_key(app, key, buffer, Mode::Editing, accept_value),
+        Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
+        Mode::Choosing(selected) => {
+            let choices = app.row().choices().unwrap_or_default();
+            match keys::prompt_action(Prompt::List, &key) {
+                Some(PromptAction::Accept) => {
+                    app.ui.mode = Mode::Normal;
+                    let row = app.row();
+                    match crate::tui::form::set(&app.doc.preset, &row, selected as f64) {
+                        Ok((next, change)) => apply(app, next, change),
+                        Err(why) => {
+                            app.complain(format!("{}: {why}", row.name()));
+                            Vec::new()
+                        }
+                    }
+                }
+                Some(PromptAction::Cancel) => {
+                    app.ui.mode = Mode::Normal;
+                    app.say("choice cancelled");
+                    Vec::new()
+                }
+                action => {
+                    app.ui.mode = Mode::Choosing(moved(selected, choices.len(), action));
+                    Vec::new()
+                }
+            }
+        }
+        Mode::Help(scroll) => {
+            app.ui.mode = match keys::prompt_action(Prompt::Help, &key) {
+                Some(PromptAction::Up) => Mode::Help(scroll.saturating_sub(1)),
+                Some(PromptAction::Down) => Mode::Help(scroll.saturating_add(1)),
+                Some(PromptAction::PageUp) => Mode::Help(scroll.saturating_sub(10)),
+                Some(PromptAction::PageDown) => Mode::Help(scroll.saturating_add(10)),
+                _ => Mode::Normal,
+            };
+            Vec::new()
+        }
+        Mode::Picker { entries, selected } => match keys::prompt_action(Prompt::List, &key) {
+            Some(PromptAction::Accept) => {
+                app.ui.mode = Mode::Normal;
+                let Some(entry) = entries.get(selected).cloned() else {
+                    return Vec::new();
+                };
+                match &entry.preset {
+                    Err(why) => {
+                        // a broken file: say why, keep the current state
+                        app.complain(why.clone());
+                        Vec::new()
+                    }
+                    Ok(_) if app.doc.dirty => {
+                        app.ui.mode = Mode::ConfirmOpen(Box::new(entry));
+                        Vec::new()
+                    }
+                    Ok(_) => open(app, entry),
+                }
+            }
+            Some(PromptAction::Cancel) => {
+                app.ui.mode = Mode::Normal;
+                Vec::new()
+            }
+            action => {
+                let selected = moved(selected, entries.len(), action);
+                app.ui.mode = Mode::Picker { entries, selected };
+                Vec::new()
+            }
+        },
+        Mode::ConfirmOverwrite(target) => {
+            app.ui.mode = Mode::Normal;
+            if yes(&key) {
+                let preset = Box::new(app.doc.preset.clone());
+                vec![Command::Save {
+                    target,
+                    preset,
+                    overwrite: true,
+                }]
+            } else {
+                app.say("not saved");
+                Vec::new()
+            }
+        }
+        Mode::ConfirmOpen(entry) => {
+            app.ui.mode = Mode::Normal;
+            if yes(&key) {
+                open(app, *entry)
+            } else {
+                app.say("not opened: your edits stay");
+                Vec::new()
+            }
+        }
+        Mode::ConfirmQuit => {
+            if yes(&key) {
+                return vec![Command::Quit];
+            }
+            app.ui.mode = Mode::Normal;
+            app.say("still here");
+            Vec::new()
+        }
+    }
+}
+
+fn yes(key: &KeyEvent) -> bool {
+    keys::prompt_action(Prompt::Question, key) == Some(PromptAction::Yes)
+}
+
+fn moved(selected: usize, len: usize, action: Option<PromptAction>) -> usize {
+    match action {
+        Some(PromptAction::Up) => selected.saturating_sub(1),
+        Some(PromptAction::Down) => (selected + 1).min(len.saturating_sub(1)),
+        _ => selected,
+    }
+}
+
+/// A key in a text prompt: Enter hands the text to `accept`, Esc cancels, Backspace deletes;
+/// printable characters are typed (never Ctrl- or Alt- chords).
+fn text_key(
+    app: &mut App,
+    key: KeyEvent,
+    mut buffer: String,
+    mode: fn(String) -> Mode,
+    accept: fn(&mut App, String) -> Vec<Command>,
+) -> Vec<Command> {
+    match keys::prompt_action(Prompt::Text, &key) {
+        Some(PromptAction::Accept) => accept(app, buffer),
+        Some(PromptAction::Cancel) => {
+            let what = match app.ui.mode {
+                Mode::SaveAs(_) => "not saved",
+                _ => "edit cancelled",
+            };
+            app.ui.mode = Mode::Normal;
+            app.say(what);
+            Vec::new()
+        }
+        Some(PromptAction::Backspace) => {
+            buffer.pop();
+            app.ui.mode = mode(buffer);
+            Vec::new()
+        }
+        _ => {
+            let chord = key
+                .modifiers
+                .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT);
+            if let (KeyCode::Char(c), false) = (key.code, chord) {
+                buffer.push(c);
+                app.ui.mode = mode(buffer);
+            }
+            Vec::new()
+        }
+    }
+}
+
+fn accept_value(app: &mut App, buffer: String) -> Vec<Command> {
+    let row = app.row();
+    match crate::tui::form::set_text(&app.doc.preset, &row, &buffer) {
+        Ok((next, change)) => {
+            app.ui.mode = Mode::Normal;
+            app.ui.message = None;
+            apply(app, next, change)
+        }
+        Err(why) => {
+            // the field keeps the last valid value; the text stays for correction
+            app.complain(format!("{}: {why}", row.name()));
+            Vec::new()
+        }
+    }
+}
+
+fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
+    let places = &app.places;
+    match resolve_save_path(&buffer, places.home.as_deref(), places.presets.as_deref()) {
+        Ok(target) => {
+            app.ui.mode = Mode::Normal;
+            vec![Command::Save {
+                target,
+                preset: Box::new(app.doc.preset.clone()),
+                overwrite: false,
+            }]
+        }
+        Err(why) => {
+            app.complain(why);
+            Vec::new()
+        }
+    }
+}

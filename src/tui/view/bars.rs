@@ -1,0 +1,66 @@
+//! The two lines under the panels: the message (or the prompt being answered) and the keys.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::widgets::Paragraph;
+
+use crate::tui::app::{App, Mode};
+use crate::tui::keys::{self, Prompt};
+use crate::tui::view::theme::RenderOptions;
+
+/// The prompt whose keys apply in a mode (None on the main screen).
+pub fn prompt(mode: &Mode) -> Option<Prompt> {
+    match mode {
+        Mode::Normal => None,
+        Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
+        Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
+        Mode::Help(_) => Some(Prompt::Help),
+        Mode::ConfirmOverwrite(_) | Mode::ConfirmOpen(_) | Mode::ConfirmQuit => {
+            Some(Prompt::Question)
+        }
+    }
+}
+
+/// Draws the message line: a question being asked, the file name being typed, the last
+/// message, or the preset's name.
+pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let (text, st) = match &app.ui.mode {
+        Mode::SaveAs(buffer) => (
+            format!("save as (a name, or a path such as ~/lab.toml): {buffer}_"),
+            Style::default(),
+        ),
+        Mode::ConfirmOverwrite(target) => (
+            format!("{} exists: overwrite? y/n", target.path.display()),
+            style.error(),
+        ),
+        Mode::ConfirmOpen(entry) => (
+            format!("unsaved edits: open \"{}\" anyway? y/n", entry.title),
+            style.error(),
+        ),
+        Mode::ConfirmQuit => ("unsaved edits: quit anyway? y/n".into(), style.error()),
+        _ => match &app.ui.message {
+            Some(m) if m.error => (m.text.clone(), style.error()),
+            Some(m) => (m.text.clone(), Style::default()),
+            None => {
+                let doc = &app.doc;
+                let name = doc
+                    .path
+                    .as_ref()
+                    .map_or(doc.preset.name.clone(), |p| p.display().to_string());
+                let edited = if doc.dirty { " (edited)" } else { "" };
+                (format!("{name}{edited}"), Style::default())
+            }
+        },
+    };
+    frame.render_widget(Paragraph::new(text).style(st), area);
+}
+
+/// Draws the keys of the main screen or of the prompt being answered.
+pub fn draw_footer(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let text = match prompt(&app.ui.mode) {
+        None => keys::footer(app.doc.preset.problem, area.width as usize),
+        Some(p) => keys::prompt_footer(p),
+    };
+    frame.render_widget(Paragraph::new(text).style(style.footer()), area);
+}

@@ -1,0 +1,59 @@
+//! The form panel: the parameters grouped under headings, the selected row highlighted (showing
+//! the text being typed), scrolled to keep the selection visible.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Paragraph};
+use wearlab::preset::Problem;
+
+use crate::tui::app::{App, Mode};
+use crate::tui::form;
+use crate::tui::view::theme::RenderOptions;
+
+/// Columns of the label.
+const LABEL: usize = 9;
+
+/// Draws the form into `area`.
+pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let title = match app.doc.preset.problem {
+        Problem::Plane => " plane: punch on a strip ",
+        Problem::Spatial => " spatial: wavy punch ",
+    };
+    let block = Block::default().borders(Borders::ALL).title(title);
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let width = (inner.width as usize).saturating_sub(LABEL + 2);
+    let mut lines: Vec<Line> = Vec::new();
+    let mut selected_line = 0;
+    let mut heading = String::new();
+    for (i, row) in app.rows().iter().enumerate() {
+        if row.heading() != heading {
+            heading = row.heading();
+            lines.push(Line::styled(heading.clone(), style.heading()));
+        }
+        let selected = i == app.ui.selected;
+        let value = match (&app.ui.mode, selected) {
+            (Mode::Editing(buffer), true) => tail(&format!("{buffer}_"), width),
+            _ => form::show(&app.doc.preset, row),
+        };
+        let text = format!("  {:<LABEL$}{value:>width$}", row.param.label);
+        if selected {
+            selected_line = lines.len();
+            lines.push(Line::from(Span::styled(text, style.selected())));
+        } else {
+            lines.push(Line::from(text));
+        }
+    }
+    let height = inner.height as usize;
+    let offset = selected_line
+        .saturating_sub(height.saturating_sub(2))
+        .min(lines.len().saturating_sub(height));
+    frame.render_widget(Paragraph::new(lines).scroll((offset as u16, 0)), inner);
+}
+
+/// The last `width` characters of a text (what is being typed stays visible at its end).
+fn tail(text: &str, width: usize) -> String {
+    let n = text.chars().count();
+    text.chars().skip(n.saturating_sub(width)).collect()
+}

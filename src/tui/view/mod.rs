@@ -1,0 +1,181 @@
+//! Drawing: a pure function of the App (no solving, no I/O). Everything drawn from a result is
+//! labelled by the inputs that result carries: while a newer request is solving, the previous
+//! result stays visible, dimmed, and says whose it is.
+
+pub mod bars;
+pub mod chart;
+pub mod form;
+pub mod heatmap;
+pub mod layout;
+pub mod popups;
+pub mod status;
+pub mod theme;
+
+use ratatui::Frame;
+use ratatui::layout::{Alignment, Constraint, Layout, Rect};
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
+use wearlab::engine::Answer;
+use wearlab::preset::{Preset, Problem};
+
+use crate::tui::app::{App, Mode};
+use crate::tui::charts::{Figure, NoFigure};
+pub use layout::MIN_SIZE;
+pub use theme::RenderOptions;
+
+/// How the shown result relates to the form.
+#[derive(Clone, Debug)]
+pub enum Shown<'a> {
+    /// Nothing has arrived yet, or only a result of the other problem.
+    Nothing,
+    /// The result of the form's inputs; `solving` while more of it (or a newer one) is coming.
+    Current(&'a Answer, bool),
+    /// A result of other inputs, named by `label`, while the form's are solving.
+    Previous(&'a Answer, String),
+}
+
+impl<'a> Shown<'a> {
+    /// The answer to draw, and whether to dim it (it answers other inputs than the form's).
+    pub fn answer(&self) -> Option<(&'a Answer, bool)> {
+        match self {
+            Shown::Nothing => None,
+            Shown::Current(a, _) => Some((*a, false)),
+            Shown::Previous(a, _) => Some((*a, true)),
+        }
+    }
+}
+
+/// What the screen shows of the newest answer, compared with the form's preset.
+pub fn shown(app: &App) -> Shown<'_> {
+    let Some(answer) = &app.solve.shown else {
+        return Shown::Nothing;
+    };
+    let theirs = &answer.request.preset;
+    let ours = &app.doc.preset;
+    if theirs.problem != ours.problem {
+        return Shown::Nothing;
+    }
+    // while time plays, each frame is a new request: a result a few frames old is labelled
+    // by the t it shows, not dimmed
+    let same = |a: &Preset, b: &Preset| {
+        let mut a = a.clone();
+        if app.ui.playing {
+            a.spatial.time = b.spatial.time;
+        }
+        a == *b
+    };
+    if same(theirs, ours) {
+        return Shown::Current(answer, app.solve.solving());
+    }
+    let label = if theirs.name != ours.name {
+        format!("\"{}\"", theirs.name)
+    } else if ours.problem == Problem::Plane && theirs.plane.model != ours.plane.model {
+        format!("{} model", theirs.plane.model.name())
+    } else {
+        "previous inputs".to_string()
+    };
+    Shown::Previous(answer, label)
+}
+
+/// Draws the whole screen.
+pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
+    let area = frame.area();
+    let Some(areas) = layout::areas(area) else {
+        too_small(frame, area);
+        return;
+    };
+    let shown = shown(app);
+    form::draw(app, style, frame, areas.form);
+    draw_chart(app, &shown, style, frame, areas.chart);
+    status::draw(app, &shown, style, frame, areas.status);
+    bars::draw_message(app, style, frame, areas.message);
+    bars::draw_footer(app, style, frame, areas.footer);
+    match &app.ui.mode {
+        Mode::Help(scroll) => popups::help(app, *scroll, style, frame, area),
+        Mode::Picker { entries, selected } => {
+            popups::picker(entries, *selected, style, frame, area)
+        }
+        Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
+        _ => {}
+    }
+}
+
+fn too_small(frame: &mut Frame, area: Rect) {
+    let text = vec![
+        Line::from("terminal too small"),
+        Line::from(format!(
+            "{}x{}: wearlab needs at least {}x{}",
+            area.width, area.height, MIN_SIZE.0, MIN_SIZE.1
+        )),
+        Line::from("enlarge the window, or q to quit"),
+    ];
+    let rect = Rect {
+        x: 0,
+        y: (area.height / 2).saturating_sub(1),
+        width: area.width,
+        height: 3.min(area.height),
+    };
+    frame.render_widget(Paragraph::new(text).alignment(Alignment::Center), rect);
+}
+
+/// Wraps `text` into lines of at most `width` columns at spaces.
+pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// The note a title carries about the result under it ("" for the current, complete one).
+pub fn note(shown: &Shown) -> String {
+    match shown {
+        Shown::Nothing | Shown::Current(_, true) => "  solving…".into(),
+        Shown::Current(_, false) => String::new(),
+        Shown::Previous(_, label) => format!("  [{label}] solving…"),
+    }
+}
+
+fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let chart = app.ui.chart;
+    let (i, n) = chart.position();
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .title(format!(" {i}/{n} {}{} ", chart.title(), note(shown)))
+        .title_bottom(Line::from(" Tab: next chart ").right_aligned());
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let Some((answer, dim)) = shown.answer() else {
+        return;
+    };
+    match chart.build(answer) {
+        Err(NoFigure::Solving) => {}
+        Err(NoFigure::Error(why)) => frame.render_widget(
+            Paragraph::new(why)
+                .wrap(Wrap { trim: true })
+                .style(style.error()),
+            inner,
+        ),
+        Ok(Figure::Map(map)) => heatmap::draw(&map, style, frame.buffer_mut(), inner),
+        Ok(Figure::Plots(plots)) => {
+            let n = plots.len().max(1) as u32;
+            let parts = Layout::vertical(vec![Constraint::Ratio(1, n); plots.len()]).split(inner);
+            for (plot, part) in plots.iter().zip(parts.iter()) {
+                chart::draw(plot, style, frame, *part);
+            }
+        }
+    }
+    if dim {
+        frame.buffer_mut().set_style(inner, style.stale());
+    }
+}

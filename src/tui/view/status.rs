@@ -1,0 +1,208 @@
+//! The status panel: the operating point of the shown result, read from that result and its
+//! inputs (never from the form). Values are packed into lines whole, never broken across lines;
+//! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
+use wearlab::engine::{Output, SpatialOutput};
+use wearlab::physics::plane::OperatingPoint;
+use wearlab::units::format_si;
+
+use crate::tui::app::App;
+use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::{Shown, note, wrap};
+
+/// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item;
+/// continuation lines start with `indent`.
+pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for item in items {
+        let len = line.chars().count();
+        if !line.is_empty() && len + 2 + item.chars().count() > width {
+            lines.push(std::mem::replace(&mut line, indent.to_string()));
+        } else if !line.is_empty() && line != indent {
+            line.push_str("  ");
+        }
+        line.push_str(item);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// Draws the status of the shown result into `area`.
+pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .title(format!(" operating point{} ", note(shown)));
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let Some((answer, dim)) = shown.answer() else {
+        return;
+    };
+    let width = inner.width as usize;
+    let lines = match &answer.output {
+        Output::Plane(out) => match &out.point {
+            Ok(p) => plane(p, style, width),
+            Err(e) => vec![Line::styled(e.to_string(), style.error())],
+        },
+        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
+        Output::Spatial(Ok(out)) => {
+            let selected = app.row().harmonic;
+            spatial(out, selected, style, width, inner.height as usize)
+        }
+    };
+    frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
+    if dim {
+        frame.buffer_mut().set_style(inner, style.stale());
+    }
+}
+
+/// A sentence wrapped to the panel, in one style.
+fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
+    wrap(text, width)
+        .into_iter()
+        .map(|l| Line::styled(l, style))
+        .collect()
+}
+
+fn plane(p: &OperatingPoint, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
+    let s = &p.solution;
+    let mut items = vec![
+        format!("a = {}", format_si(s.a, "m")),
+        format!("b = {}", format_si(s.b, "m")),
+    ];
+    // theta exists only for the models that have it: never a placeholder under another's label
+    items.extend(s.theta.map(|t| format!("theta = {t:.4}")));
+    items.extend([
+        format!("Q2 = {}", format_si(s.normal_force, "N/m")),
+        format!("psi = {}", format_si(s.psi, "N/m")),
+        format!(
+            "mu* = {:.6} (mu {})",
+            s.mu_star, s.inputs.friction.coefficient
+        ),
+        format!("I-J residual {:.1e}", p.energy.residual),
+    ]);
+    let mut lines: Vec<Line> = pack(&items, width, "")
+        .into_iter()
+        .map(Line::from)
+        .collect();
+    if p.validity.ok {
+        let verdict = format!(
+            "valid: (a+b)/h = {:.3}; {} model holds",
+            p.validity.contact_width_over_thickness,
+            s.model.name()
+        );
+        lines.extend(prose(&verdict, width, style.ok()));
+    }
+    for w in &p.validity.warnings {
+        lines.extend(prose(&format!("! {w}"), width, style.error()));
+    }
+    lines
+}
+
+fn spatial(
+    out: &SpatialOutput,
+    selected: Option<usize>,
+    style: RenderOptions,
+    width: usize,
+    height: usize,
+) -> Vec<Line<'static>> {
+    let st = &out.state;
+    let s = &st.solution;
+    let items = [
+        format!("t = {}", format_si(s.time, "s")),
+        format!(
+            "mu* = {:.6} (mu {})",
+            s.mu_star, s.inputs.friction.coefficient
+        ),
+        format!("psi = {}", format_si(s.psi, "Pa")),
+    ];
+    let mut lines: Vec<Line> = pack(&items, width, "")
+        .into_iter()
+        .map(Line::from)
+        .collect();
+    let c = &st.contact;
+    let kind = if c.exact { "certified" } else { "bound" };
+    let p_min = format!("p_min = {} ({kind})", format_si(c.min_pressure, "Pa"));
+    let (items, verdict) = if c.complete {
+        (vec![format!("complete contact, {p_min}")], style.ok())
+    } else {
+        let mut items = vec![format!("contact lost: {p_min}")];
+        items.extend(
+            c.complete_after
+                .map(|t| format!("complete after t = {}", format_si(t, "s"))),
+        );
+        (items, style.error())
+    };
+    lines.extend(
+        pack(&items, width, "")
+            .into_iter()
+            .map(|l| Line::styled(l, verdict)),
+    );
+    // one row per harmonic under a header: n, kh (k for a half-space), 1/beta, c, phi
+    let h = s.inputs.material.thickness;
+    let k_label = if h.is_finite() { "kh" } else { "k [rad/m]" };
+    let header = format!(
+        "{:>3} {k_label:<8}{:<10}{:<12}{}",
+        "n", "1/beta", "c", "phi"
+    );
+    let blocks: Vec<Vec<String>> = s
+        .harmonics
+        .iter()
+        .enumerate()
+        .map(|(n, hs)| {
+            let e = &hs.evolution;
+            let k = hs.initial.wavenumber();
+            let kh = format_si(if h.is_finite() { k * h } else { k }, "");
+            let decay = if e.decay_rate > 0.0 {
+                format_si(1.0 / e.decay_rate, "s")
+            } else {
+                "inf".into()
+            };
+            let c = format_si(e.drift_velocity, "m/s");
+            vec![format!(
+                "{:>3} {kh:<8}{decay:<10}{c:<12}{:+.2}",
+                n + 1,
+                e.phase_lead
+            )]
+        })
+        .collect();
+    // the header says how many rows do not fit
+    let room = height.saturating_sub(lines.len() + 1);
+    let (first, count) = visible(&blocks, selected, room);
+    let hidden = blocks.len() - count;
+    let more = if hidden > 0 {
+        format!("  +{hidden} more")
+    } else {
+        String::new()
+    };
+    lines.push(Line::styled(format!("{header}{more}"), style.heading()));
+    for block in &blocks[first..first + count] {
+        lines.extend(block.iter().cloned().map(Line::from));
+    }
+    lines
+}
+
+/// Which harmonic blocks fit in `room` lines: (first, count), keeping the selected one in view.
+pub fn visible(blocks: &[Vec<String>], selected: Option<usize>, room: usize) -> (usize, usize) {
+    let fits_from = |first: usize| {
+        let mut used = 0;
+        blocks[first..]
+            .iter()
+            .take_while(|b| {
+                used += b.len();
+                used <= room
+            })
+            .count()
+    };
+    let want = selected.unwrap_or(0).min(blocks.len().saturating_sub(1));
+    let first = (0..=want)
+        .find(|&f| f + fits_from(f) > want)
+        .unwrap_or(want);
+    (first, fits_from(first))
+}
