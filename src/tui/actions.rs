@@ -8,8 +8,8 @@ use crate::tui::charts::{Chart, NoFigure, export as csv};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
 
-/// The most harmonics `+` makes.
-pub const MAX_HARMONICS: usize = 64;
+/// The most harmonics a punch has (`limits::HARMONICS`).
+pub const MAX_HARMONICS: usize = wearlab::physics::limits::HARMONICS.max as usize;
 
 /// Carries out an action of the main screen.
 pub fn act(app: &mut App, action: Action) -> Vec<Command> {
@@ -207,8 +207,8 @@ pub fn export(app: &mut App, chart: Chart) -> Vec<Command> {
     }
 }
 
-/// Adds a harmonic at the first free multiple (2x, 3x, ...) of the last one's wave vector with
-/// half its amplitude, or says why it cannot.
+/// Adds a harmonic at the first free multiple (2x, 3x, ...) of the first harmonic's wave vector
+/// (the fundamental), with half the last one's amplitude, or says why it cannot.
 fn add_harmonic(app: &mut App) -> Vec<Command> {
     let harmonics = &app.doc.preset.spatial.harmonics;
     let n = harmonics.len();
@@ -218,14 +218,15 @@ fn add_harmonic(app: &mut App) -> Vec<Command> {
         ));
         return Vec::new();
     }
-    let last = harmonics[n - 1];
-    // at most 64 wave vectors are taken, so one of 65 multiples is free unless out of range
-    let added = (2..=MAX_HARMONICS as u32 + 2).find_map(|m| {
+    let (first, last) = (harmonics[0], harmonics[n - 1]);
+    // fewer than MAX_HARMONICS wave vectors are taken, so one of MAX_HARMONICS multiples is
+    // free unless out of range
+    let added = (2..=MAX_HARMONICS as u32 + 1).find_map(|m| {
         let mut next = app.doc.preset.clone();
         next.spatial.harmonics.push(Harmonic {
             amplitude: last.amplitude / 2.0,
-            wavenumber_x: last.wavenumber_x * m as f64,
-            wavenumber_y: last.wavenumber_y * m as f64,
+            wavenumber_x: first.wavenumber_x * m as f64,
+            wavenumber_y: first.wavenumber_y * m as f64,
             ..last
         });
         form::consistent(&next).ok().map(|()| next)
@@ -243,7 +244,7 @@ fn add_harmonic(app: &mut App) -> Vec<Command> {
         }
         None => {
             app.complain(
-                "cannot add a harmonic: every multiple of the last wave vector up to 66x is taken or out of range; edit wx, wy instead",
+                "cannot add a harmonic: every multiple of the first wave vector up to 65x is taken or out of range; edit wx, wy instead",
             );
             Vec::new()
         }

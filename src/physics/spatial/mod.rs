@@ -221,6 +221,22 @@ impl SpatialSolution {
             .sum()
     }
 
+    /// Punch wear W(x, y, t) = g(x, y, 0) - g(x, y, t) [m]: the mean wear k_w pbar t plus the
+    /// change of the oscillating part.
+    pub fn wear(&self, x: f64, y: f64) -> f64 {
+        let initial: f64 = self
+            .harmonics
+            .iter()
+            .map(|h| {
+                let w = &h.initial;
+                w.amplitude
+                    * (w.wavenumber_x * x + w.phase_x).sin()
+                    * (w.wavenumber_y * y + w.phase_y).sin()
+            })
+            .sum();
+        self.mean_wear() + initial - self.shape(x, y)
+    }
+
     /// Mean wear depth k_w pbar t [m] (gbar(0) - gbar(t), section 3).
     pub fn mean_wear(&self) -> f64 {
         self.inputs.wear_rate() * self.inputs.mean_pressure * self.time

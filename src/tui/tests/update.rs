@@ -66,7 +66,7 @@ fn enter_types_a_value_with_units_and_refuses_garbage_keeping_the_text() {
     select(&mut app, "E", None);
     press(&mut app, KeyCode::Enter);
     assert_eq!(app.ui.mode, Mode::Editing(String::new()));
-    assert_eq!(message(&app), "type E (0 < E < inf (Pa))");
+    assert_eq!(message(&app), "type E (1e2 <= E <= 1e13 (Pa))");
     type_text(&mut app, "7 GPa");
     assert_eq!(press(&mut app, KeyCode::Enter).len(), 1);
     assert_eq!(app.doc.preset.material.youngs_modulus, 7e9);
@@ -253,7 +253,17 @@ fn plus_on_a_wave_across_the_sliding_line_makes_a_new_harmonic_up_to_the_cap() {
     let h = &mut app.doc.preset.spatial.harmonics[0];
     (h.wavenumber_x, h.wavenumber_y) = (0.0, 1000.0);
     for n in 2..=MAX_HARMONICS {
-        assert_eq!(press(&mut app, KeyCode::Char('+')).len(), 1);
+        assert_eq!(
+            press(&mut app, KeyCode::Char('+')).len(),
+            1,
+            "{}",
+            message(&app)
+        );
+        let added = app.doc.preset.spatial.harmonics[n - 1];
+        assert_eq!(
+            (added.wavenumber_x, added.wavenumber_y),
+            (0.0, 1000.0 * n as f64)
+        );
         assert_eq!(app.doc.preset.spatial.harmonics.len(), n);
     }
     assert!(press(&mut app, KeyCode::Char('+')).is_empty());
