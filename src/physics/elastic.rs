@@ -54,15 +54,37 @@ pub fn strip_transfer(nu: f64, x: f64) -> StripTransfer {
     let e = (-2.0 * x).exp();
     let e2 = e * e;
     let sech = 2.0 * e / (1.0 + e2); // 1 / ch 2X
-    let th = (1.0 - e2) / (1.0 + e2); // th 2X
+    // the differences from 1 come from expm1, so they keep full precision down to X = 1e-300
+    let th = -(-4.0 * x).exp_m1() / (1.0 + e2); // th 2X = (1 - e^2)/(1 + e^2)
+    let one_minus_sech = (-2.0 * x).exp_m1().powi(2) / (1.0 + e2); // (1 - e)^2/(1 + e^2)
     let x2 = x * x;
     let d = 2.0 * kap + (4.0 * x2 + 1.0 + kap * kap) * sech; // D / ch 2X
+    // K2 D/ch 2X = 2 kappa th - 4X sech = 2 (kappa - 1) th + 2 (sh 2X - 2X)/ch 2X: both terms
+    // positive, so K2 keeps its digits as kappa -> 1 (nu -> 1/2), where it is O(X^3)
+    let kappa_minus_1 = 2.0 - 4.0 * nu;
     StripTransfer {
         k1: (2.0 * kap * th + 4.0 * x * sech) / d,
-        k2: (2.0 * kap * th - 4.0 * x * sech) / d,
-        chi_k12: (2.0 * kap * chi * (1.0 - sech) - 8.0 * x2 * sech / (kap + 1.0)) / d,
+        k2: (2.0 * kappa_minus_1 * th + 2.0 * sinh_excess(2.0 * x) * sech) / d,
+        chi_k12: (2.0 * kap * chi * one_minus_sech - 8.0 * x2 * sech / (kap + 1.0)) / d,
         chi_l12: -(4.0 * x2 + kap * kap - 1.0) * sech / d,
     }
+}
+
+/// sh y - y for 0 <= y <= 2 X_HALF_PLANE: the series sum y^(2n+1)/(2n+1)!, n >= 1, below y = 2
+/// (its terms shrink by y^2/((2n+2)(2n+3)) <= 1/5, 24 terms reach 1e-17), else directly.
+fn sinh_excess(y: f64) -> f64 {
+    if y >= 2.0 {
+        return y.sinh() - y;
+    }
+    let y2 = y * y;
+    let mut term = y * y2 / 6.0;
+    let mut sum = 0.0;
+    for n in 1..=24 {
+        sum += term;
+        let k = 2.0 * n as f64;
+        term *= y2 / ((k + 2.0) * (k + 3.0));
+    }
+    sum
 }
 
 /// chi c12(nu) = chi * integral_0^inf L12(X) dX (dimensionless, negative), the constant of the
@@ -121,6 +143,84 @@ mod tests {
             assert!((t.k2 - k2).abs() < 1e-14);
             assert!((t.chi_k12 - chi(nu) * k12).abs() < 1e-14);
             assert!((t.chi_l12 - chi(nu) * (k12 - 1.0)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn accurate_for_thin_layers_and_nearly_incompressible_ones() {
+        // (nu, X, K1, K2, chi K12): the hyperbolic form (3.2) in 50-digit arithmetic (mpmath,
+        // mp.dps = 50: D = 2 kappa ch 2X + 4X^2 + 1 + kappa^2, K1 = (2 kappa sh 2X + 4X)/D,
+        // K2 = (2 kappa sh 2X - 4X)/D, chi K12 = (2 kappa chi (ch 2X - 1) - 8X^2/(kappa+1))/D).
+        let table = [
+            (0.0, 1e-12, 1e-12, 5e-13, 2.5e-25),
+            (0.0, 1e-06, 9.999999999995e-07, 5e-07, 2.49999999999875e-13),
+            (
+                0.0,
+                0.7,
+                0.5721128265187293,
+                0.3469001987839227,
+                0.09944325495737967,
+            ),
+            (
+                0.3,
+                1e-12,
+                1.4285714285714285e-12,
+                4.0816326530612245e-13,
+                -1.0204081632653058e-25,
+            ),
+            (
+                0.3,
+                1e-06,
+                1.42857142857e-06,
+                4.081632653061516e-07,
+                -1.0204081632629734e-13,
+            ),
+            (
+                0.3,
+                3.0,
+                0.9631415408637378,
+                0.9318269663800443,
+                0.23581973037026735,
+            ),
+            (
+                0.49999999999999994,
+                1e-12,
+                1.9999999999999996e-12,
+                2.220446055916979e-28,
+                -9.999999999999996e-25,
+            ),
+            (
+                0.49999999999999994,
+                1e-06,
+                1.9999999999966664e-06,
+                6.668887112703911e-19,
+                -9.999999999979995e-13,
+            ),
+            (
+                0.49999999999999994,
+                0.7,
+                0.7998989878675368,
+                0.12208034297534824,
+                -0.2372365257122659,
+            ),
+            (
+                0.49999999999999994,
+                3.0,
+                0.9410894534677973,
+                0.8867208540753091,
+                -0.08155289908873216,
+            ),
+        ];
+        let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+        for (nu, x, k1, k2, chi_k12) in table {
+            let t = strip_transfer(nu, x);
+            assert!(rel(t.k1, k1) < 1e-14, "K1 at nu={nu}, X={x}: {}", t.k1);
+            assert!(rel(t.k2, k2) < 1e-13, "K2 at nu={nu}, X={x}: {}", t.k2);
+            assert!(
+                rel(t.chi_k12, chi_k12) < 1e-13,
+                "chi K12 at nu={nu}, X={x}: {}",
+                t.chi_k12
+            );
         }
     }
 

@@ -135,6 +135,17 @@ impl SweepRange {
         self.spacing.points(self.min, self.max, self.points)
     }
 
+    /// Ok when both ends are within `limit` (so max/min stays finite), min < max and the number
+    /// of points is allowed; the error names the first fault.
+    pub fn check(&self, names: [&str; 2], limit: &limits::Limit) -> Result<(), String> {
+        limits::check_all(&[
+            (limit, names[0], self.min),
+            (limit, names[1], self.max),
+            (&limits::SWEEP_POINTS, "points", self.points as f64),
+        ])?;
+        self.check_order(names, limits::show)
+    }
+
     /// The one rule between the two ends: min < max. `names` are what the caller calls the ends
     /// (e.g. `["load_min", "load_max"]`), `show` how it writes a value; the error says which end
     /// must move.

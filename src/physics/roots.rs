@@ -33,13 +33,26 @@ pub fn brent(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> Option<f64> {
     brent_to(lo, hi, 1e-15, f)
 }
 
-/// As `brent`, to relative accuracy `rtol`.
+/// As `brent`, to relative accuracy `rtol`. The `roots` crate evaluates f again at an end it
+/// already knows once per iteration; the last few values are remembered, so each new point costs
+/// one evaluation.
 pub fn brent_to(lo: f64, hi: f64, rtol: f64, f: impl Fn(f64) -> f64) -> Option<f64> {
     let mut conv = Relative {
         rtol,
         max_iter: BRENT_ITERATIONS,
     };
-    find_root_brent(lo, hi, &f, &mut conv).ok()
+    let mut seen = [(f64::NAN, f64::NAN); 4];
+    let mut next = 0;
+    let remembered = |x: f64| {
+        if let Some(&(_, y)) = seen.iter().find(|(sx, _)| *sx == x) {
+            return y;
+        }
+        let y = f(x);
+        seen[next] = (x, y);
+        next = (next + 1) % seen.len();
+        y
+    };
+    find_root_brent(lo, hi, remembered, &mut conv).ok()
 }
 
 /// Why a search for a sign change of an increasing f failed.
@@ -234,5 +247,30 @@ mod tests {
             Ok((1.0, 8.0))
         );
         assert_eq!(march_up(1.0, 2.0, 100.0, |x| x - 5.0), Ok((4.0, 8.0)));
+    }
+
+    #[test]
+    fn brent_evaluates_each_point_once() {
+        let calls = std::cell::Cell::new(0);
+        let root = brent(0.0, 3.0, |x| {
+            calls.set(calls.get() + 1);
+            x * x * x - 2.0
+        })
+        .unwrap();
+        assert!((root - 2f64.cbrt()).abs() < 1e-15);
+        let points = std::cell::RefCell::new(Vec::new());
+        let distinct = brent(0.0, 3.0, |x| {
+            let mut points = points.borrow_mut();
+            if !points.contains(&x.to_bits()) {
+                points.push(x.to_bits());
+            }
+            x * x * x - 2.0
+        });
+        assert_eq!(distinct, Some(root));
+        assert_eq!(
+            calls.get(),
+            points.borrow().len(),
+            "one evaluation per distinct point"
+        );
     }
 }

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
-use crate::physics::{SweepRange, checks};
+use crate::physics::{SweepRange, checks, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -22,7 +22,14 @@ pub struct Sweep {
 }
 
 /// Solves the model at every load of the sweep (loads P [N/m]) (the inputs' own load is ignored).
+/// A range outside `limits::LINE_LOAD` gives an empty sweep.
 pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
+    if loads
+        .check(["load_min", "load_max"], &limits::LINE_LOAD)
+        .is_err()
+    {
+        return gather(Vec::new(), &[]);
+    }
     let valid = inputs.validate().is_ok();
     if model == Model::Strip {
         return by_contact_width(inputs, loads, valid);

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, evolution};
 use crate::physics::spatial::{SpatialInputs, solve_with};
-use crate::physics::{Spacing, SweepRange};
+use crate::physics::{Spacing, SweepRange, limits};
 
 /// Values at evenly spaced times over [0, duration].
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -42,20 +42,20 @@ pub fn history(
     }
 }
 
-/// mu* against pbar at one time; None where contact is not complete.
+/// mu* against pbar at one time; None where contact is not complete or P <= 0.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MeanPressureSweep {
     /// pbar [Pa].
     pub mean_pressure: Vec<f64>,
     /// P = pbar - mu psi [Pa].
     pub load: Vec<f64>,
-    /// mu*, null where p_min <= 0.
+    /// mu*, null where p_min <= 0 or P <= 0.
     pub mu_star: Vec<Option<f64>>,
 }
 
 /// Sweeps pbar at time t. psi does not depend on pbar, and p_min = pbar + (p_min - pbar) at the
 /// inputs' own pbar, so `oscillation_min` (p_min - pbar, from the contact check) decides where
-/// contact is complete.
+/// contact is complete. A range outside `limits::MEAN_PRESSURE` gives an empty sweep.
 pub fn pressure_sweep(
     inputs: &SpatialInputs,
     evolutions: &[Evolution],
@@ -63,7 +63,10 @@ pub fn pressure_sweep(
     oscillation_min: f64,
     spec: &SweepRange,
 ) -> MeanPressureSweep {
-    let pressures = spec.values();
+    let pressures = match spec.check(["pressure_min", "pressure_max"], &limits::MEAN_PRESSURE) {
+        Ok(()) => spec.values(),
+        Err(_) => Vec::new(),
+    };
     let psi = solve_with(inputs, evolutions, time).psi;
     let mu = inputs.friction.coefficient;
     MeanPressureSweep {
@@ -71,7 +74,8 @@ pub fn pressure_sweep(
         mu_star: pressures
             .iter()
             .map(|p| {
-                (p + oscillation_min > 0.0).then(|| mu + (1.0 + mu * mu) * psi / (p - mu * psi))
+                let load = p - mu * psi;
+                (p + oscillation_min > 0.0 && load > 0.0).then(|| mu + (1.0 + mu * mu) * psi / load)
             })
             .collect(),
         mean_pressure: pressures,

@@ -54,14 +54,17 @@ impl SpatialInputs {
     }
 }
 
-/// Checks the harmonics: at least one; every amplitude, wavenumber and phase in range; no zero
-/// wave vector; no wave vector twice.
+/// Checks the harmonics: 1 to 64 (`limits::HARMONICS`); every amplitude, wavenumber and phase
+/// in range; no zero wave vector; no wave vector twice.
 pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
     if harmonics.is_empty() {
         return Err(SolveError::InvalidInput(
             "the punch has no harmonics: add at least one (amplitude, wavenumbers, phases)".into(),
         ));
     }
+    limits::HARMONICS
+        .check("the number of harmonics", harmonics.len() as f64)
+        .map_err(SolveError::InvalidInput)?;
     for (i, h) in harmonics.iter().enumerate() {
         let n = i + 1;
         let named = |name: &str| format!("harmonic {n}: {name}");
