@@ -58,6 +58,9 @@ enum Command {
         /// Also report the fields at the point X,Y [m] (spatial; repeatable).
         #[arg(long, value_name = "X,Y", allow_hyphen_values = true, value_parser = parse_probe)]
         probe: Vec<[f64; 2]>,
+        /// Set a preset value before solving, e.g. material.thickness=10um (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
+        settings: Vec<String>,
     },
 }
 
@@ -111,6 +114,7 @@ fn main() -> ExitCode {
             points,
             time,
             probe,
+            settings,
         }) => solve(
             &preset,
             format,
@@ -118,6 +122,7 @@ fn main() -> ExitCode {
                 points,
                 time,
                 probes: probe,
+                settings,
             },
         ),
         None => explore(
@@ -150,6 +155,8 @@ struct Overrides {
     points: Option<usize>,
     time: Option<f64>,
     probes: Vec<[f64; 2]>,
+    /// `--set KEY=VALUE`, in order.
+    settings: Vec<String>,
 }
 
 impl Overrides {
@@ -184,8 +191,16 @@ fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
     }
 }
 
+/// The preset at `path` with the `--set` values applied.
+fn load_with(path: &Path, settings: &[String]) -> Result<Preset, ExitCode> {
+    load(path)?.with_settings(settings).map_err(|why| {
+        say(&format!("error: {why}"));
+        ExitCode::from(EXIT_INVALID)
+    })
+}
+
 fn solve(path: &Path, format: Format, options: &Overrides) -> ExitCode {
-    let preset = match load(path) {
+    let preset = match load_with(path, &options.settings) {
         Ok(p) => p,
         Err(code) => return code,
     };

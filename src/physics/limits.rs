@@ -68,6 +68,11 @@ impl Limit {
         }
     }
 
+    /// True when only whole numbers are allowed (counts: points, grid, harmonics).
+    pub fn is_whole(&self) -> bool {
+        self.whole
+    }
+
     /// Whether `value` is allowed.
     pub fn accepts(&self, value: f64) -> bool {
         if (value == 0.0 && self.zero) || (value == f64::INFINITY && self.infinite) {

@@ -4,6 +4,8 @@
 mod bundled;
 mod check;
 mod file;
+mod key;
+mod params;
 
 use std::fmt;
 use std::path::PathBuf;
@@ -18,6 +20,8 @@ use crate::physics::{Friction, Material, Spacing, SweepRange};
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
 pub use check::parse;
 pub use file::{SaveTarget, load, resolve_save_path, save, to_toml, write_atomically};
+pub use key::Key;
+pub use params::{Access, PARAMS, Param};
 
 /// The schema version this build reads and writes.
 pub const SCHEMA: i64 = 1;

@@ -1,0 +1,210 @@
+//! The parameter registry: every input of a preset, by its preset key (`material.thickness`,
+//! `spatial.harmonics.N.amplitude`, `plane.model`), with its symbol, a short label, its unit, its
+//! allowed values (`physics::limits`, the one place for ranges) and how it is read and written.
+//! `preset::Key` addresses one parameter in a preset and holds the checked getter and setters.
+//!
+//! Harmonic keys count from 0 (`spatial.harmonics.0.*` is the first harmonic, "harmonic 1" in
+//! messages and in the explorer), like the `harmonics` array of `wearlab solve`'s JSON.
+
+use crate::physics::Spacing;
+use crate::physics::limits::{self, Limit};
+use crate::physics::plane::Model;
+use crate::physics::spatial::harmonic::Harmonic;
+use crate::preset::{Preset, Problem};
+
+/// How a parameter's value is read and written.
+#[derive(Clone, Copy, Debug)]
+pub enum Access {
+    /// A number of the preset, allowed by `limit`.
+    Number {
+        /// The allowed values.
+        limit: Limit,
+        /// Reads it.
+        get: fn(&Preset) -> f64,
+        /// Writes it (unchecked: `Preset::set` checks).
+        set: fn(&mut Preset, f64),
+    },
+    /// A number of one harmonic (the key says which), allowed by `limit`.
+    Harmonic {
+        /// The allowed values.
+        limit: Limit,
+        /// Reads it.
+        get: fn(&Harmonic) -> f64,
+        /// Writes it (unchecked).
+        set: fn(&mut Harmonic, f64),
+    },
+    /// One of a few names; the value is the index into `names`.
+    Choice {
+        /// The names, as written in preset files.
+        names: &'static [&'static str],
+        /// Reads the index.
+        get: fn(&Preset) -> usize,
+        /// Writes the index (< names.len()).
+        set: fn(&mut Preset, usize),
+    },
+}
+
+/// One parameter.
+#[derive(Clone, Copy, Debug)]
+pub struct Param {
+    /// The preset key; harmonic keys have `N` in place of the index
+    /// (`spatial.harmonics.N.amplitude`).
+    pub key: &'static str,
+    /// The symbol shown in the explorer and in messages ("E", "h", "P min").
+    pub symbol: &'static str,
+    /// What it is, in a few words.
+    pub label: &'static str,
+    /// The SI unit ("" for dimensionless numbers, counts and choices).
+    pub unit: &'static str,
+    /// How it is read and written.
+    pub access: Access,
+}
+
+impl Param {
+    /// The allowed values of a number (None for a choice).
+    pub fn limit(&self) -> Option<&Limit> {
+        match &self.access {
+            Access::Number { limit, .. } | Access::Harmonic { limit, .. } => Some(limit),
+            Access::Choice { .. } => None,
+        }
+    }
+
+    /// The names of a choice (None for a number).
+    pub fn choices(&self) -> Option<&'static [&'static str]> {
+        match self.access {
+            Access::Choice { names, .. } => Some(names),
+            _ => None,
+        }
+    }
+
+    /// True for a number that is a count (points, grid).
+    pub fn is_whole(&self) -> bool {
+        self.limit().is_some_and(Limit::is_whole)
+    }
+
+    /// The problem it belongs to, from its section (`plane.`, `spatial.`); None for both.
+    pub fn problem(&self) -> Option<Problem> {
+        match self.key.split('.').next() {
+            Some("plane") => Some(Problem::Plane),
+            Some("spatial") => Some(Problem::Spatial),
+            _ => None,
+        }
+    }
+
+    /// True when it matters for `problem` (the preset holds both problems; only one is solved).
+    pub fn applies_to(&self, problem: Problem) -> bool {
+        self.problem().is_none_or(|p| p == problem)
+    }
+
+    /// What may be written, in words: the limit's text, or the choices.
+    pub fn allowed(&self) -> String {
+        match (self.limit(), self.choices()) {
+            (Some(limit), _) => limit.allowed.to_string(),
+            (None, Some(names)) => format!("one of {}", names.join(", ")),
+            (None, None) => unreachable!("a parameter is a number or a choice"),
+        }
+    }
+}
+
+const MODELS: &[&str] = &["wide", "narrow", "strip"];
+const SCALES: &[&str] = &["log", "linear"];
+
+fn model_index(model: Model) -> usize {
+    Model::ALL.iter().position(|m| *m == model).unwrap_or(0)
+}
+
+fn scale_index(spacing: Spacing) -> usize {
+    match spacing {
+        Spacing::Log => 0,
+        Spacing::Linear => 1,
+    }
+}
+
+fn scale(index: usize) -> Spacing {
+    [Spacing::Log, Spacing::Linear][index]
+}
+
+const fn number(
+    key: &'static str,
+    symbol: &'static str,
+    label: &'static str,
+    unit: &'static str,
+    limit: Limit,
+    get: fn(&Preset) -> f64,
+    set: fn(&mut Preset, f64),
+) -> Param {
+    Param {
+        key,
+        symbol,
+        label,
+        unit,
+        access: Access::Number { limit, get, set },
+    }
+}
+
+const fn wave(
+    key: &'static str,
+    symbol: &'static str,
+    label: &'static str,
+    unit: &'static str,
+    limit: Limit,
+    get: fn(&Harmonic) -> f64,
+    set: fn(&mut Harmonic, f64),
+) -> Param {
+    Param {
+        key,
+        symbol,
+        label,
+        unit,
+        access: Access::Harmonic { limit, get, set },
+    }
+}
+
+const fn choice(
+    key: &'static str,
+    symbol: &'static str,
+    label: &'static str,
+    names: &'static [&'static str],
+    get: fn(&Preset) -> usize,
+    set: fn(&mut Preset, usize),
+) -> Param {
+    Param {
+        key,
+        symbol,
+        label,
+        unit: "",
+        access: Access::Choice { names, get, set },
+    }
+}
+
+/// Every parameter, in the order of the preset file.
+#[rustfmt::skip]
+pub const PARAMS: &[Param] = &[
+    number("material.youngs_modulus", "E", "Young's modulus", "Pa", limits::YOUNGS_MODULUS, |p| p.material.youngs_modulus, |p, v| p.material.youngs_modulus = v),
+    number("material.poisson_ratio", "nu", "Poisson's ratio", "", limits::POISSON_RATIO, |p| p.material.poisson_ratio, |p, v| p.material.poisson_ratio = v),
+    number("material.thickness", "h", "thickness of the strip / layer", "m", limits::THICKNESS, |p| p.material.thickness, |p, v| p.material.thickness = v),
+    number("friction.coefficient", "mu", "friction coefficient", "", limits::FRICTION, |p| p.friction.coefficient, |p, v| p.friction.coefficient = v),
+    number("friction.adhesion", "tau0", "adhesive shear stress", "Pa", limits::ADHESION, |p| p.friction.adhesion, |p, v| p.friction.adhesion = v),
+    number("wear.coefficient", "k", "wear coefficient", "1/Pa", limits::WEAR, |p| p.wear, |p, v| p.wear = v),
+    choice("plane.model", "model", "plane model", MODELS, |p| model_index(p.plane.model), |p, i| p.plane.model = Model::ALL[i]),
+    number("plane.radius", "R", "punch radius", "m", limits::RADIUS, |p| p.plane.radius, |p, v| p.plane.radius = v),
+    number("plane.load", "P", "load per unit length", "N/m", limits::LINE_LOAD, |p| p.plane.load, |p, v| p.plane.load = v),
+    number("plane.sweep.load_min", "P min", "smallest load of the mu*(P) curve", "N/m", limits::LINE_LOAD, |p| p.plane.sweep.min, |p, v| p.plane.sweep.min = v),
+    number("plane.sweep.load_max", "P max", "largest load of the mu*(P) curve", "N/m", limits::LINE_LOAD, |p| p.plane.sweep.max, |p, v| p.plane.sweep.max = v),
+    number("plane.sweep.points", "points", "points of the mu*(P) curve", "", limits::SWEEP_POINTS, |p| p.plane.sweep.points as f64, |p, v| p.plane.sweep.points = v as usize),
+    choice("plane.sweep.scale", "scale", "spacing of the mu*(P) curve", SCALES, |p| scale_index(p.plane.sweep.spacing), |p, i| p.plane.sweep.spacing = scale(i)),
+    number("spatial.mean_pressure", "pbar", "mean pressure", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.mean_pressure, |p, v| p.spatial.mean_pressure = v),
+    number("spatial.sliding_speed", "V", "sliding speed", "m/s", limits::SPEED, |p| p.spatial.sliding_speed, |p, v| p.spatial.sliding_speed = v),
+    number("spatial.time", "t", "the instant shown", "s", limits::TIME, |p| p.spatial.time, |p, v| p.spatial.time = v),
+    number("spatial.duration", "duration", "extent of the time charts", "s", limits::DURATION, |p| p.spatial.duration, |p, v| p.spatial.duration = v),
+    number("spatial.grid", "grid", "points per side of the field", "", limits::GRID, |p| p.spatial.grid as f64, |p, v| p.spatial.grid = v as usize),
+    number("spatial.sweep.pressure_min", "pbar min", "smallest mean pressure of the mu*(pbar) curve", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.sweep.min, |p, v| p.spatial.sweep.min = v),
+    number("spatial.sweep.pressure_max", "pbar max", "largest mean pressure of the mu*(pbar) curve", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.sweep.max, |p, v| p.spatial.sweep.max = v),
+    number("spatial.sweep.points", "points", "points of the mu*(pbar) curve", "", limits::SWEEP_POINTS, |p| p.spatial.sweep.points as f64, |p, v| p.spatial.sweep.points = v as usize),
+    choice("spatial.sweep.scale", "scale", "spacing of the mu*(pbar) curve", SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| p.spatial.sweep.spacing = scale(i)),
+    wave("spatial.harmonics.N.amplitude", "A", "amplitude of the harmonic", "m", limits::AMPLITUDE, |h| h.amplitude, |h, v| h.amplitude = v),
+    wave("spatial.harmonics.N.wavenumber_x", "wx", "wavenumber along the sliding line", "rad/m", limits::WAVENUMBER, |h| h.wavenumber_x, |h, v| h.wavenumber_x = v),
+    wave("spatial.harmonics.N.wavenumber_y", "wy", "wavenumber across the sliding line", "rad/m", limits::WAVENUMBER, |h| h.wavenumber_y, |h, v| h.wavenumber_y = v),
+    wave("spatial.harmonics.N.phase_x", "rho_x", "phase along x at t = 0", "rad", limits::PHASE, |h| h.phase_x, |h, v| h.phase_x = v),
+    wave("spatial.harmonics.N.phase_y", "rho_y", "phase along y", "rad", limits::PHASE, |h| h.phase_y, |h, v| h.phase_y = v),
+];
