@@ -7,7 +7,6 @@ use std::fmt;
 
 use crate::physics::SweepRange;
 use crate::physics::limits;
-use crate::physics::plane::Model;
 use crate::physics::spatial::validate_harmonics;
 use crate::preset::params::{Access, PARAMS, Param};
 use crate::preset::{Preset, Problem};
@@ -211,7 +210,7 @@ impl Preset {
     /// distinct.
     pub fn check_rules(&self) -> Result<(), String> {
         let model = self.plane.model;
-        if model != Model::Wide && self.material.is_half_space() {
+        if model.needs_finite_thickness() && self.material.is_half_space() {
             return Err(format!(
                 "plane.model = {} needs a finite material.thickness (h = inf is the half-plane): \
                  set the thickness, or use plane.model = wide",
@@ -236,23 +235,19 @@ impl Preset {
     /// Parses a key for this preset: known, of the preset's problem (the other problem's section
     /// is kept in the file but not solved), and naming a harmonic the preset has.
     pub fn key(&self, text: &str) -> Result<Key, String> {
-        let name = |p: Problem| match p {
-            Problem::Plane => "plane",
-            Problem::Spatial => "spatial",
-        };
         let key = Key::parse(text).map_err(|_| {
             format!(
                 "unknown key '{}': the keys of a {} preset are {}",
                 text.trim(),
-                name(self.problem),
+                self.problem.name(),
                 list(Some(self.problem))
             )
         })?;
         if let Some(problem) = key.param().problem().filter(|p| *p != self.problem) {
             return Err(format!(
                 "{key} applies to {} presets only; this preset solves problem = \"{}\"",
-                name(problem),
-                name(self.problem)
+                problem.name(),
+                self.problem.name()
             ));
         }
         if key.harmonic.is_some() {
