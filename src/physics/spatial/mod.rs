@@ -10,6 +10,7 @@ pub mod contact;
 pub mod field;
 pub mod harmonic;
 pub mod history;
+pub mod partial;
 pub mod state;
 
 use std::f64::consts::PI;

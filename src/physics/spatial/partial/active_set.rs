@@ -1,0 +1,246 @@
+//! The production contact solver: primal–dual active set with restarted GMRES on FFT products
+//! (docs/physics/spatial-partial.md section 3).
+//!
+//! For a contact set C, the bordered non-symmetric system
+//!   (K + c)_CC p_C + d 1 = U_C + tau0 T[1_C]_C,   sum p_C = N pbar,
+//! is solved matrix-free with p/pbar and d/(pbar max A) as unknowns, the load row scaled to unit
+//! norm and the full-cell inverse (K + c)^-1 as right preconditioner. Then
+//!   C <- {i in C: p_i > 0} u {i not in C: gap_i < 0},
+//! until C repeats. A set seen before is a cycle: the state of the cycle with the smallest natural
+//! residual is kept and the cycle reported.
+
+use crate::physics::SolveError;
+use crate::physics::spatial::partial::gmres::{Preconditioned, gmres};
+use crate::physics::spatial::partial::operator::Operator;
+
+/// Most active-set iterations.
+pub const MAX_ACTIVE_SET_ITERATIONS: usize = 100;
+/// GMRES restart length.
+const RESTART: usize = 40;
+/// Most GMRES products per active-set iteration.
+const MAX_LINEAR_ITERATIONS: usize = 4000;
+/// GMRES tolerance, relative to the norm of the scaled right-hand side.
+const LINEAR_TOLERANCE: f64 = 1e-13;
+
+/// One contact problem: the shape and the load, with the operator K + c.
+#[derive(Clone, Copy, Debug)]
+pub struct ContactProblem<'a> {
+    /// U [m] at the nodes (zero mean).
+    pub shape: &'a [f64],
+    /// pbar [Pa] > 0.
+    pub mean_pressure: f64,
+    /// tau0 [Pa], acting only in contact.
+    pub adhesion: f64,
+    /// c [m/Pa] >= 0 added to K (c dt k_w in an implicit wear step; 0 for a plain contact).
+    pub diagonal: f64,
+}
+
+/// The solution of one contact problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ContactSolution {
+    /// p [Pa] at the nodes.
+    pub pressure: Vec<f64>,
+    /// d [m]: the rigid offset of the problem with K + c (the mean gap when c = 0).
+    pub offset: f64,
+    /// True when p_cc >= 0 at every node and the closed form was returned.
+    pub complete: bool,
+    /// Active-set iterations (0 for complete contact).
+    pub iterations: usize,
+    /// GMRES products in all.
+    pub linear_iterations: usize,
+    /// True when the active set cycled (the best state of the cycle is returned).
+    pub cycled: bool,
+    /// max |min(p/pbar, gap/(pbar max A))| over the nodes.
+    pub residual: f64,
+}
+
+impl ContactSolution {
+    /// The contact set {p > 0}.
+    pub fn contact(&self) -> Vec<bool> {
+        self.pressure.iter().map(|p| *p > 0.0).collect()
+    }
+}
+
+/// The bordered system on the contact nodes `active`.
+struct Bordered<'a> {
+    op: &'a mut Operator,
+    active: &'a [usize],
+    diagonal: f64,
+    scale: f64,
+    full: Vec<f64>,
+    image: Vec<f64>,
+}
+
+impl Bordered<'_> {
+    fn extend(&mut self, x: &[f64]) {
+        self.full.iter_mut().for_each(|v| *v = 0.0);
+        for (k, &i) in self.active.iter().enumerate() {
+            self.full[i] = x[k];
+        }
+    }
+}
+
+impl Preconditioned for Bordered<'_> {
+    fn apply(&mut self, x: &[f64], y: &mut [f64]) {
+        let n = self.active.len();
+        self.extend(&x[..n]);
+        self.op.apply(&self.full, &mut self.image, self.diagonal);
+        for (k, &i) in self.active.iter().enumerate() {
+            y[k] = self.image[i] / self.scale + x[n];
+        }
+        y[n] = x[..n].iter().sum::<f64>() / (n as f64).sqrt();
+    }
+
+    fn precondition(&mut self, r: &[f64], z: &mut [f64]) {
+        let n = self.active.len();
+        self.extend(&r[..n]);
+        self.op.inverse(&self.full, &mut self.image, self.diagonal);
+        for (k, &i) in self.active.iter().enumerate() {
+            z[k] = self.image[i] * self.scale;
+        }
+        let shift = (r[n] * (n as f64).sqrt() - z[..n].iter().sum::<f64>()) / n as f64;
+        z[..n].iter_mut().for_each(|v| *v += shift);
+        z[n] = r[..n].iter().sum::<f64>() / n as f64;
+    }
+}
+
+/// A contact set as bits, to recognise a set seen before.
+fn bits(set: &[bool]) -> Vec<u64> {
+    set.chunks(64)
+        .map(|c| {
+            c.iter()
+                .enumerate()
+                .fold(0u64, |w, (b, &on)| w | (u64::from(on) << b))
+        })
+        .collect()
+}
+
+/// p_cc = pbar + (K + c)^-1 [U] at the nodes: the complete-contact pressure (tau0 drops out).
+pub fn complete_pressure(op: &mut Operator, prob: &ContactProblem) -> Vec<f64> {
+    let mut p = vec![0.0; prob.shape.len()];
+    op.inverse(prob.shape, &mut p, prob.diagonal);
+    p.iter_mut().for_each(|v| *v += prob.mean_pressure);
+    p
+}
+
+/// Solves the contact problem by the primal–dual active set, starting from `start` (a previous
+/// contact set) or from {p_cc > 0}. Complete contact (min p_cc >= 0) returns p_cc without
+/// iterating.
+pub fn solve(
+    op: &mut Operator,
+    prob: &ContactProblem,
+    start: Option<&[bool]>,
+) -> Result<ContactSolution, SolveError> {
+    let n = prob.shape.len();
+    let pbar = prob.mean_pressure;
+    let p_cc = complete_pressure(op, prob);
+    if p_cc.iter().all(|p| *p >= 0.0) {
+        return Ok(ContactSolution {
+            pressure: p_cc,
+            // the mean of the rows: c pbar + d = <U> = 0
+            offset: -prob.diagonal * pbar,
+            complete: true,
+            iterations: 0,
+            linear_iterations: 0,
+            cycled: false,
+            residual: 0.0,
+        });
+    }
+    let scale = op.multipliers.max_normal() + prob.diagonal;
+    let gap_scale = pbar * scale;
+    let mut set: Vec<bool> = match start {
+        Some(s) if s.iter().any(|v| *v) => s.to_vec(),
+        _ => p_cc.iter().map(|p| *p > 0.0).collect(),
+    };
+    let mut pressure = p_cc;
+    let mut offset = -prob.diagonal * pbar;
+    let mut seen: Vec<Vec<u64>> = Vec::new();
+    let mut best: Option<ContactSolution> = None;
+    let mut linear_iterations = 0;
+    let (mut full, mut image, mut gap) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    for iteration in 1..=MAX_ACTIVE_SET_ITERATIONS {
+        let active: Vec<usize> = (0..n).filter(|&i| set[i]).collect();
+        let m = active.len();
+        // tau0 T[1_C]: the adhesive shear of this contact set
+        let mut lift = vec![0.0; n];
+        if prob.adhesion > 0.0 {
+            let ones: Vec<f64> = set.iter().map(|&on| f64::from(u8::from(on))).collect();
+            op.shear(&ones, &mut lift);
+            lift.iter_mut().for_each(|v| *v *= prob.adhesion);
+        }
+        let mut rhs: Vec<f64> = active
+            .iter()
+            .map(|&i| (prob.shape[i] + lift[i]) / gap_scale)
+            .collect();
+        rhs.push(n as f64 / (m as f64).sqrt());
+        let mut x: Vec<f64> = active.iter().map(|&i| pressure[i] / pbar).collect();
+        x.push(offset / gap_scale);
+        let tol = LINEAR_TOLERANCE * rhs.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let mut sys = Bordered {
+            op,
+            active: &active,
+            diagonal: prob.diagonal,
+            scale,
+            full: std::mem::take(&mut full),
+            image: std::mem::take(&mut image),
+        };
+        let out = gmres(&mut sys, &rhs, &mut x, RESTART, MAX_LINEAR_ITERATIONS, tol);
+        (full, image) = (sys.full, sys.image);
+        linear_iterations += out.iterations;
+        if !out.converged {
+            return Err(SolveError::NoSolution(format!(
+                "the contact solver's linear solve did not converge in {MAX_LINEAR_ITERATIONS} \
+                 GMRES iterations (relative residual {:.1e})",
+                out.residual / (tol / LINEAR_TOLERANCE)
+            )));
+        }
+        pressure.iter_mut().for_each(|v| *v = 0.0);
+        for (k, &i) in active.iter().enumerate() {
+            pressure[i] = x[k] * pbar;
+        }
+        offset = x[m] * gap_scale;
+        // gap = d - U + (K + c) p - tau0 T[1_C]
+        op.apply(&pressure, &mut gap, prob.diagonal);
+        for i in 0..n {
+            gap[i] += offset - prob.shape[i] - lift[i];
+        }
+        let residual = (0..n)
+            .map(|i| (pressure[i] / pbar).min(gap[i] / gap_scale).abs())
+            .fold(0.0, f64::max);
+        let next: Vec<bool> = (0..n)
+            .map(|i| {
+                if set[i] {
+                    pressure[i] > 0.0
+                } else {
+                    gap[i] < 0.0
+                }
+            })
+            .collect();
+        let state = |cycled| ContactSolution {
+            pressure: pressure.clone(),
+            offset,
+            complete: false,
+            iterations: iteration,
+            linear_iterations,
+            cycled,
+            residual,
+        };
+        if next == set {
+            return Ok(state(false));
+        }
+        if best.as_ref().is_none_or(|b| residual < b.residual) {
+            best = Some(state(false));
+        }
+        let key = bits(&next);
+        if seen.contains(&key) {
+            let mut b = best.expect("set after the first iteration");
+            (b.cycled, b.iterations, b.linear_iterations) = (true, iteration, linear_iterations);
+            return Ok(b);
+        }
+        seen.push(bits(&set));
+        set = next;
+    }
+    Err(SolveError::NoSolution(format!(
+        "the contact set did not settle within {MAX_ACTIVE_SET_ITERATIONS} active-set iterations"
+    )))
+}

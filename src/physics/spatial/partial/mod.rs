@@ -1,0 +1,107 @@
+//! The spatial problem in partial contact and its running-in by wear
+//! (docs/physics/spatial-partial.md): the contact solved on the nodes of the period cell with the
+//! layer's transfer functions and the friction coupling, under load control (pbar given).
+//!
+//! The entry points: [`Setup`] (inputs, grid, operators; the state of any shape),
+//! [`running_in::run_in`] (the wear of the punch from t = 0 until contact is complete, then the
+//! closed form; `state_at(t)` and the history) and [`sweep::load_curve`] (mu* against pbar).
+
+pub mod active_set;
+pub mod fixed_point;
+mod gmres;
+pub mod grid;
+pub mod history;
+pub mod operator;
+pub mod running_in;
+pub mod state;
+pub mod sweep;
+
+use std::sync::Arc;
+
+use crate::physics::SolveError;
+use crate::physics::spatial::SpatialInputs;
+use crate::physics::spatial::partial::active_set::{ContactProblem, solve};
+use crate::physics::spatial::partial::grid::Grid;
+use crate::physics::spatial::partial::operator::{Multipliers, Operator};
+use crate::physics::spatial::partial::state::{State, Work, evaluate};
+
+/// The time-independent part of a partial-contact problem: the validated inputs, the grid, the
+/// operators' multipliers and the shape at t = 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setup {
+    /// The inputs (validated).
+    pub inputs: SpatialInputs,
+    /// The grid.
+    pub grid: Grid,
+    /// The Fourier multipliers of the layer on the grid.
+    pub multipliers: Arc<Multipliers>,
+    /// U(0) [m] at the nodes.
+    pub initial_shape: Vec<f64>,
+}
+
+impl Setup {
+    /// Validates the inputs and builds the grid with `side` nodes along each axis on which the
+    /// shape varies (see [`Grid::new`]).
+    pub fn new(inputs: &SpatialInputs, side: usize) -> Result<Setup, SolveError> {
+        inputs.validate()?;
+        let grid = Grid::new(&inputs.harmonics, side)?;
+        let multipliers = Multipliers::new(&inputs.material, inputs.friction.coefficient, grid);
+        Ok(Setup {
+            inputs: inputs.clone(),
+            grid,
+            multipliers: Arc::new(multipliers),
+            initial_shape: grid.sample(&inputs.harmonics),
+        })
+    }
+
+    /// A fresh operator (its own FFT buffers) on the shared multipliers.
+    pub fn operator(&self) -> Operator {
+        Operator::new(Arc::clone(&self.multipliers))
+    }
+
+    /// The contact state of the zero-mean shape `shape` [m] at time `time` [s] (which sets the
+    /// mean wear k_w pbar t), starting the active set from `start` when given. Refused when the
+    /// vertical force P is not positive (slopes far beyond the small-slope theory).
+    pub fn state(
+        &self,
+        op: &mut Operator,
+        shape: Vec<f64>,
+        time: f64,
+        start: Option<&[bool]>,
+    ) -> Result<State, SolveError> {
+        let pbar = self.inputs.mean_pressure;
+        let friction = self.inputs.friction;
+        let problem = ContactProblem {
+            shape: &shape,
+            mean_pressure: pbar,
+            adhesion: friction.adhesion,
+            diagonal: 0.0,
+        };
+        let sol = solve(op, &problem, start)?;
+        let (outputs, gap) = evaluate(op, &shape, pbar, &friction, &sol, sol.offset);
+        if outputs.normal_force.is_nan() || outputs.normal_force <= 0.0 {
+            return Err(SolveError::NoSolution(format!(
+                "the vertical force P = pbar - mu psi - tau0 Delta = {:.6e} Pa is not positive: \
+                 the slopes are far beyond the small-slope theory",
+                outputs.normal_force
+            )));
+        }
+        let mean_wear = self.inputs.wear_rate() * pbar * time;
+        let wear = self
+            .initial_shape
+            .iter()
+            .zip(&shape)
+            .map(|(u0, u)| mean_wear + u0 - u)
+            .collect();
+        Ok(State {
+            grid: self.grid,
+            time,
+            shape,
+            wear,
+            gap,
+            outputs,
+            work: Work::of(&sol),
+            pressure: sol.pressure,
+        })
+    }
+}
