@@ -82,43 +82,80 @@ impl Stepping {
     }
 }
 
-/// One step from U_k (and U_{k-1} when k >= 1; BE without it) with the contact set `start`:
-/// U_{k+1}, the step's contact solution and the mean gap of the true problem.
-fn advance(
-    op: &mut Operator,
-    setup: &Setup,
-    dt: f64,
-    previous: Option<&[f64]>,
-    current: &[f64],
-    start: &[bool],
-) -> Result<(Vec<f64>, ContactSolution, f64), SolveError> {
-    let inputs = &setup.inputs;
-    let pbar = inputs.mean_pressure;
-    let (base, c) = match previous {
-        None => (current.to_vec(), dt * inputs.wear_rate()),
-        Some(before) => (
-            current
-                .iter()
-                .zip(before)
-                .map(|(u1, u0)| (4.0 * u1 - u0) / 3.0)
-                .collect(),
-            2.0 / 3.0 * dt * inputs.wear_rate(),
-        ),
-    };
-    let problem = ContactProblem {
-        shape: &base,
-        mean_pressure: pbar,
-        adhesion: inputs.friction.adhesion,
-        diagonal: c,
-    };
-    let sol = solve(op, &problem, Some(start))?;
-    let next = base
-        .iter()
-        .zip(&sol.pressure)
-        .map(|(u, p)| u - c * (p - pbar))
-        .collect();
-    let mean_gap = sol.offset + c * pbar;
-    Ok((next, sol, mean_gap))
+/// The implicit stepper: U_{k-1}, U_k and the contact set of step k.
+pub struct Stepper<'a> {
+    /// The problem.
+    pub setup: &'a Setup,
+    /// The operator (its buffers are reused by every step).
+    pub op: Operator,
+    /// dt [s].
+    pub dt: f64,
+    /// k: the steps done.
+    pub step: usize,
+    /// U_{k-1} [m] (None at k = 0: the next step is BE).
+    pub previous: Option<Vec<f64>>,
+    /// U_k [m].
+    pub current: Vec<f64>,
+    /// The contact set of step k (the next step starts from it).
+    pub contact: Vec<bool>,
+}
+
+impl<'a> Stepper<'a> {
+    /// A stepper at step k = `step` with U_{k-1} = `previous`, U_k = `current` and its contact
+    /// set.
+    pub fn new(
+        setup: &'a Setup,
+        dt: f64,
+        step: usize,
+        previous: Option<Vec<f64>>,
+        current: Vec<f64>,
+        contact: Vec<bool>,
+    ) -> Stepper<'a> {
+        Stepper {
+            op: setup.operator(),
+            setup,
+            dt,
+            step,
+            previous,
+            current,
+            contact,
+        }
+    }
+
+    /// One step (BE when k = 0, BDF2 after): U_{k+1}, and the step's contact solution with the
+    /// mean gap [m] of the true problem for U_{k+1}.
+    pub fn advance(&mut self) -> Result<(ContactSolution, f64), SolveError> {
+        let inputs = &self.setup.inputs;
+        let pbar = inputs.mean_pressure;
+        let (base, c) = match &self.previous {
+            None => (self.current.clone(), self.dt * inputs.wear_rate()),
+            Some(before) => (
+                self.current
+                    .iter()
+                    .zip(before)
+                    .map(|(u1, u0)| (4.0 * u1 - u0) / 3.0)
+                    .collect(),
+                2.0 / 3.0 * self.dt * inputs.wear_rate(),
+            ),
+        };
+        let problem = ContactProblem {
+            shape: &base,
+            mean_pressure: pbar,
+            adhesion: inputs.friction.adhesion,
+            diagonal: c,
+        };
+        let sol = solve(&mut self.op, &problem, Some(&self.contact))?;
+        let next = base
+            .iter()
+            .zip(&sol.pressure)
+            .map(|(u, p)| u - c * (p - pbar))
+            .collect();
+        self.previous = Some(std::mem::replace(&mut self.current, next));
+        self.contact = sol.contact();
+        self.step += 1;
+        let mean_gap = sol.offset + c * pbar;
+        Ok((sol, mean_gap))
+    }
 }
 
 /// What a replay starts from: the step index, U_{k-1} (None at k = 0), U_k and its contact set.
@@ -193,56 +230,58 @@ pub fn run_in(
     };
     let m0 = first.outputs.min_pressure_complete;
     let pbar = setup.inputs.mean_pressure;
-    let (mut previous, mut current, mut contact) = (
-        None::<Vec<f64>>,
+    let friction = setup.inputs.friction;
+    let mut stepper = Stepper::new(
+        setup,
+        stepping.dt,
+        0,
+        None,
         setup.initial_shape.clone(),
         first.contact(),
     );
-    for step in 1..=stepping.max_steps {
-        let (next, sol, mean_gap) = advance(
-            &mut op,
-            setup,
-            stepping.dt,
-            previous.as_deref(),
-            &current,
-            &contact,
-        )?;
-        let friction = setup.inputs.friction;
-        let (outputs, _) = evaluate(&mut op, &next, pbar, &friction, &sol, mean_gap);
-        let time = step as f64 * stepping.dt;
+    while stepper.step < stepping.max_steps {
+        let (sol, mean_gap) = stepper.advance()?;
+        let (outputs, _) = evaluate(
+            &mut stepper.op,
+            &stepper.current,
+            pbar,
+            &friction,
+            &sol,
+            mean_gap,
+        );
+        let time = stepper.step as f64 * stepping.dt;
         let before = run.samples.last().expect("t = 0 is sampled").outputs;
         run.samples.push(Sample { time, outputs });
-        contact = sol.contact();
-        (previous, current) = (Some(current), next);
         if outputs.complete {
             let (m1, m2) = (before.min_pressure_complete, outputs.min_pressure_complete);
             run.time_to_complete = Some(time - stepping.dt * m2 / (m2 - m1));
             run.complete_from = Some(time);
             break;
         }
-        run.keep(step, &previous, &current, &contact);
+        run.keep(&stepper);
         let done = (1.0 - outputs.min_pressure_complete / m0).clamp(0.0, 1.0);
         if progress(done).is_break() {
             return Err(Stopped::Cancelled);
         }
     }
-    run.end_shape = current;
+    run.end_shape = stepper.current;
     Ok(run)
 }
 
 impl RunningIn {
     /// Keeps a snapshot of every `stride`-th step, thinning to every other one beyond the budget.
-    fn keep(&mut self, step: usize, previous: &Option<Vec<f64>>, shape: &[f64], contact: &[bool]) {
-        if step % self.stride != 0 {
+    fn keep(&mut self, s: &Stepper) {
+        if s.step % self.stride != 0 {
             return;
         }
         self.snapshots.push(Snapshot {
-            step,
-            previous: previous.clone(),
-            shape: shape.to_vec(),
-            contact: contact.to_vec(),
+            step: s.step,
+            previous: s.previous.clone(),
+            shape: s.current.clone(),
+            contact: s.contact.clone(),
         });
-        if self.snapshots.len() * 2 * shape.len() > SNAPSHOT_VALUES && self.snapshots.len() > 2 {
+        if self.snapshots.len() * 2 * s.current.len() > SNAPSHOT_VALUES && self.snapshots.len() > 2
+        {
             self.stride *= 2;
             let stride = self.stride;
             self.snapshots.retain(|s| s.step % stride == 0);
@@ -291,35 +330,26 @@ impl RunningIn {
             .rev()
             .find(|s| s.step <= k)
             .expect("step 0 is kept");
-        let (mut previous, mut current) = (snap.previous.clone(), snap.shape.clone());
-        let mut contact = snap.contact.clone();
-        for _ in snap.step..k {
-            let (next, sol, _) = advance(
-                &mut op,
-                setup,
-                stepping.dt,
-                previous.as_deref(),
-                &current,
-                &contact,
-            )?;
-            contact = sol.contact();
-            (previous, current) = (Some(current), next);
+        let mut stepper = Stepper::new(
+            setup,
+            stepping.dt,
+            snap.step,
+            snap.previous.clone(),
+            snap.shape.clone(),
+            snap.contact.clone(),
+        );
+        while stepper.step < k {
+            stepper.advance()?;
         }
+        let (mut shape, contact) = (stepper.current.clone(), stepper.contact.clone());
         let fraction = t / stepping.dt - k as f64;
         if fraction > 0.0 {
-            let (next, _, _) = advance(
-                &mut op,
-                setup,
-                stepping.dt,
-                previous.as_deref(),
-                &current,
-                &contact,
-            )?;
-            current
+            stepper.advance()?;
+            shape
                 .iter_mut()
-                .zip(&next)
+                .zip(&stepper.current)
                 .for_each(|(u, v)| *u += fraction * (v - *u));
         }
-        setup.state(&mut op, current, t, Some(&contact))
+        setup.state(&mut op, shape, t, Some(&contact))
     }
 }
