@@ -48,9 +48,10 @@ pub struct ContactSolution {
     pub iterations: usize,
     /// GMRES products in all.
     pub linear_iterations: usize,
-    /// True when the active set cycled (the best state of the cycle is returned).
+    /// True when the active set cycled: the state of smallest residual is returned, with any
+    /// negative nodal pressure clipped to 0 and the rest scaled to keep the load.
     pub cycled: bool,
-    /// max |min(p/pbar, gap/(pbar max A))| over the nodes.
+    /// max |min(p/pbar, gap/(pbar max A))| over the nodes (before the clipping of a cycle).
     pub residual: f64,
 }
 
@@ -72,8 +73,8 @@ struct Bordered<'a> {
 }
 
 impl Bordered<'_> {
+    /// Writes x onto the contact nodes of `full` (zero elsewhere since construction).
     fn extend(&mut self, x: &[f64]) {
-        self.full.iter_mut().for_each(|v| *v = 0.0);
         for (k, &i) in self.active.iter().enumerate() {
             self.full[i] = x[k];
         }
@@ -181,7 +182,10 @@ pub fn solve(
             active: &active,
             diagonal: prob.diagonal,
             scale,
-            full: std::mem::take(&mut full),
+            full: {
+                full.iter_mut().for_each(|v| *v = 0.0);
+                std::mem::take(&mut full)
+            },
             image: std::mem::take(&mut image),
         };
         let out = gmres(&mut sys, &rhs, &mut x, RESTART, MAX_LINEAR_ITERATIONS, tol);
@@ -235,6 +239,11 @@ pub fn solve(
         if seen.contains(&key) {
             let mut b = best.expect("set after the first iteration");
             (b.cycled, b.iterations, b.linear_iterations) = (true, iteration, linear_iterations);
+            // a node of the ill-posed zone may hold a small negative pressure: clip it, keeping
+            // the load (the outputs change by O(tau0 w), section 8)
+            b.pressure.iter_mut().for_each(|v| *v = v.max(0.0));
+            let scale = pbar * n as f64 / b.pressure.iter().sum::<f64>();
+            b.pressure.iter_mut().for_each(|v| *v *= scale);
             return Ok(b);
         }
         seen.push(bits(&set));

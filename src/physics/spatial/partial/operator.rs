@@ -98,9 +98,11 @@ struct Fft2 {
     c2r: Arc<dyn ComplexToReal<f64>>,
     forward: Arc<dyn Fft<f64>>,
     inverse: Arc<dyn Fft<f64>>,
+    /// The rows' spectra, row-major (j nkx + kx).
+    rows: Vec<C64>,
+    /// The same, column-major (kx ny + j): the layout of the multipliers.
     spectrum: Vec<C64>,
     row: Vec<f64>,
-    row_spectrum: Vec<C64>,
     scratch: Vec<C64>,
 }
 
@@ -124,9 +126,9 @@ impl Fft2 {
         Fft2 {
             nx,
             ny,
+            rows: vec![C64::default(); (nx / 2 + 1) * ny],
             spectrum: vec![C64::default(); (nx / 2 + 1) * ny],
             row: vec![0.0; nx],
-            row_spectrum: r2c.make_output_vec(),
             scratch: vec![C64::default(); scratch_len],
             r2c,
             c2r,
@@ -135,18 +137,22 @@ impl Fft2 {
         }
     }
 
-    /// out = F^-1[m F[f]], with the multiplier m(i) at spectral index i.
+    /// out = F^-1[m F[f]], with the multiplier m(i) at spectral index i. The rows' spectra are
+    /// transposed (cache-blocked) so that the y transforms run on contiguous columns.
     fn filter(&mut self, f: &[f64], out: &mut [f64], m: impl Fn(usize) -> C64) {
         let (nx, ny) = (self.nx, self.ny);
+        let nkx = nx / 2 + 1;
         for j in 0..ny {
             self.row.copy_from_slice(&f[j * nx..(j + 1) * nx]);
             self.r2c
-                .process_with_scratch(&mut self.row, &mut self.row_spectrum, &mut self.scratch)
+                .process_with_scratch(
+                    &mut self.row,
+                    &mut self.rows[j * nkx..(j + 1) * nkx],
+                    &mut self.scratch,
+                )
                 .expect("buffer lengths come from the plan");
-            for (kx, v) in self.row_spectrum.iter().enumerate() {
-                self.spectrum[kx * ny + j] = *v;
-            }
         }
+        transpose::transpose(&self.rows, &mut self.spectrum, nkx, ny);
         self.forward
             .process_with_scratch(&mut self.spectrum, &mut self.scratch);
         for (i, v) in self.spectrum.iter_mut().enumerate() {
@@ -154,18 +160,17 @@ impl Fft2 {
         }
         self.inverse
             .process_with_scratch(&mut self.spectrum, &mut self.scratch);
+        transpose::transpose(&self.spectrum, &mut self.rows, ny, nkx);
         let scale = 1.0 / (nx * ny) as f64;
         for j in 0..ny {
-            for (kx, v) in self.row_spectrum.iter_mut().enumerate() {
-                *v = self.spectrum[kx * ny + j];
-            }
+            let row_spectrum = &mut self.rows[j * nkx..(j + 1) * nkx];
             // the zero and Nyquist bins of a real signal are real: drop the round-off
-            self.row_spectrum[0].im = 0.0;
+            row_spectrum[0].im = 0.0;
             if nx % 2 == 0 {
-                self.row_spectrum[nx / 2].im = 0.0;
+                row_spectrum[nx / 2].im = 0.0;
             }
             self.c2r
-                .process_with_scratch(&mut self.row_spectrum, &mut self.row, &mut self.scratch)
+                .process_with_scratch(row_spectrum, &mut self.row, &mut self.scratch)
                 .expect("buffer lengths come from the plan; the invalid bins were zeroed");
             for (o, r) in out[j * nx..(j + 1) * nx].iter_mut().zip(&self.row) {
                 *o = r * scale;
@@ -179,13 +184,23 @@ pub struct Operator {
     /// The multipliers.
     pub multipliers: Arc<Multipliers>,
     fft: Fft2,
+    /// A - i mu sx B at every spectral node.
+    kernel: Vec<C64>,
+    /// c and 1/(A - i mu sx B + c) (0 at k = 0), for the last c asked.
+    inverse: (f64, Vec<C64>),
 }
 
 impl Operator {
     /// An operator (with fresh buffers) for `multipliers`.
     pub fn new(multipliers: Arc<Multipliers>) -> Operator {
+        let m = &multipliers;
+        let kernel: Vec<C64> = (0..m.normal.len())
+            .map(|i| C64::new(m.normal[i], -m.coupling[i]))
+            .collect();
         Operator {
             fft: Fft2::new(&multipliers.grid),
+            inverse: (f64::NAN, Vec::new()),
+            kernel,
             multipliers,
         }
     }
@@ -197,9 +212,8 @@ impl Operator {
 
     /// out = K[p] + c p [m] for p [Pa]: the gap change (K excludes the mean; c p includes it).
     pub fn apply(&mut self, p: &[f64], out: &mut [f64], c: f64) {
-        let m = &self.multipliers;
-        self.fft
-            .filter(p, out, |i| C64::new(m.normal[i], -m.coupling[i]));
+        let kernel = &self.kernel;
+        self.fft.filter(p, out, |i| kernel[i]);
         if c != 0.0 {
             out.iter_mut().zip(p).for_each(|(o, p)| *o += c * p);
         }
@@ -207,14 +221,24 @@ impl Operator {
 
     /// out = (K + c)^-1 [u] on the modes k != 0, zero mean [Pa] for u [m].
     pub fn inverse(&mut self, u: &[f64], out: &mut [f64], c: f64) {
-        let m = &self.multipliers;
-        self.fft.filter(u, out, |i| {
-            if m.normal[i] == 0.0 {
-                C64::default()
-            } else {
-                C64::new(m.normal[i] + c, -m.coupling[i]).inv()
-            }
-        });
+        if self.inverse.0 != c {
+            let normal = &self.multipliers.normal;
+            let inverse = self
+                .kernel
+                .iter()
+                .zip(normal)
+                .map(|(k, a)| {
+                    if *a == 0.0 {
+                        C64::default()
+                    } else {
+                        (k + c).inv()
+                    }
+                })
+                .collect();
+            self.inverse = (c, inverse);
+        }
+        let inverse = &self.inverse.1;
+        self.fft.filter(u, out, |i| inverse[i]);
     }
 
     /// out = S[p] [m]: the symmetric part of K.
@@ -239,12 +263,12 @@ impl Operator {
     /// The closed-form wear of a shape in complete contact (section 5): every Fourier mode of u
     /// multiplied by exp(-k_w t/(A - i mu sx B)), `wear_time` = k_w t [m/Pa].
     pub fn decay(&mut self, u: &[f64], out: &mut [f64], wear_time: f64) {
-        let m = &self.multipliers;
+        let (m, kernel) = (&self.multipliers, &self.kernel);
         self.fft.filter(u, out, |i| {
             if m.normal[i] == 0.0 {
                 C64::default()
             } else {
-                (-wear_time * C64::new(m.normal[i], -m.coupling[i]).inv()).exp()
+                (-wear_time * kernel[i].inv()).exp()
             }
         });
     }

@@ -197,16 +197,24 @@ pub struct RunningIn {
     stride: usize,
 }
 
-/// Steps the wear of `setup` from t = 0 until contact is complete (or the stepping's bound).
-/// `progress` gets the fraction done (how far min p_cc has risen from its start towards 0) after
-/// every step; `ControlFlow::Break` abandons the work.
+/// Steps the wear of `setup` from t = 0 until contact is complete (or the bound of
+/// [`Stepping::of`]). `progress` gets the fraction done (how far min p_cc has risen from its
+/// start towards 0) after every step; `ControlFlow::Break` abandons the work.
 pub fn run_in(
     setup: &Setup,
     progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
 ) -> Result<RunningIn, Stopped> {
+    run_in_with(setup, Stepping::of(setup), progress)
+}
+
+/// As [`run_in`] with a given time step (None: no stepping, the state of t = 0 holds).
+pub fn run_in_with(
+    setup: &Setup,
+    stepping: Option<Stepping>,
+    progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
+) -> Result<RunningIn, Stopped> {
     let mut op = setup.operator();
     let first = setup.state(&mut op, setup.initial_shape.clone(), 0.0, None)?;
-    let stepping = Stepping::of(setup);
     let mut run = RunningIn {
         setup: setup.clone(),
         stepping,
