@@ -50,7 +50,12 @@ fn layer(e: f64, nu: f64, h: f64) -> Material {
 fn state(inputs: &SpatialInputs, n: usize) -> (Setup, State) {
     let setup = Setup::new(inputs, n).unwrap();
     let s = setup
-        .state(&mut setup.operator(), setup.initial_shape.clone(), 0.0, None)
+        .state(
+            &mut setup.operator(),
+            setup.initial_shape.clone(),
+            0.0,
+            None,
+        )
         .unwrap();
     (setup, s)
 }
@@ -59,9 +64,7 @@ fn state(inputs: &SpatialInputs, n: usize) -> (Setup, State) {
 fn oscillation(inputs: &SpatialInputs, n: usize) -> f64 {
     let setup = Setup::new(inputs, n).unwrap();
     let mut p = vec![0.0; setup.grid.len()];
-    setup
-        .operator()
-        .inverse(&setup.initial_shape, &mut p, 0.0);
+    setup.operator().inverse(&setup.initial_shape, &mut p, 0.0);
     p.iter().copied().fold(0.0, f64::max)
 }
 
@@ -99,7 +102,13 @@ fn westergaard_wave_on_a_half_space() {
     let ns = [256, 512, 1024, 2048, 4096];
     let (mut peak, mut rms) = (vec![], vec![]);
     for n in ns {
-        let input = inputs(layer(e, nu, f64::INFINITY), 0.0, 0.0, pbar, vec![cosine(delta, l)]);
+        let input = inputs(
+            layer(e, nu, f64::INFINITY),
+            0.0,
+            0.0,
+            pbar,
+            vec![cosine(delta, l)],
+        );
         let (setup, s) = state(&input, n);
         let err: Vec<f64> = (0..n)
             .map(|i| s.pressure[i] - exact(setup.grid.x(i)))
@@ -133,10 +142,13 @@ fn egg_box(r: f64, n: usize) -> f64 {
     let p_star = 2f64.sqrt() * PI * e / (1.0 - nu * nu) * delta / l;
     let w = 2.0 * PI / l;
     let h = vec![wave(delta, w, w, PI / 2.0, PI / 2.0)];
-    state(&inputs(layer(e, nu, f64::INFINITY), 0.0, 0.0, r * p_star, h), n)
-        .1
-        .outputs
-        .contact_fraction
+    state(
+        &inputs(layer(e, nu, f64::INFINITY), 0.0, 0.0, r * p_star, h),
+        n,
+    )
+    .1
+    .outputs
+    .contact_fraction
 }
 
 #[test]
@@ -157,7 +169,8 @@ fn egg_box_near_complete_contact() {
 fn egg_box_both_asymptotes_on_fine_grids() {
     // route 3 at the stated grids (run by hand, release): small load A/l^2 ->
     // pi (3/(8 pi))^(2/3) (pbar/p*)^(2/3) within ~1 % at 0.001, N = 512; near complete at 0.98.
-    let small = egg_box(0.001, 512) / (PI * (3.0 / (8.0 * PI)).powf(2.0 / 3.0) * 0.001f64.powf(2.0 / 3.0));
+    let small =
+        egg_box(0.001, 512) / (PI * (3.0 / (8.0 * PI)).powf(2.0 / 3.0) * 0.001f64.powf(2.0 / 3.0));
     let near = (1.0 - egg_box(0.98, 256)) / (3.0 / (2.0 * PI) * 0.02);
     println!("small load: A/asymptote = {small:.4}; near complete: (1 - A)/asymptote = {near:.4}");
     assert!((small - 1.0).abs() < 0.01 && (near - 1.0).abs() < 0.025);
@@ -181,7 +194,13 @@ fn complete_contact_returns_the_closed_form() {
     // section 3) to 1e-12 pbar, contact fraction 1, mean gap 0; with and without tau0; 1-D on a
     // half-space and 2-D with B < 0.
     let cases = [
-        (layer(3e9, 0.3, f64::INFINITY), 0.3, vec![cosine(1e-6, 1e-3)], 64, 2e7),
+        (
+            layer(3e9, 0.3, f64::INFINITY),
+            0.3,
+            vec![cosine(1e-6, 1e-3)],
+            64,
+            2e7,
+        ),
         (layer(1e7, 0.45, 5e-4), 0.8, dispersion_shape(), 64, 3e6),
     ];
     for (material, mu, h, n, pbar) in cases {
@@ -207,10 +226,38 @@ fn complete_contact_returns_the_closed_form() {
 }
 
 #[test]
+fn a_wave_across_the_sliding_line_solves_like_one_along_it_without_friction() {
+    // mu = 0 has no preferred direction: the wave along y (solved on 1 x N) and the same wave
+    // along x (N x 1) give the same pressures
+    let material = layer(1e7, 0.45, 5e-4);
+    let along_x = inputs(material, 0.0, 0.0, 1e5, vec![cosine(1e-5, 2e-3)]);
+    let mut along_y = along_x.clone();
+    let h = &mut along_y.harmonics[0];
+    (h.wavenumber_x, h.wavenumber_y, h.phase_x) = (0.0, h.wavenumber_x, PI / 2.0);
+    let (sx, a) = state(&along_x, 128);
+    let (sy, b) = state(&along_y, 128);
+    assert_eq!(
+        (sx.grid.nx, sx.grid.ny, sy.grid.nx, sy.grid.ny),
+        (128, 1, 1, 128)
+    );
+    assert!(!a.outputs.complete);
+    let diff = a
+        .pressure
+        .iter()
+        .zip(&b.pressure)
+        .map(|(p, q)| (p - q).abs())
+        .fold(0.0, f64::max);
+    assert!(diff < 1e-12 * 1e5, "{diff:e}");
+}
+
+#[test]
 fn the_two_algorithms_agree() {
     // route 5: the active set (production) and the S-metric projected fixed point (convergence
     // proof for tau0 = 0) agree to 1e-9 pbar, up to phi_max = 1.2 rad.
-    let two = vec![cosine(1e-6, 1e-3), wave(4e-7, 6.0 * PI / 1e-3, 0.0, 0.4, PI / 2.0)];
+    let two = vec![
+        cosine(1e-6, 1e-3),
+        wave(4e-7, 6.0 * PI / 1e-3, 0.0, 0.4, PI / 2.0),
+    ];
     let cases = [
         (layer(1e7, 0.3, f64::INFINITY), 0.5, two.clone(), 256),
         (layer(1e7, 0.49, 2e-4), 3.5, two, 256),
@@ -226,9 +273,14 @@ fn the_two_algorithms_agree() {
         let phi = setup.multipliers.tan_phi_max().atan();
         largest_phi = largest_phi.max(phi);
         let pbar = input.mean_pressure;
-        let (p, iterations) =
-            fixed_point::solve(&mut setup.operator(), &setup.initial_shape, pbar, 1e-11, 5000)
-                .unwrap();
+        let (p, iterations) = fixed_point::solve(
+            &mut setup.operator(),
+            &setup.initial_shape,
+            pbar,
+            1e-11,
+            5000,
+        )
+        .unwrap();
         let diff = p
             .iter()
             .zip(&s.pressure)
@@ -274,7 +326,11 @@ fn friction_moves_the_contact_backwards_and_b_below_zero_reverses_it() {
         let (setup, s) = state(&input, 512);
         let o = s.outputs;
         let shift = contact_shift(&s, &setup);
-        println!("B sign {sign}: shift {shift:+.4} l, psi {:+.3e}, mu* - mu {:+.3e}", o.psi, o.mu_star - mu);
+        println!(
+            "B sign {sign}: shift {shift:+.4} l, psi {:+.3e}, mu* - mu {:+.3e}",
+            o.psi,
+            o.mu_star - mu
+        );
         assert!(!o.complete);
         assert!(sign * shift > 0.0 && sign * o.psi > 0.0 && sign * (o.mu_star - mu) > 0.0);
     }
@@ -304,4 +360,42 @@ fn adhesion_in_contact_converges_with_the_cycle_guard() {
     assert!((fine.0.psi / stuck.0.psi - 1.0).abs() < 1e-3);
     assert!((fine.0.mean_gap / stuck.0.mean_gap - 1.0).abs() < 1e-4);
     assert!((fine.0.mu_star - stuck.0.mu_star).abs() < 1e-7);
+}
+
+#[test]
+fn mu_star_over_the_whole_range_of_mean_pressure() {
+    // issue 14, item 3: one curve, partial contact below the complete-contact load, the closed
+    // form (docs/physics/spatial.md section 5) above it; the "wave-thick-layer" preset's wave
+    use std::ops::ControlFlow;
+    use wearlab::physics::Spacing;
+    use wearlab::physics::spatial::partial::sweep::load_curve;
+    let material = layer(3e9, 0.3, 1e-2);
+    let input = inputs(material, 0.3, 0.0, 2e7, vec![cosine(1e-6, 1e-3)]);
+    let setup = Setup::new(&input, 256).unwrap();
+    let pressures = Spacing::Log.points(1e5, 5e7, 40);
+    let curve = load_curve(&setup, &setup.initial_shape, &pressures, &mut |_| {
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    // the complete-contact load is the pressure amplitude A/M (sampled at the nodes)
+    let closed = solve(&input, 0.0).unwrap();
+    let amplitude = 1e-6 / closed.harmonics[0].evolution.m;
+    let pc = curve.complete_mean_pressure;
+    assert!(pc <= amplitude && pc > amplitude * (1.0 - (PI / 256.0).powi(2)));
+    for (i, &pbar) in pressures.iter().enumerate() {
+        let fraction = curve.contact_fraction[i];
+        assert_eq!(fraction == 1.0, pbar >= pc, "pbar = {pbar:e}");
+        if pbar >= pc {
+            let mut at = input.clone();
+            at.mean_pressure = pbar;
+            assert!((curve.mu_star[i] - solve(&at, 0.0).unwrap().mu_star).abs() < 1e-14);
+        }
+        assert!(curve.mu_star[i] < 0.3);
+    }
+    // the contact grows with the load, and mu* is continuous through the complete-contact load
+    assert!(curve.contact_fraction.windows(2).all(|f| f[1] >= f[0]));
+    let below = pressures.iter().rposition(|p| *p < pc).unwrap();
+    let jump = (curve.mu_star[below + 1] - curve.mu_star[below]).abs();
+    let step = (curve.mu_star[below] - curve.mu_star[below - 1]).abs();
+    assert!(jump < 3.0 * step, "{jump:e} vs {step:e}");
 }

@@ -7,7 +7,8 @@
 //! norm and the full-cell inverse (K + c)^-1 as right preconditioner. Then
 //!   C <- {i in C: p_i > 0} u {i not in C: gap_i < 0},
 //! until C repeats. A set seen before is a cycle: the state of the cycle with the smallest natural
-//! residual is kept and the cycle reported.
+//! residual is kept and the cycle reported. The first sets are solved to a loose tolerance; once
+//! a set repeats, it is solved again to the full tolerance before it is accepted.
 
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::gmres::{Preconditioned, gmres};
@@ -21,6 +22,9 @@ const RESTART: usize = 40;
 const MAX_LINEAR_ITERATIONS: usize = 4000;
 /// GMRES tolerance, relative to the norm of the scaled right-hand side.
 const LINEAR_TOLERANCE: f64 = 1e-13;
+/// The looser tolerance of the first sets (inexact Newton): a set is accepted only after a solve
+/// to `LINEAR_TOLERANCE` reproduces it.
+const LOOSE_TOLERANCE: f64 = 1e-6;
 
 /// One contact problem: the shape and the load, with the operator K + c.
 #[derive(Clone, Copy, Debug)]
@@ -159,6 +163,7 @@ pub fn solve(
     let mut best: Option<ContactSolution> = None;
     let mut linear_iterations = 0;
     let (mut full, mut image, mut gap) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut relative_tolerance = LOOSE_TOLERANCE;
     for iteration in 1..=MAX_ACTIVE_SET_ITERATIONS {
         let active: Vec<usize> = (0..n).filter(|&i| set[i]).collect();
         let m = active.len();
@@ -176,7 +181,8 @@ pub fn solve(
         rhs.push(n as f64 / (m as f64).sqrt());
         let mut x: Vec<f64> = active.iter().map(|&i| pressure[i] / pbar).collect();
         x.push(offset / gap_scale);
-        let tol = LINEAR_TOLERANCE * rhs.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let rhs_norm = rhs.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let tol = relative_tolerance * rhs_norm;
         let mut sys = Bordered {
             op,
             active: &active,
@@ -195,7 +201,7 @@ pub fn solve(
             return Err(SolveError::NoSolution(format!(
                 "the contact solver's linear solve did not converge in {MAX_LINEAR_ITERATIONS} \
                  GMRES iterations (relative residual {:.1e})",
-                out.residual / (tol / LINEAR_TOLERANCE)
+                out.residual / rhs_norm
             )));
         }
         pressure.iter_mut().for_each(|v| *v = 0.0);
@@ -229,14 +235,23 @@ pub fn solve(
             cycled,
             residual,
         };
-        if next == set {
-            return Ok(state(false));
+        let loose = relative_tolerance > LINEAR_TOLERANCE;
+        if next == set || (loose && seen.contains(&bits(&next))) {
+            if loose {
+                // solve this set again, tightly, before accepting it or calling it a cycle
+                relative_tolerance = LINEAR_TOLERANCE;
+                seen.clear();
+                best = None;
+                continue;
+            }
+            if next == set {
+                return Ok(state(false));
+            }
         }
         if best.as_ref().is_none_or(|b| residual < b.residual) {
             best = Some(state(false));
         }
-        let key = bits(&next);
-        if seen.contains(&key) {
+        if seen.contains(&bits(&next)) {
             let mut b = best.expect("set after the first iteration");
             (b.cycled, b.iterations, b.linear_iterations) = (true, iteration, linear_iterations);
             // a node of the ill-posed zone may hold a small negative pressure: clip it, keeping

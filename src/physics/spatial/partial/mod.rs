@@ -87,11 +87,13 @@ impl Setup {
             )));
         }
         let mean_wear = self.inputs.wear_rate() * pbar * time;
+        // W >= 0 exactly (each BE/BDF2 increment of W is >= 0, section 5): the max only removes
+        // the round-off of the subtraction (~1e-16 of U)
         let wear = self
             .initial_shape
             .iter()
             .zip(&shape)
-            .map(|(u0, u)| mean_wear + u0 - u)
+            .map(|(u0, u)| (mean_wear + u0 - u).max(0.0))
             .collect();
         Ok(State {
             grid: self.grid,

@@ -138,10 +138,22 @@ impl Fft2 {
     }
 
     /// out = F^-1[m F[f]], with the multiplier m(i) at spectral index i. The rows' spectra are
-    /// transposed (cache-blocked) so that the y transforms run on contiguous columns.
+    /// transposed (cache-blocked) so that the y transforms run on contiguous columns; a grid of
+    /// one row (or one column) skips the transforms of length 1.
     fn filter(&mut self, f: &[f64], out: &mut [f64], m: impl Fn(usize) -> C64) {
         let (nx, ny) = (self.nx, self.ny);
         let nkx = nx / 2 + 1;
+        let scale = 1.0 / (nx * ny) as f64;
+        if nx == 1 {
+            for (s, v) in self.spectrum.iter_mut().zip(f) {
+                *s = C64::new(*v, 0.0);
+            }
+            self.columns(&m);
+            for (o, s) in out.iter_mut().zip(&self.spectrum) {
+                *o = s.re * scale;
+            }
+            return;
+        }
         for j in 0..ny {
             self.row.copy_from_slice(&f[j * nx..(j + 1) * nx]);
             self.r2c
@@ -152,16 +164,15 @@ impl Fft2 {
                 )
                 .expect("buffer lengths come from the plan");
         }
-        transpose::transpose(&self.rows, &mut self.spectrum, nkx, ny);
-        self.forward
-            .process_with_scratch(&mut self.spectrum, &mut self.scratch);
-        for (i, v) in self.spectrum.iter_mut().enumerate() {
-            *v *= m(i);
+        if ny == 1 {
+            for (i, v) in self.rows.iter_mut().enumerate() {
+                *v *= m(i);
+            }
+        } else {
+            transpose::transpose(&self.rows, &mut self.spectrum, nkx, ny);
+            self.columns(&m);
+            transpose::transpose(&self.spectrum, &mut self.rows, ny, nkx);
         }
-        self.inverse
-            .process_with_scratch(&mut self.spectrum, &mut self.scratch);
-        transpose::transpose(&self.spectrum, &mut self.rows, ny, nkx);
-        let scale = 1.0 / (nx * ny) as f64;
         for j in 0..ny {
             let row_spectrum = &mut self.rows[j * nkx..(j + 1) * nkx];
             // the zero and Nyquist bins of a real signal are real: drop the round-off
@@ -176,6 +187,17 @@ impl Fft2 {
                 *o = r * scale;
             }
         }
+    }
+
+    /// The y transform of every column of `spectrum`, the multiplier, and the inverse transform.
+    fn columns(&mut self, m: &impl Fn(usize) -> C64) {
+        self.forward
+            .process_with_scratch(&mut self.spectrum, &mut self.scratch);
+        for (i, v) in self.spectrum.iter_mut().enumerate() {
+            *v *= m(i);
+        }
+        self.inverse
+            .process_with_scratch(&mut self.spectrum, &mut self.scratch);
     }
 }
 

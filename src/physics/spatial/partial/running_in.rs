@@ -29,8 +29,8 @@ pub const STEPS_PER_DECAY_TIME: f64 = 50.0;
 pub const HORIZON_DECAY_TIMES: f64 = 100.0;
 /// And over at most this many steps.
 pub const MAX_STEPS: usize = 20_000;
-/// Most shape values kept for replaying the steps (older snapshots are thinned beyond it).
-const SNAPSHOT_VALUES: usize = 1 << 22;
+/// Shape values kept for replaying the steps (32 MiB; snapshots are thinned beyond it).
+pub const SNAPSHOT_VALUES: usize = 1 << 22;
 
 /// Why a long computation stopped without an answer.
 #[derive(Clone, Debug, Error, PartialEq)]
@@ -50,6 +50,9 @@ pub struct Stepping {
     pub dt: f64,
     /// Most steps.
     pub max_steps: usize,
+    /// Most shape values kept for replaying the steps in `state_at` (every k-th step is kept,
+    /// k doubling whenever the snapshots would exceed it).
+    pub memory: usize,
 }
 
 impl Stepping {
@@ -78,6 +81,7 @@ impl Stepping {
             } else {
                 MAX_STEPS
             },
+            memory: SNAPSHOT_VALUES,
         })
     }
 }
@@ -266,7 +270,7 @@ pub fn run_in_with(
             run.complete_from = Some(time);
             break;
         }
-        run.keep(&stepper);
+        run.keep(&stepper, stepping.memory);
         let done = (1.0 - outputs.min_pressure_complete / m0).clamp(0.0, 1.0);
         if progress(done).is_break() {
             return Err(Stopped::Cancelled);
@@ -278,7 +282,7 @@ pub fn run_in_with(
 
 impl RunningIn {
     /// Keeps a snapshot of every `stride`-th step, thinning to every other one beyond the budget.
-    fn keep(&mut self, s: &Stepper) {
+    fn keep(&mut self, s: &Stepper, memory: usize) {
         if s.step % self.stride != 0 {
             return;
         }
@@ -288,8 +292,7 @@ impl RunningIn {
             shape: s.current.clone(),
             contact: s.contact.clone(),
         });
-        if self.snapshots.len() * 2 * s.current.len() > SNAPSHOT_VALUES && self.snapshots.len() > 2
-        {
+        if self.snapshots.len() * 2 * s.current.len() > memory && self.snapshots.len() > 2 {
             self.stride *= 2;
             let stride = self.stride;
             self.snapshots.retain(|s| s.step % stride == 0);

@@ -1,0 +1,79 @@
+//! Partial contact (docs/physics/spatial-partial.md): one active-set solve on 128 x 128,
+//! 256 x 256 and 4096 x 1, and a running-in to complete contact for a 1-D and a 2-D preset.
+
+use std::ops::ControlFlow;
+use std::time::Duration;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use std::hint::black_box;
+use wearlab::physics::spatial::SpatialInputs;
+use wearlab::physics::spatial::partial::Setup;
+use wearlab::physics::spatial::partial::running_in::run_in;
+use wearlab::preset::bundled;
+
+fn preset(file: &str) -> SpatialInputs {
+    bundled(file).unwrap().unwrap().spatial_inputs()
+}
+
+/// One contact solve from a cold start (the complete-contact set).
+fn solve_once(c: &mut Criterion, name: &str, inputs: &SpatialInputs, side: usize) {
+    let setup = Setup::new(inputs, side).unwrap();
+    let s = setup
+        .state(
+            &mut setup.operator(),
+            setup.initial_shape.clone(),
+            0.0,
+            None,
+        )
+        .unwrap();
+    assert!(!s.outputs.complete);
+    println!(
+        "{name}: contact {:.3}, {:?}",
+        s.outputs.contact_fraction, s.work
+    );
+    c.bench_function(name, |b| {
+        b.iter(|| {
+            let mut op = setup.operator();
+            black_box(
+                setup
+                    .state(&mut op, setup.initial_shape.clone(), 0.0, None)
+                    .unwrap(),
+            )
+        })
+    });
+}
+
+fn bench(c: &mut Criterion) {
+    // the egg-box of "jgh-egg-box" at a quarter of its mean pressure, with friction on a layer
+    let mut egg = preset("jgh-egg-box.toml");
+    egg.mean_pressure = 2.5e7;
+    egg.friction.coefficient = 0.3;
+    egg.material.thickness = 5e-4;
+    solve_once(c, "partial_solve/128x128", &egg, 128);
+    solve_once(c, "partial_solve/256x256", &egg, 256);
+    // the 1-D wave of "contact-lost" (partial at t = 0)
+    let wave = preset("contact-lost.toml");
+    solve_once(c, "partial_solve/4096x1", &wave, 4096);
+    for (name, inputs, side) in [
+        ("running_in/1d_256", &wave, 256),
+        ("running_in/2d_64x64", &egg, 64),
+    ] {
+        let setup = Setup::new(inputs, side).unwrap();
+        let run = run_in(&setup, &mut |_| ControlFlow::Continue(())).unwrap();
+        println!(
+            "{name}: {} steps to complete contact at t = {:.4e} s",
+            run.samples.len() - 1,
+            run.time_to_complete.unwrap()
+        );
+        c.bench_function(name, |b| {
+            b.iter(|| black_box(run_in(&setup, &mut |_| ControlFlow::Continue(())).unwrap()))
+        });
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(10).measurement_time(Duration::from_secs(3));
+    targets = bench
+}
+criterion_main!(benches);
