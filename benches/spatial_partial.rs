@@ -18,28 +18,14 @@ fn preset(file: &str) -> SpatialInputs {
 /// One contact solve from a cold start (the complete-contact set).
 fn solve_once(c: &mut Criterion, name: &str, inputs: &SpatialInputs, side: usize) {
     let setup = Setup::new(inputs, side).unwrap();
-    let s = setup
-        .state(
-            &mut setup.operator(),
-            setup.initial_shape.clone(),
-            0.0,
-            None,
-        )
-        .unwrap();
+    let s = setup.initial_state().unwrap();
     assert!(!s.outputs.complete);
     println!(
         "{name}: contact {:.3}, {:?}",
         s.outputs.contact_fraction, s.work
     );
     c.bench_function(name, |b| {
-        b.iter(|| {
-            let mut op = setup.operator();
-            black_box(
-                setup
-                    .state(&mut op, setup.initial_shape.clone(), 0.0, None)
-                    .unwrap(),
-            )
-        })
+        b.iter(|| black_box(setup.initial_state().unwrap()))
     });
 }
 

@@ -1,62 +1,26 @@
 //! Partial contact on the period cell (docs/physics/spatial-partial.md) against classical
 //! closed forms, the closed form of complete contact and the second algorithm.
 
+mod common;
+
 use std::f64::consts::PI;
 
+use common::{cosine, harmonic as wave, layer};
+
+use wearlab::physics::Material;
 use wearlab::physics::spatial::harmonic::Harmonic;
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::fixed_point;
 use wearlab::physics::spatial::partial::state::State;
 use wearlab::physics::spatial::{SpatialInputs, solve};
-use wearlab::physics::{Friction, Material};
-
-fn wave(a: f64, wx: f64, wy: f64, px: f64, py: f64) -> Harmonic {
-    Harmonic {
-        amplitude: a,
-        wavenumber_x: wx,
-        wavenumber_y: wy,
-        phase_x: px,
-        phase_y: py,
-    }
-}
-
-/// Delta cos(2 pi x/l) along x.
-fn cosine(delta: f64, l: f64) -> Harmonic {
-    wave(delta, 2.0 * PI / l, 0.0, PI / 2.0, PI / 2.0)
-}
 
 fn inputs(material: Material, mu: f64, tau0: f64, pbar: f64, h: Vec<Harmonic>) -> SpatialInputs {
-    SpatialInputs {
-        material,
-        friction: Friction {
-            coefficient: mu,
-            adhesion: tau0,
-        },
-        wear: 0.0,
-        sliding_speed: 1.0,
-        mean_pressure: pbar,
-        harmonics: h,
-    }
-}
-
-fn layer(e: f64, nu: f64, h: f64) -> Material {
-    Material {
-        youngs_modulus: e,
-        poisson_ratio: nu,
-        thickness: h,
-    }
+    common::spatial(material, mu, tau0, 0.0, pbar, h)
 }
 
 fn state(inputs: &SpatialInputs, n: usize) -> (Setup, State) {
     let setup = Setup::new(inputs, n).unwrap();
-    let s = setup
-        .state(
-            &mut setup.operator(),
-            setup.initial_shape.clone(),
-            0.0,
-            None,
-        )
-        .unwrap();
+    let s = setup.initial_state().unwrap();
     (setup, s)
 }
 

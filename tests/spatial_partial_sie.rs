@@ -26,10 +26,7 @@ use std::f64::consts::PI;
 use nalgebra::{DMatrix, DVector};
 use wearlab::physics::quadrature::{gauss_jacobi, jacobi_zeros, tanh_sinh};
 use wearlab::physics::roots::brent_to;
-use wearlab::physics::spatial::SpatialInputs;
-use wearlab::physics::spatial::harmonic::Harmonic;
 use wearlab::physics::spatial::partial::Setup;
-use wearlab::physics::{Friction, Material};
 
 /// cot z - 1/z, smooth for |z| < pi (series below 0.1: the next term, z^9/93555, is < 1e-14).
 fn cot_minus_pole(z: f64) -> f64 {
@@ -255,36 +252,11 @@ fn wave(mu: f64) -> Wave {
 
 /// The FFT solver's outputs for the same wave at the SIE's mean pressure on N nodes.
 fn fft(wave: &Wave, pbar: f64, n: usize) -> [f64; 5] {
-    let inputs = SpatialInputs {
-        material: Material {
-            youngs_modulus: 2.0 * wave.g * (1.0 + wave.nu),
-            poisson_ratio: wave.nu,
-            thickness: f64::INFINITY,
-        },
-        friction: Friction {
-            coefficient: wave.mu,
-            adhesion: 0.0,
-        },
-        wear: 0.0,
-        sliding_speed: 1.0,
-        mean_pressure: pbar,
-        harmonics: vec![Harmonic {
-            amplitude: wave.delta,
-            wavenumber_x: 2.0 * PI / wave.l,
-            wavenumber_y: 0.0,
-            phase_x: PI / 2.0,
-            phase_y: PI / 2.0,
-        }],
-    };
+    let material = common::layer(2.0 * wave.g * (1.0 + wave.nu), wave.nu, f64::INFINITY);
+    let harmonics = vec![common::cosine(wave.delta, wave.l)];
+    let inputs = common::spatial(material, wave.mu, 0.0, 0.0, pbar, harmonics);
     let setup = Setup::new(&inputs, n).unwrap();
-    let state = setup
-        .state(
-            &mut setup.operator(),
-            setup.initial_shape.clone(),
-            0.0,
-            None,
-        )
-        .unwrap();
+    let state = setup.initial_state().unwrap();
     let o = state.outputs;
     [
         o.contact_fraction,

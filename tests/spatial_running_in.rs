@@ -2,47 +2,27 @@
 //! conservation, monotone wear, the closed form of complete contact from the stepping, the time
 //! to complete contact, the explicit step's stability bound, replay and cancel.
 
+mod common;
+
 use std::f64::consts::PI;
+
+use common::cosine;
 use std::ops::ControlFlow;
 
+use wearlab::physics::Material;
 use wearlab::physics::spatial::harmonic::{Harmonic, evolution, layer_response};
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::running_in::{
     RunningIn, SNAPSHOT_VALUES, Stepper, Stepping, Stopped, run_in, run_in_with,
 };
 use wearlab::physics::spatial::{SpatialInputs, solve};
-use wearlab::physics::{Friction, Material};
-
-fn cosine(delta: f64, l: f64) -> Harmonic {
-    Harmonic {
-        amplitude: delta,
-        wavenumber_x: 2.0 * PI / l,
-        wavenumber_y: 0.0,
-        phase_x: PI / 2.0,
-        phase_y: PI / 2.0,
-    }
-}
 
 fn inputs(material: Material, mu: f64, tau0: f64, pbar: f64, h: Vec<Harmonic>) -> SpatialInputs {
-    SpatialInputs {
-        material,
-        friction: Friction {
-            coefficient: mu,
-            adhesion: tau0,
-        },
-        wear: 1e-15,
-        sliding_speed: 1.0,
-        mean_pressure: pbar,
-        harmonics: h,
-    }
+    common::spatial(material, mu, tau0, 1e-15, pbar, h)
 }
 
 fn half_space() -> Material {
-    Material {
-        youngs_modulus: 2e11,
-        poisson_ratio: 0.3,
-        thickness: f64::INFINITY,
-    }
+    common::layer(2e11, 0.3, f64::INFINITY)
 }
 
 /// The wave of issue 14's example: 1 um, 1 mm on a half-space at pbar = 0.3 p*.

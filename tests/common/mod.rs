@@ -53,3 +53,57 @@ pub fn hilbert(lo: f64, hi: f64, x: f64, q: &impl Fn(f64) -> f64) -> f64 {
 pub fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / a.abs().max(b.abs()).max(f64::MIN_POSITIVE)
 }
+
+/// One harmonic a sin(wx x + px) sin(wy y + py) of a spatial punch.
+pub fn harmonic(
+    a: f64,
+    wx: f64,
+    wy: f64,
+    px: f64,
+    py: f64,
+) -> wearlab::physics::spatial::harmonic::Harmonic {
+    wearlab::physics::spatial::harmonic::Harmonic {
+        amplitude: a,
+        wavenumber_x: wx,
+        wavenumber_y: wy,
+        phase_x: px,
+        phase_y: py,
+    }
+}
+
+/// delta cos(2 pi x/l) along x (a 1-D shape).
+pub fn cosine(delta: f64, l: f64) -> wearlab::physics::spatial::harmonic::Harmonic {
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    harmonic(delta, 2.0 * std::f64::consts::PI / l, 0.0, half_pi, half_pi)
+}
+
+/// A layer of modulus e, Poisson ratio nu and thickness h (inf: half-space).
+pub fn layer(e: f64, nu: f64, h: f64) -> Material {
+    Material {
+        youngs_modulus: e,
+        poisson_ratio: nu,
+        thickness: h,
+    }
+}
+
+/// Spatial inputs with V = 1 m/s (so k_w = k).
+pub fn spatial(
+    material: Material,
+    mu: f64,
+    tau0: f64,
+    k: f64,
+    pbar: f64,
+    harmonics: Vec<wearlab::physics::spatial::harmonic::Harmonic>,
+) -> wearlab::physics::spatial::SpatialInputs {
+    wearlab::physics::spatial::SpatialInputs {
+        material,
+        friction: Friction {
+            coefficient: mu,
+            adhesion: tau0,
+        },
+        wear: k,
+        sliding_speed: 1.0,
+        mean_pressure: pbar,
+        harmonics,
+    }
+}

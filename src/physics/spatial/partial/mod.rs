@@ -59,6 +59,11 @@ impl Setup {
         Operator::new(Arc::clone(&self.multipliers))
     }
 
+    /// The contact state at t = 0 (a fresh operator; the first thing to show after an edit).
+    pub fn initial_state(&self) -> Result<State, SolveError> {
+        self.state(&mut self.operator(), self.initial_shape.clone(), 0.0, None)
+    }
+
     /// The contact state of the zero-mean shape `shape` [m] at time `time` [s] (which sets the
     /// mean wear k_w pbar t), starting the active set from `start` when given. Refused when the
     /// vertical force P is not positive (slopes far beyond the small-slope theory).
