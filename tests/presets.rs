@@ -89,7 +89,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&unknown),
         format!(
-            "lab/broken.toml:{}: unknown field `rate`, expected `coefficient`",
+            "lab/broken.toml:{}: unknown key \"rate\"; allowed here: \"coefficient\"",
             line_of(&unknown, "rate")
         )
     );
@@ -105,7 +105,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&wrong_type),
         format!(
-            "lab/broken.toml:{}: invalid type: string \"big\", expected f64",
+            "lab/broken.toml:{}: radius: expected a number (SI units, e.g. 3.0e9), found the text \"big\"",
             line_of(&wrong_type, "radius")
         )
     );

@@ -11,6 +11,7 @@ use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::validate_harmonics;
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 use crate::preset::file::{FilePlane, FilePreset, FileSpatial};
+use crate::preset::wording;
 use crate::preset::{
     PlaneSection, Preset, PresetError, Problem, SCHEMA, SpatialSection, default_load_sweep,
     default_plane_section, default_pressure_sweep, default_spatial_section,
@@ -49,8 +50,8 @@ impl Checker<'_> {
 pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
     let ck = Checker { path, text };
     let file: FilePreset = toml::from_str(text).map_err(|e| {
-        let reason = e.message().trim().replace('\n', " ");
-        ck.error(e.span(), reason)
+        let before = &text[..e.span().map_or(0, |s| s.start.min(text.len()))];
+        ck.error(e.span(), wording::reason(e.message(), before))
     })?;
     if *file.schema.get_ref() != SCHEMA {
         return Err(ck.error(

@@ -10,7 +10,7 @@ use toml::Spanned;
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
 use crate::preset::{
-    Preset, PresetError, Problem, SCHEMA, SpatialSection, default_spatial_section, parse,
+    Preset, PresetError, Problem, SCHEMA, SpatialSection, default_spatial_section, disk, parse,
 };
 
 #[derive(Deserialize, Serialize)]
@@ -124,14 +124,10 @@ pub(super) fn plain<T>(value: T) -> Spanned<T> {
     Spanned::new(0..0, value)
 }
 
-/// Reads and validates a preset file.
+/// Reads and validates a preset file (a regular UTF-8 file of at most
+/// `disk::MAX_PRESET_BYTES`).
 pub fn load(path: &Path) -> Result<Preset, PresetError> {
-    let text = std::fs::read_to_string(path).map_err(|e| PresetError {
-        path: path.to_path_buf(),
-        line: None,
-        reason: format!("cannot read the file: {e}"),
-    })?;
-    parse(&text, path)
+    parse(&disk::read_text(path)?, path)
 }
 
 /// The preset as TOML text (schema 1).
@@ -199,31 +195,10 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
     }
 }
 
-/// Writes `path` atomically: the bytes go to a temporary file in the same folder, which is
-/// synced and then renamed over `path`. If `write` fails, the old file is untouched and the
-/// temporary file is removed.
-pub fn write_atomically(
-    path: &Path,
-    write: impl FnOnce(&mut std::fs::File) -> std::io::Result<()>,
-) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".wearlab-save-")
-        .tempfile_in(dir)?;
-    write(tmp.as_file_mut())?;
-    tmp.as_file_mut().flush()?;
-    tmp.as_file().sync_all()?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
-}
-
 /// Saves a preset atomically.
 pub fn save(preset: &Preset, path: &Path) -> std::io::Result<()> {
     let text = to_toml(preset);
-    write_atomically(path, |f| f.write_all(text.as_bytes()))
+    disk::write_atomically(path, |f| f.write_all(text.as_bytes()))
 }
 
 /// Where a name typed in the explorer's save prompt goes.

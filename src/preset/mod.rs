@@ -3,9 +3,11 @@
 
 mod bundled;
 mod check;
+mod disk;
 mod file;
 mod key;
 mod params;
+mod wording;
 
 use std::fmt;
 use std::path::PathBuf;
@@ -19,7 +21,8 @@ use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
 pub use check::parse;
-pub use file::{SaveTarget, load, resolve_save_path, save, to_toml, write_atomically};
+pub use disk::{MAX_PRESET_BYTES, write_atomically};
+pub use file::{SaveTarget, load, resolve_save_path, save, to_toml};
 pub use key::Key;
 pub use params::{Access, PARAMS, Param};
 
