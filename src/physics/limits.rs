@@ -2,18 +2,20 @@
 //! explorer's form all check against these and quote `allowed` when a value is rejected.
 //!
 //! The ranges cover every real contact by orders of magnitude and are chosen so that no formula
-//! of the solvers overflows or divides by zero (the products are worked out in the README's
-//! parameter table). The largest ones:
+//! of the solvers overflows or divides by zero (the README's parameter section states them too).
+//! The largest products:
 //! - plane modulus m = pi E/(2 (1 - nu^2)) in [1.6e2, 2.1e13] Pa; the Hertz width sqrt(8 R P/m)
 //!   in [6e-16, 2.3e8] m, and the wide model's search spans 1e-4 .. 1e6 times it, so L^4 (the
 //!   Winkler psi) stays below 1e58;
 //! - m k <= 2.1e12 keeps the exponent shift theta = arctan(m gamma/pi)/pi at least 1e-13 away
 //!   from +-1/2 (1 - 4 theta^2 > 0, (4.6));
-//! - the Winkler compliance beta = (1 - 2nu)(1 + nu) h/((1 - nu) E) lies in [1e-38, 30] m/Pa and
+//! - the Winkler compliance beta = (1 - 2nu)(1 + nu) h/((1 - nu) E) lies in [3e-38, 10] m/Pa and
 //!   lambda = k/beta below 1e37 1/m (the Winkler forms use exponentials of negative arguments);
-//! - G k <= 5e22 Pa/m and the layer's normal compliance >= 1e-38 m/Pa, so 1/M <= 1e38 Pa/m, the
-//!   Hessian bound sum k^2 A/M <= 1e58 Pa/m^2 and the decay rate k V/M <= 1e40 1/s (exp(-beta t)
-//!   underflows to 0, never NaN); phases stay below 1e53 rad (sin is finite);
+//! - G k <= 7e22 Pa/m (k = |(wx, wy)|) and the layer's normal compliance (1 - nu) K2/(G k) >=
+//!   1e-38 m/Pa (K2 is evaluated without cancellation, `elastic::strip_transfer`), so
+//!   1/M <= 1e38 Pa/m, the Hessian bound sum k^2 A/M <= 1e60 Pa/m^2 (64 harmonics) and the decay
+//!   rate k V/M <= 1e40 1/s (exp(-beta t) underflows to 0, never NaN); phases stay below 1e53 rad
+//!   (sin is finite);
 //! - a sweep's max/min is at most the ratio of its parameter's bounds (1e21), so its logarithm is
 //!   finite.
 
