@@ -169,3 +169,63 @@ pub fn spatial(sol: &SpatialSolution) -> Result<(), SolveError> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::plane::{Model, PlaneInputs, wide};
+    use crate::physics::{Friction, Material};
+
+    /// Hertz line contact (half-plane, no friction, no wear): a solution that passes.
+    fn hertz() -> PlaneSolution {
+        wide::solve(&PlaneInputs {
+            material: Material {
+                youngs_modulus: 1e9,
+                poisson_ratio: 0.3,
+                thickness: f64::INFINITY,
+            },
+            friction: Friction {
+                coefficient: 0.0,
+                adhesion: 0.0,
+            },
+            wear: 0.0,
+            radius: 0.05,
+            load: 1e4,
+        })
+        .unwrap()
+    }
+
+    fn why(sol: &PlaneSolution) -> String {
+        plane(sol).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn each_plane_check_names_itself() {
+        let good = hertz();
+        assert_eq!(plane(&good), Ok(()));
+        assert_eq!(good.model, Model::Wide);
+        let mut s = good.clone();
+        s.mu_star = f64::NAN;
+        assert!(why(&s).contains("not a finite number: mu* = NaN"));
+        let mut s = good.clone();
+        s.normal_force *= 2.0;
+        assert!(why(&s).contains("not the load P = 1.0000e4 N/m"));
+        let mut s = good.clone();
+        s.inputs.load = -s.normal_force;
+        s.normal_force = -s.normal_force;
+        assert!(why(&s).contains("Q2 = -1.0000e4 N/m is not positive"));
+        let mut s = good.clone();
+        s.law = PressureLaw::Wide {
+            c: -1.0,
+            theta: 0.0,
+        };
+        assert!(why(&s).contains("needs c > 0"));
+        let mut s = good.clone();
+        (s.a, s.b) = (-0.1 * good.b, good.a + 1.1 * good.b);
+        assert!(why(&s).contains("does not contain the punch tip"));
+        // with adhesion the surface tilts and the zone may leave the tip
+        s.inputs.friction.adhesion = 1.0;
+        s.inputs.load = s.normal_force - s.inputs.friction.adhesion * s.delta_g;
+        assert_eq!(plane(&s), Ok(()));
+    }
+}
