@@ -7,12 +7,16 @@ use std::path::Path;
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-const SOCKET: &str = "wearlab-e2e";
+/// A tmux server of this test run's own: a new session on a server that is still shutting down
+/// after an earlier run would die with it.
+fn socket() -> String {
+    format!("wearlab-e2e-{}", std::process::id())
+}
 
 fn tmux(args: &[&str]) -> String {
     let out = Command::new("tmux")
         .arg("-L")
-        .arg(SOCKET)
+        .arg(socket())
         .args(args)
         .output()
         .expect("tmux runs");
@@ -49,6 +53,22 @@ fn footer() -> String {
     screen().lines().last().unwrap_or("").trim_end().to_string()
 }
 
+/// Waits until the footer is `text`.
+fn wait_footer(text: &str) {
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while footer() != text {
+        assert!(
+            Instant::now() < deadline,
+            "footer never became '{text}': {}",
+            screen()
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+/// The main screen's footer of the plane problem at 80 columns.
+const PLANE_80: &str = "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ? help q quit";
+
 fn resize(w: &str, h: &str) {
     tmux(&["resize-window", "-t", "e2e", "-x", w, "-y", h]);
 }
@@ -63,13 +83,14 @@ fn a_session_in_tmux() {
     let dir = tempfile::tempdir().unwrap();
     let exit_file = dir.path().join("exit");
     let preset = Path::new(env!("CARGO_MANIFEST_DIR")).join("presets/polymer-coating.toml");
+    // in a folder of its own, so that nothing it might write lands in the checkout
     let script = format!(
-        "TERM=xterm-256color {} {}; echo $? > {}; sleep 30",
+        "cd {} && TERM=xterm-256color {} {}; echo $? > {}; sleep 30",
+        dir.path().display(),
         bin.display(),
         preset.display(),
         exit_file.display()
     );
-    tmux(&["kill-session", "-t", "e2e"]);
     tmux(&[
         "new-session",
         "-d",
@@ -84,10 +105,7 @@ fn a_session_in_tmux() {
     wait_for("valid: (a+b)/h = 0.061");
 
     // the footers of both problems at 80 and 120 columns
-    assert_eq!(
-        footer(),
-        "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ? help q quit"
-    );
+    assert_eq!(footer(), PLANE_80);
     resize("120", "40");
     wait_for("u undo  ? help  q quit");
     assert_eq!(
@@ -108,6 +126,7 @@ fn a_session_in_tmux() {
     );
     keys(&["u"]);
     wait_for("undo: problem spatial -> plane");
+    wait_footer(PLANE_80);
 
     // the help names every model; Enter on a choice row lists the choices
     keys(&["?"]);
@@ -116,20 +135,25 @@ fn a_session_in_tmux() {
         help.contains("  m                 cycle the plane model (wide, narrow, strip)"),
         "{help}"
     );
-    keys(&["Escape"]);
+    // (no Escape followed at once by another key: the two may read as Alt-key)
+    keys(&["?"]);
+    wait_footer(PLANE_80);
     for _ in 0..6 {
         keys(&["j"]);
     }
     keys(&["Enter"]);
     let list = wait_for("model: one of wide, narrow, strip");
     assert!(list.contains("│ strip"), "{list}");
-    keys(&["Escape"]);
+    // Enter on the current choice changes nothing
+    keys(&["Enter"]);
+    wait_footer(PLANE_80);
     for _ in 0..6 {
         keys(&["j"]);
     }
     keys(&["Enter"]);
     wait_for("scale: one of log, linear");
-    keys(&["Escape"]);
+    keys(&["Enter"]);
+    wait_footer(PLANE_80);
 
     // edit the load: P is the ninth row
     for _ in 0..4 {
@@ -171,5 +195,5 @@ fn a_session_in_tmux() {
     assert_eq!(std::fs::read_to_string(&exit_file).unwrap().trim(), "0");
     // the terminal is restored: the alternate screen is gone
     assert!(!screen().contains("operating point"));
-    tmux(&["kill-session", "-t", "e2e"]);
+    tmux(&["kill-server"]);
 }

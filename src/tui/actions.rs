@@ -64,7 +64,9 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             };
             app.ui.selected = 0;
             app.ui.playing = false;
-            apply(app, next, change)
+            let commands = apply(app, next, change);
+            app.say(format!("problem: {}", app.doc.preset.problem.name()));
+            commands
         }
         Action::CycleModel => {
             let row = app
@@ -145,6 +147,8 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
         return Vec::new();
     }
     let previous = std::mem::replace(&mut app.doc.preset, next);
+    // a notice about an earlier step no longer applies
+    app.ui.message = None;
     app.doc.undo.push((previous, change));
     if app.doc.undo.len() > UNDO_DEPTH {
         app.doc.undo.remove(0);
@@ -179,7 +183,8 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
 /// Quits, or asks first when there are unsaved edits.
 pub fn quit(app: &mut App) -> Vec<Command> {
     if app.doc.dirty {
-        app.ui.mode = Mode::ConfirmQuit;
+        let from = std::mem::replace(&mut app.ui.mode, Mode::Normal);
+        app.ui.mode = Mode::ConfirmQuit(Box::new(from));
         Vec::new()
     } else {
         vec![Command::Quit]

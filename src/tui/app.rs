@@ -79,8 +79,8 @@ pub enum Mode {
     ConfirmOverwrite(SaveTarget),
     /// Unsaved edits: open this preset anyway?
     ConfirmOpen(Box<PickerEntry>),
-    /// Unsaved edits: quit anyway?
-    ConfirmQuit,
+    /// Unsaved edits: quit anyway? (No goes back to the mode it was asked from.)
+    ConfirmQuit(Box<Mode>),
 }
 
 /// A preset the picker offers.

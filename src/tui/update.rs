@@ -85,7 +85,7 @@ fn on_answer(app: &mut App, answer: Answer) -> Vec<Command> {
 fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
     if keys::is_ctrl_c(&key) {
         return match app.ui.mode {
-            Mode::ConfirmQuit => vec![Command::Quit],
+            Mode::ConfirmQuit(_) => vec![Command::Quit],
             _ => quit(app),
         };
     }
@@ -112,6 +112,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             match keys::prompt_action(Prompt::List, &key) {
                 Some(PromptAction::Accept) => {
                     app.ui.mode = Mode::Normal;
+                    app.ui.message = None;
                     let row = app.row();
                     match crate::tui::form::set(&app.doc.preset, &row, selected as f64) {
                         Ok((next, change)) => apply(app, next, change),
@@ -194,11 +195,11 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 Vec::new()
             }
         }
-        Mode::ConfirmQuit => {
+        Mode::ConfirmQuit(from) => {
             if yes(&key) {
                 return vec![Command::Quit];
             }
-            app.ui.mode = Mode::Normal;
+            app.ui.mode = *from;
             app.say("still here");
             Vec::new()
         }

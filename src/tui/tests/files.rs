@@ -137,7 +137,7 @@ fn q_quits_and_asks_when_there_are_unsaved_edits() {
     assert_eq!(press(&mut app, KeyCode::Char('q')), vec![Command::Quit]);
     press(&mut app, KeyCode::Right);
     assert!(press(&mut app, KeyCode::Char('q')).is_empty());
-    assert_eq!(app.ui.mode, Mode::ConfirmQuit);
+    assert_eq!(app.ui.mode, Mode::ConfirmQuit(Box::new(Mode::Normal)));
     press(&mut app, KeyCode::Char('n'));
     assert_eq!(app.ui.mode, Mode::Normal);
     press(&mut app, KeyCode::Char('q'));
@@ -168,7 +168,7 @@ fn ctrl_c_quits_from_every_mode() {
         Mode::SaveAs("my lab".into()),
         Mode::ConfirmOverwrite(target),
         Mode::ConfirmOpen(Box::new(entry)),
-        Mode::ConfirmQuit,
+        Mode::ConfirmQuit(Box::new(Mode::Normal)),
     ];
     for mode in modes {
         let mut clean = app("polymer-coating.toml");
@@ -179,9 +179,13 @@ fn ctrl_c_quits_from_every_mode() {
         edited.doc.dirty = true;
         edited.ui.mode = mode.clone();
         let first = ctrl(&mut edited, 'c');
-        if mode != Mode::ConfirmQuit {
+        if !matches!(mode, Mode::ConfirmQuit(_)) {
             assert!(first.is_empty(), "{mode:?}");
-            assert_eq!(edited.ui.mode, Mode::ConfirmQuit);
+            assert_eq!(edited.ui.mode, Mode::ConfirmQuit(Box::new(mode.clone())));
+            // answering no goes back to what was being done, the typed text included
+            press(&mut edited, KeyCode::Char('n'));
+            assert_eq!(edited.ui.mode, mode, "no returns");
+            ctrl(&mut edited, 'c');
         }
         assert_eq!(ctrl(&mut edited, 'c'), vec![Command::Quit], "{mode:?}");
     }

@@ -16,7 +16,7 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
         Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
         Mode::Help(_) => Some(Prompt::Help),
-        Mode::ConfirmOverwrite(_) | Mode::ConfirmOpen(_) | Mode::ConfirmQuit => {
+        Mode::ConfirmOverwrite(_) | Mode::ConfirmOpen(_) | Mode::ConfirmQuit(_) => {
             Some(Prompt::Question)
         }
     }
@@ -38,7 +38,7 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
             format!("unsaved edits: open \"{}\" anyway? y/n", entry.title),
             style.error(),
         ),
-        Mode::ConfirmQuit => ("unsaved edits: quit anyway? y/n".into(), style.error()),
+        Mode::ConfirmQuit(_) => ("unsaved edits: quit anyway? y/n".into(), style.error()),
         _ => match &app.ui.message {
             Some(m) if m.error => (m.text.clone(), style.error()),
             Some(m) => (m.text.clone(), Style::default()),
