@@ -36,8 +36,7 @@ pub fn format_si(value: f64, unit: &str) -> String {
             "-inf".into()
         };
     }
-    let prefixable = !unit.is_empty() && !unit.starts_with("1/") && !unit.starts_with("rad");
-    if !prefixable {
+    if !prefixable(unit) {
         let text = if value == 0.0 {
             "0".to_string()
         } else if (1e-2..1e4).contains(&value.abs()) {
@@ -65,8 +64,8 @@ pub fn format_si(value: f64, unit: &str) -> String {
     } else {
         2
     };
-    match PREFIXES.iter().find(|(_, e)| *e == exp) {
-        Some((prefix, _)) => format!("{scaled:.digits$} {prefix}{unit}"),
+    match prefix(exp) {
+        Some(prefix) => format!("{scaled:.digits$} {prefix}{unit}"),
         // past the prefixes: engineering notation, so the text stays short
         None => format!("{scaled:.digits$}e{exp} {unit}"),
     }
@@ -76,6 +75,17 @@ fn round_sig(value: f64, sig: i32) -> f64 {
     let mag = value.abs().log10().floor() as i32;
     let factor = 10f64.powi(sig - 1 - mag);
     (value * factor).round() / factor
+}
+
+/// Whether a unit takes SI prefixes ("Pa", "m", "N/m"); "", "1/Pa" and "rad/m" read badly with
+/// them and do not.
+pub fn prefixable(unit: &str) -> bool {
+    !unit.is_empty() && !unit.starts_with("1/") && !unit.starts_with("rad")
+}
+
+/// The SI prefix of a power of ten that is a multiple of 3 from -15 to 12 ("u" for micro).
+pub fn prefix(exp: i32) -> Option<&'static str> {
+    PREFIXES.iter().find(|(_, e)| *e == exp).map(|(p, _)| *p)
 }
 
 /// Parses a number with an optional SI prefix and unit: "3e9", "3 GPa", "50mm", "0.3", "inf",

@@ -5,9 +5,9 @@ use std::path::PathBuf;
 
 use ratatui::crossterm::event::KeyEvent;
 use wearlab::engine::{Answer, Request};
-use wearlab::preset::{Preset, SaveTarget};
+use wearlab::preset::{Preset, Problem, SaveTarget};
 
-use crate::tui::charts::Chart;
+use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
 
 /// The preset being edited and its history.
@@ -111,6 +111,53 @@ pub struct Ui {
     pub playing: bool,
     /// A chart waiting for its current result to be exported.
     pub export_waiting: Option<Chart>,
+    /// The cursor of the readout, as a fraction of the chart's x range (None: off).
+    pub cursor: Option<f64>,
+    /// Curves pinned for comparison, oldest first.
+    pub pins: Vec<Pin>,
+    /// The charts whose y axis is toggled (log, symmetric log, or back to linear).
+    pub log_y: Vec<Chart>,
+}
+
+impl Ui {
+    /// The pins of a chart, oldest first.
+    pub fn pins_of(&self, chart: Chart) -> Vec<&Pin> {
+        self.pins.iter().filter(|p| p.chart == chart).collect()
+    }
+}
+
+/// The curves of a chart kept to compare with later results.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pin {
+    /// The chart they were drawn on.
+    pub chart: Chart,
+    /// The inputs they answer.
+    pub preset: Preset,
+    /// The plots.
+    pub plots: Vec<Plot>,
+}
+
+impl Pin {
+    /// The pin's legend name against the inputs shown now: what differs ("pin: k = 2e-11 1/Pa,
+    /// mu = 0.2"), the first three of it.
+    pub fn name(&self, now: &Preset) -> String {
+        let (ours, theirs) = (&self.preset.spatial.harmonics, &now.spatial.harmonics);
+        let mut differ: Vec<String> = form::rows(&self.preset)
+            .iter()
+            .filter(|r| r.harmonic.is_none_or(|n| n < theirs.len()))
+            .filter(|r| form::show(&self.preset, r) != form::show(now, r))
+            .map(|r| format!("{} = {}", r.name(), form::show(&self.preset, r)))
+            .collect();
+        if self.preset.problem == Problem::Spatial && ours.len() != theirs.len() {
+            differ.push(format!("{} harmonics", ours.len()));
+        }
+        match differ.len() {
+            0 if self.preset.name != now.name => format!("pin: \"{}\"", self.preset.name),
+            0 => "pin: the same inputs".into(),
+            1..=3 => format!("pin: {}", differ.join(", ")),
+            n => format!("pin: {}, +{} more", differ[..3].join(", "), n - 3),
+        }
+    }
 }
 
 /// Input to `update`: keys, time, and what the loop's I/O and the worker report.
@@ -189,6 +236,9 @@ impl App {
                 message: None,
                 playing: false,
                 export_waiting: None,
+                cursor: None,
+                pins: Vec::new(),
+                log_y: Vec::new(),
             },
             doc: Document {
                 preset,

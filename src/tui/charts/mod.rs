@@ -5,20 +5,45 @@
 
 pub mod export;
 mod plane;
+pub mod range;
 mod spatial;
+pub mod ticks;
 
 use wearlab::engine::{Answer, Output, PlaneOutput, SpatialOutput};
 use wearlab::preset::{Preset, Problem};
+
+pub use ticks::Scale;
 
 /// One axis of a plot.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Axis {
     /// What is along it ("x", "P", "mu*").
     pub label: String,
-    /// SI unit of the values ("" for none); ticks carry it with a prefix.
+    /// SI unit of the values ("" for none); the axis title carries it with a prefix.
     pub unit: &'static str,
-    /// Logarithmic scale (values <= 0 are not drawn).
-    pub log: bool,
+    /// How values are placed along it (the chart's default; `y` toggles the y axis).
+    pub scale: Scale,
+}
+
+/// A labelled value on an axis: a vertical line at an x (labelled on the x axis), or a
+/// horizontal line at a y (named in the legend).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mark {
+    /// Where, in data coordinates.
+    pub at: f64,
+    /// What it is ("-a", "tip", "mu = 0.3").
+    pub label: String,
+}
+
+/// A range of x drawn shaded and named in the legend (where a chart has no curve, and why).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shade {
+    /// From this x (data coordinates).
+    pub from: f64,
+    /// To this x.
+    pub to: f64,
+    /// Why ("no complete contact").
+    pub label: String,
 }
 
 /// A named set of points in data coordinates (SI units, never log-transformed).
@@ -44,6 +69,28 @@ pub struct Plot {
     pub focus: usize,
     /// Marked points (the operating point, the current time, the harmonics), drawn as blocks.
     pub markers: Option<Series>,
+    /// Vertical lines at x values ("-a", "tip", "b").
+    pub x_marks: Vec<Mark>,
+    /// Horizontal lines at y values ("mu = 0.3").
+    pub y_marks: Vec<Mark>,
+    /// Shaded x ranges.
+    pub shaded: Vec<Shade>,
+}
+
+impl Plot {
+    /// A plot of curves, all of which set the y range, with nothing marked.
+    pub fn new(x: Axis, y: Axis, series: Vec<Series>) -> Plot {
+        Plot {
+            x,
+            y,
+            focus: series.len(),
+            series,
+            markers: None,
+            x_marks: Vec::new(),
+            y_marks: Vec::new(),
+            shaded: Vec::new(),
+        }
+    }
 }
 
 /// A scalar field over a rectangle, drawn as a heatmap.
@@ -276,6 +323,23 @@ impl Chart {
             // the answer is for the other problem: the chart's own is on its way
             _ => Err(NoFigure::Solving),
         }
+    }
+}
+
+/// An axis.
+fn axis(label: &str, unit: &'static str, scale: Scale) -> Axis {
+    Axis {
+        label: label.into(),
+        unit,
+        scale,
+    }
+}
+
+/// The line at the sliding friction coefficient mu on a mu* chart.
+fn mu_line(mu: f64) -> Mark {
+    Mark {
+        at: mu,
+        label: format!("mu = {}", ticks::plain(mu)),
     }
 }
 

@@ -6,7 +6,7 @@ use wearlab::physics::plane::OperatingPoint;
 use wearlab::physics::plane::sweep::Sweep;
 use wearlab::preset::Preset;
 
-use crate::tui::charts::{Axis, Figure, NoFigure, Plot, Series, zip};
+use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, mu_line, zip};
 
 fn point(out: &PlaneOutput) -> Result<&OperatingPoint, NoFigure> {
     out.point
@@ -18,37 +18,38 @@ fn sweep(out: &PlaneOutput) -> Result<&Sweep, NoFigure> {
     out.sweep.as_deref().ok_or(NoFigure::Solving)
 }
 
-fn along_x(y_label: &str, y_unit: &'static str, series: Vec<Series>) -> Plot {
-    Plot {
-        x: Axis {
-            label: "x".into(),
-            unit: "m",
-            log: false,
-        },
-        y: Axis {
-            label: y_label.into(),
-            unit: y_unit,
-            log: false,
-        },
-        focus: series.len(),
+/// A plot along x, with the contact edges and the punch tip marked.
+fn along_x(p: &OperatingPoint, y_label: &str, y_unit: &'static str, series: Vec<Series>) -> Plot {
+    let s = &p.solution;
+    let mut plot = Plot::new(
+        axis("x", "m", Scale::Linear),
+        axis(y_label, y_unit, Scale::Linear),
         series,
-        markers: None,
-    }
+    );
+    plot.x_marks = vec![
+        Mark {
+            at: -s.a,
+            label: "-a".into(),
+        },
+        Mark {
+            at: 0.0,
+            label: "tip".into(),
+        },
+        Mark {
+            at: s.b,
+            label: "b".into(),
+        },
+    ];
+    plot
 }
 
 fn against_load(preset: &Preset, y_label: &str, y_unit: &'static str) -> (Axis, Axis) {
-    (
-        Axis {
-            label: "P".into(),
-            unit: "N/m",
-            log: preset.plane.sweep.spacing == Spacing::Log,
-        },
-        Axis {
-            label: y_label.into(),
-            unit: y_unit,
-            log: false,
-        },
-    )
+    let x = if preset.plane.sweep.spacing == Spacing::Log {
+        Scale::Log
+    } else {
+        Scale::Linear
+    };
+    (axis("P", "N/m", x), axis(y_label, y_unit, Scale::Linear))
 }
 
 /// The loads where the model has a value, with the value.
@@ -65,8 +66,10 @@ fn of_load(name: String, sweep: &Sweep, values: &[Option<f64>]) -> Series {
 }
 
 pub(super) fn pressure(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
-    let p = &point(out)?.profile;
+    let op = point(out)?;
+    let p = &op.profile;
     Ok(Figure::Plots(vec![along_x(
+        op,
         "stress",
         "Pa",
         vec![
@@ -83,9 +86,11 @@ pub(super) fn pressure(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure
 }
 
 pub(super) fn wear(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
-    let p = &point(out)?.profile;
+    let op = point(out)?;
+    let p = &op.profile;
     Ok(Figure::Plots(vec![
         along_x(
+            op,
             "wear/pass",
             "m",
             vec![Series {
@@ -94,6 +99,7 @@ pub(super) fn wear(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
             }],
         ),
         along_x(
+            op,
             "k q2",
             "",
             vec![Series {
@@ -112,29 +118,25 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
         .map(|(m, s)| of_load(format!("mu* {}", m.name()), s, &s.mu_star))
         .collect();
     let (x, y) = against_load(preset, "mu*", "");
-    Ok(Figure::Plots(vec![Plot {
-        x,
-        y,
-        series,
-        focus: 1,
-        markers: point(out).ok().map(|p| Series {
-            name: "now".into(),
-            points: vec![(p.solution.inputs.load, p.solution.mu_star)],
-        }),
-    }]))
+    let mut plot = Plot::new(x, y, series);
+    plot.focus = 1;
+    plot.markers = point(out).ok().map(|p| Series {
+        name: "now".into(),
+        points: vec![(p.solution.inputs.load, p.solution.mu_star)],
+    });
+    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    Ok(Figure::Plots(vec![plot]))
 }
 
 pub(super) fn edges(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
     let s = sweep(out)?;
     let (x, y) = against_load(preset, "edge", "m");
-    Ok(Figure::Plots(vec![Plot {
+    Ok(Figure::Plots(vec![Plot::new(
         x,
         y,
-        series: vec![
+        vec![
             of_load("a (trailing)".into(), s, &s.a),
             of_load("b (leading)".into(), s, &s.b),
         ],
-        focus: 2,
-        markers: None,
-    }]))
+    )]))
 }

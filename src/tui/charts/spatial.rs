@@ -2,32 +2,44 @@
 
 use wearlab::engine::SpatialOutput;
 use wearlab::physics::Spacing;
+use wearlab::physics::spatial::state::SpatialState;
 use wearlab::preset::Preset;
 use wearlab::units::format_si;
 
-use crate::tui::charts::{Axis, Figure, Map, NoFigure, Plot, Series, zip};
+use crate::tui::charts::{
+    Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, mu_line, zip,
+};
 
-fn axis(label: &str, unit: &'static str, log: bool) -> Axis {
-    Axis {
-        label: label.into(),
-        unit,
-        log,
-    }
-}
+/// Directions whose drift velocities differ by less than this fraction of the chart's range
+/// draw as one line (a Braille dot is a fortieth of a ten-row chart).
+const COINCIDE: f64 = 0.02;
 
-fn plot(x: Axis, y: Axis, series: Vec<Series>, markers: Option<Series>) -> Plot {
-    Plot {
-        x,
-        y,
-        focus: series.len(),
-        series,
-        markers,
+/// The fields of complete contact only: where contact is lost they would need a negative
+/// pressure, so nothing is drawn and the chart says why.
+fn complete(st: &SpatialState) -> Result<(), NoFigure> {
+    let c = &st.contact;
+    if c.complete {
+        return Ok(());
     }
+    let after = c.complete_after.map_or(String::new(), |t| {
+        format!(
+            " The bound says contact is complete again after t = {}: step t past it (or play).",
+            format_si(t, "s")
+        )
+    });
+    Err(NoFigure::Error(format!(
+        "Complete contact is lost at t = {}: the complete-contact solution would need a negative \
+         pressure (p_min = {}), so no field is drawn; partial contact is not solved here.{after}",
+        format_si(st.solution.time, "s"),
+        format_si(c.min_pressure, "Pa"),
+    )))
 }
 
 pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
-    let f = &out.state.field;
-    let cell = &out.state.cell;
+    let st = &out.state;
+    complete(st)?;
+    let f = &st.field;
+    let cell = &st.cell;
     Ok(Figure::Map(Map {
         name: "pressure",
         x: f.x.clone(),
@@ -43,79 +55,83 @@ pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, No
 }
 
 pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
+    complete(&out.state)?;
     let f = &out.state.field;
     let row = f.n / 2;
     let along = |v: &[f64]| zip(&f.x, &v[row * f.n..(row + 1) * f.n]);
     let y = format_si(f.y[row], "m");
-    let x = || axis("x", "m", false);
+    let x = || axis("x", "m", Scale::Linear);
     Ok(Figure::Plots(vec![
-        plot(
+        Plot::new(
             x(),
-            axis("p", "Pa", false),
+            axis("p", "Pa", Scale::Linear),
             vec![Series {
                 name: format!("pressure along y = {y}"),
                 points: along(&f.pressure),
             }],
-            None,
         ),
-        plot(
+        Plot::new(
             x(),
-            axis("U", "m", false),
+            axis("U", "m", Scale::Linear),
             vec![Series {
                 name: "shape U".into(),
                 points: along(&f.shape),
             }],
-            None,
         ),
     ]))
 }
 
-pub(super) fn history(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
+pub(super) fn history(preset: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
     let h = out.history.as_deref().ok_or(NoFigure::Solving)?;
     let s = &out.state.solution;
-    let t = || axis("t", "s", false);
+    let t = || axis("t", "s", Scale::Linear);
     let now = |points| Series {
         name: "now".into(),
         points,
     };
-    Ok(Figure::Plots(vec![
-        plot(
-            t(),
-            axis("A", "m", false),
-            h.amplitudes
-                .iter()
-                .enumerate()
-                .map(|(n, a)| Series {
-                    name: format!("A{}", n + 1),
-                    points: zip(&h.time, a),
-                })
-                .collect(),
-            Some(now(s
-                .harmonics
-                .iter()
-                .map(|hs| (s.time, hs.state.amplitude))
-                .collect())),
-        ),
-        plot(
-            t(),
-            axis("mu*", "", false),
-            vec![Series {
-                name: "mu*(t)".into(),
-                points: zip(&h.time, &h.mu_star),
-            }],
-            Some(now(vec![(s.time, s.mu_star)])),
-        ),
-    ]))
+    let mut amplitudes = Plot::new(
+        t(),
+        axis("A", "m", Scale::Linear),
+        h.amplitudes
+            .iter()
+            .enumerate()
+            .map(|(n, a)| Series {
+                name: format!("A{}", n + 1),
+                points: zip(&h.time, a),
+            })
+            .collect(),
+    );
+    amplitudes.markers = Some(now(s
+        .harmonics
+        .iter()
+        .map(|hs| (s.time, hs.state.amplitude))
+        .collect()));
+    let mut mu = Plot::new(
+        t(),
+        axis("mu*", "", Scale::Linear),
+        vec![Series {
+            name: "mu*(t)".into(),
+            points: zip(&h.time, &h.mu_star),
+        }],
+    );
+    mu.markers = Some(now(vec![(s.time, s.mu_star)]));
+    mu.y_marks = vec![mu_line(preset.friction.coefficient)];
+    Ok(Figure::Plots(vec![amplitudes, mu]))
 }
 
 pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
     let st = &out.state;
     let sw = &st.sweep;
-    Ok(Figure::Plots(vec![plot(
-        axis("pbar", "Pa", preset.spatial.sweep.spacing == Spacing::Log),
-        axis("mu*", "", false),
+    let scale = if preset.spatial.sweep.spacing == Spacing::Log {
+        Scale::Log
+    } else {
+        Scale::Linear
+    };
+    let mut plot = Plot::new(
+        axis("pbar", "Pa", scale),
+        axis("mu*", "", Scale::Linear),
         vec![Series {
-            name: "mu* (complete contact only)".into(),
+            name: "mu*".into(),
             points: sw
                 .mean_pressure
                 .iter()
@@ -123,11 +139,37 @@ pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
                 .filter_map(|(p, m)| Some((*p, (*m)?)))
                 .collect(),
         }],
-        st.contact.complete.then(|| Series {
-            name: "now".into(),
-            points: vec![(st.solution.inputs.mean_pressure, st.solution.mu_star)],
-        }),
-    )]))
+    );
+    plot.markers = st.contact.complete.then(|| Series {
+        name: "now".into(),
+        points: vec![(st.solution.inputs.mean_pressure, st.solution.mu_star)],
+    });
+    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    plot.shaded = gaps(&sw.mean_pressure, &sw.mu_star, "no complete contact");
+    Ok(Figure::Plots(vec![plot]))
+}
+
+/// The x ranges where a sweep has no value, each from the last point with a value before it to
+/// the first after it (or the sweep's end).
+fn gaps(x: &[f64], values: &[Option<f64>], label: &str) -> Vec<Shade> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < values.len() {
+        if values[i].is_some() {
+            i += 1;
+            continue;
+        }
+        let j = (i..values.len())
+            .find(|&j| values[j].is_some())
+            .unwrap_or(values.len());
+        out.push(Shade {
+            from: x[i.saturating_sub(1)],
+            to: x[j.min(values.len() - 1)],
+            label: label.into(),
+        });
+        i = j;
+    }
+    out
 }
 
 pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
@@ -138,35 +180,103 @@ pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFi
     } else {
         1.0
     };
-    let mut series: Vec<Series> = d
+    let x = || {
+        if d.scaled_by_thickness {
+            axis("kh", "", Scale::Log)
+        } else {
+            axis("k", "rad/m", Scale::Log)
+        }
+    };
+    let all = || d.drift_velocity.iter().flatten().copied();
+    let both_signs = all().any(|c| c > 0.0) && all().any(|c| c < 0.0);
+    let scale = if both_signs {
+        Scale::symlog_for(all())
+    } else {
+        Scale::Linear
+    };
+    let (lo, hi) = all().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+        (a.min(c), b.max(c))
+    });
+    let first = &d.drift_velocity[0];
+    let apart = |c: &Vec<f64>| {
+        c.iter()
+            .zip(first)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
+    };
+    let coincide = d.drift_velocity[1..]
+        .iter()
+        .all(|c| apart(c) < COINCIDE * (hi - lo).max(f64::MIN_POSITIVE));
+    let degrees: Vec<String> = d
         .angles
         .iter()
-        .zip(&d.drift_velocity)
-        .map(|(a, c)| Series {
-            name: format!("c at {:.0} deg", a.to_degrees()),
-            points: zip(&d.k, c),
+        .map(|a| format!("{:.0}", a.to_degrees()))
+        .collect();
+    let series = if coincide {
+        vec![Series {
+            name: format!(
+                "c at {} deg: one line (they differ by less than a line width, see below)",
+                degrees.join(", ")
+            ),
+            points: zip(&d.k, first),
+        }]
+    } else {
+        degrees
+            .iter()
+            .zip(&d.drift_velocity)
+            .map(|(a, c)| Series {
+                name: format!("c at {a} deg"),
+                points: zip(&d.k, c),
+            })
+            .collect()
+    };
+    let mut plot = Plot::new(x(), axis("c", "m/s", scale), series);
+    plot.markers = Some(Series {
+        name: "harmonics".into(),
+        points: s
+            .harmonics
+            .iter()
+            .map(|h| (h.initial.wavenumber() * unit, h.evolution.drift_velocity))
+            .collect(),
+    });
+    plot.y_marks = vec![Mark {
+        at: 0.0,
+        label: "c = 0".into(),
+    }];
+    plot.x_marks = sign_changes(&d.k, first)
+        .map(|at| Mark {
+            at,
+            label: "X*".into(),
         })
         .collect();
-    series.push(Series {
-        name: "c = 0".into(),
-        points: vec![(d.k[0], 0.0), (d.k[d.k.len() - 1], 0.0)],
-    });
-    let x = if d.scaled_by_thickness {
-        axis("kh", "", true)
-    } else {
-        axis("k", "rad/m", true)
-    };
-    Ok(Figure::Plots(vec![plot(
-        x,
-        axis("c", "m/s", false),
-        series,
-        Some(Series {
-            name: "harmonics".into(),
-            points: s
-                .harmonics
-                .iter()
-                .map(|h| (h.initial.wavenumber() * unit, h.evolution.drift_velocity))
-                .collect(),
-        }),
-    )]))
+    if !coincide {
+        return Ok(Figure::Plots(vec![plot]));
+    }
+    // the direction dependence, too small to see above, as differences from the 0 deg line
+    let diff = Plot::new(
+        x(),
+        axis(&format!("c - c({} deg)", degrees[0]), "m/s", Scale::Linear),
+        degrees[1..]
+            .iter()
+            .zip(&d.drift_velocity[1..])
+            .map(|(a, c)| Series {
+                name: format!("{a} deg"),
+                points: d
+                    .k
+                    .iter()
+                    .zip(c.iter().zip(first))
+                    .map(|(k, (c, c0))| (*k, c - c0))
+                    .collect(),
+            })
+            .collect(),
+    );
+    Ok(Figure::Plots(vec![plot, diff]))
+}
+
+/// Where a curve crosses zero, by linear interpolation between its points.
+fn sign_changes<'a>(x: &'a [f64], y: &'a [f64]) -> impl Iterator<Item = f64> + 'a {
+    x.windows(2)
+        .zip(y.windows(2))
+        .filter(|(_, y)| y[0] * y[1] < 0.0)
+        .map(|(x, y)| x[0] + (x[1] - x[0]) * y[0] / (y[0] - y[1]))
 }

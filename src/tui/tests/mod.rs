@@ -5,8 +5,10 @@
 mod charts;
 mod files;
 mod keys;
+mod legend;
 mod screens;
 mod stale;
+mod ticks;
 mod update;
 mod widgets;
 

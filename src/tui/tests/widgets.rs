@@ -1,14 +1,14 @@
-//! The chart widget's ranges and ticks, and the status panel's packing and scrolling.
+//! The ranges charts are drawn over, and the status panel's packing and scrolling.
 
-use crate::tui::charts::{Axis, Plot, Series};
-use crate::tui::view::chart::{bounds, ticks, x_bounds, y_bounds};
+use crate::tui::charts::range::{bounds, frames};
+use crate::tui::charts::{Axis, Plot, Scale, Series};
 use crate::tui::view::status::{pack, visible};
 
-fn axis(unit: &'static str, log: bool) -> Axis {
+fn axis(unit: &'static str, scale: Scale) -> Axis {
     Axis {
         label: "v".into(),
         unit,
-        log,
+        scale,
     }
 }
 
@@ -30,47 +30,62 @@ fn bounds_span_the_finite_values_and_never_collapse() {
 }
 
 #[test]
-fn overlays_do_not_set_the_y_range_but_markers_do() {
-    let plot = Plot {
-        x: axis("N/m", false),
-        y: axis("", false),
-        series: vec![
+fn overlays_do_not_set_the_y_range_but_markers_and_pins_do() {
+    let mut plot = Plot::new(
+        axis("N/m", Scale::Linear),
+        axis("", Scale::Linear),
+        vec![
             series(&[(1.0, 0.2), (2.0, 0.3)]),
             series(&[(0.5, 50.0), (3.0, 60.0)]),
         ],
-        focus: 1,
-        markers: Some(series(&[(1.5, 0.1)])),
-    };
-    assert_eq!(x_bounds(&plot), [0.5, 3.0], "x spans the overlay too");
-    assert_eq!(y_bounds(&plot), [0.1, 0.3]);
+    );
+    plot.focus = 1;
+    plot.markers = Some(series(&[(1.5, 0.1)]));
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(f.x, [0.5, 3.0], "x spans the overlay too");
+    assert_eq!(f.y, [0.1, 0.3]);
+    let mut pin = plot.clone();
+    pin.series[0].points = vec![(1.0, 0.4)];
+    let pins = [std::slice::from_ref(&pin)];
+    let f = &frames(std::slice::from_ref(&plot), &pins, false)[0];
+    assert_eq!(f.y, [0.1, 0.4], "a pin stays in view");
 }
 
 #[test]
-fn a_log_axis_drops_values_at_or_below_zero_and_ticks_in_real_values() {
-    let plot = Plot {
-        x: axis("N/m", true),
-        y: axis("m", false),
-        series: vec![series(&[(0.0, 1.0), (100.0, 1e-6), (1e5, 2e-6)])],
-        focus: 1,
-        markers: None,
-    };
-    let xb = x_bounds(&plot);
-    assert_eq!(xb, [2.0, 5.0]);
-    assert_eq!(y_bounds(&plot), [1e-6, 2e-6]);
-    // 10^2, 10^3.5, 10^5 N/m
-    assert_eq!(ticks(xb, &plot.x), ["100 N/m", "3.16 kN/m", "100 kN/m"]);
-    assert_eq!(
-        ticks([1e-6, 2e-6], &plot.y),
-        ["1.00 um", "1.50 um", "2.00 um"]
+fn a_log_axis_drops_values_at_or_below_zero() {
+    let plot = Plot::new(
+        axis("N/m", Scale::Log),
+        axis("m", Scale::Linear),
+        vec![series(&[(0.0, 1.0), (100.0, 1e-6), (1e5, 2e-6)])],
     );
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(f.x, [2.0, 5.0]);
+    assert_eq!(f.y, [1e-6, 2e-6]);
 }
 
 #[test]
-fn ticks_without_a_unit_are_plain_numbers() {
-    assert_eq!(
-        ticks([0.25, 0.35], &axis("", false)),
-        ["0.25", "0.3", "0.35"]
+fn the_y_toggle_gives_log_for_positive_data_and_symlog_for_both_signs() {
+    let positive = Plot::new(
+        axis("s", Scale::Linear),
+        axis("m", Scale::Linear),
+        vec![series(&[(0.0, 1e-6), (1.0, 1e-9)])],
     );
+    let f = &frames(std::slice::from_ref(&positive), &[], true)[0];
+    assert_eq!(f.y_scale, Scale::Log);
+    assert_eq!(f.y, [-9.0, -6.0]);
+    // c from -1 um/s to +10 nm/s: linear within +-1 nm/s, a tenth of the smaller branch
+    let both = Plot::new(
+        axis("", Scale::Log),
+        axis("m/s", Scale::Linear),
+        vec![series(&[(1.0, -1e-6), (10.0, 1e-8)])],
+    );
+    let f = &frames(std::slice::from_ref(&both), &[], true)[0];
+    assert_eq!(f.y_scale, Scale::SymLog(1e-9));
+    // and back: a chart that is log by default toggles to linear
+    let mut log = positive.clone();
+    log.y.scale = Scale::Log;
+    let f = &frames(std::slice::from_ref(&log), &[], true)[0];
+    assert_eq!(f.y_scale, Scale::Linear);
 }
 
 fn items(v: &[&str]) -> Vec<String> {

@@ -1,146 +1,300 @@
-//! The chart widget: draws a `Plot` (data coordinates, SI units) with its axes, ticks with SI
-//! prefixes, a legend and marked points. Log axes are drawn in log10 and ticked in the real values.
+//! The chart widget: a figure's plots stacked, sharing one x axis (labelled under the last). Each
+//! plot has a header row (the y axis title, and the legend when it fits there), its curves, pins
+//! and marks, an axis line with tick marks and the labels of vertical marks, and under the last
+//! plot the x tick labels with the x axis title at their right. Nothing is written on a data
+//! cell: the legend goes in the header, else in an empty corner, else in rows of its own.
 
-use ratatui::Frame;
-use ratatui::layout::{Constraint, Rect};
-use ratatui::widgets::{Axis as AxisWidget, Chart, Dataset, GraphType, LegendPosition};
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
 use wearlab::units::format_si;
 
-use crate::tui::charts::{Axis, Plot};
+use crate::tui::charts::range::{Frame, plotted};
+use crate::tui::charts::ticks::{Ticks, ticks};
+use crate::tui::view::axis::{self, Geometry};
+use crate::tui::view::legend::{self, Entry, Place};
+use crate::tui::view::raster::Raster;
 use crate::tui::view::theme::RenderOptions;
 
-/// A value in plot coordinates (log10 on a log axis); None where it cannot be drawn (not finite,
-/// or <= 0 on a log axis).
-pub fn to_plot(v: f64, log: bool) -> Option<f64> {
-    let p = if log {
-        (v > 0.0).then(|| v.log10())?
-    } else {
-        v
+/// What is drawn with the plots besides their own curves.
+#[derive(Clone, Debug, Default)]
+pub struct Extras {
+    /// The cursor, as a fraction of the x range.
+    pub cursor: Option<f64>,
+    /// The legend names of the pins, oldest first ("pin: k = 2e-11 1/Pa").
+    pub pins: Vec<String>,
+}
+
+/// A fraction of a range.
+fn frac(v: f64, [lo, hi]: [f64; 2]) -> f64 {
+    (v - lo) / (hi - lo)
+}
+
+/// The curves, pins and markers of a frame in a raster of the plot area.
+fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
+    let mut raster = Raster::new(plot.width, plot.height, style.braille());
+    let (xs, ys) = (frame.plot.x.scale, frame.y_scale);
+    let fit = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        plotted(points, xs, ys)
+            .into_iter()
+            .map(|(x, y)| (frac(x, frame.x), frac(y, frame.y)))
+            .collect()
     };
-    p.is_finite().then_some(p)
-}
-
-/// The points of a series in plot coordinates.
-fn plotted(points: &[(f64, f64)], x: &Axis, y: &Axis) -> Vec<(f64, f64)> {
-    points
-        .iter()
-        .filter_map(|&(a, b)| Some((to_plot(a, x.log)?, to_plot(b, y.log)?)))
-        .collect()
-}
-
-/// The range [lo, hi] (plot coordinates) spanned by `values`: [0, 1] when there are none; padded
-/// by 5 % of the value (or by 1 around 0) when they are all equal.
-pub fn bounds(values: impl Iterator<Item = f64>) -> [f64; 2] {
-    let (lo, hi) = values
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
-    if !lo.is_finite() {
-        return [0.0, 1.0];
+    for (p, pin) in frame.pins.iter().enumerate() {
+        for (i, s) in pin.series.iter().enumerate() {
+            raster.line(&fit(&s.points), style.pin_ink(p, i));
+        }
     }
-    if hi - lo <= 1e-12 * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE) {
-        let pad = if lo == 0.0 { 1.0 } else { 0.05 * lo.abs() };
-        return [lo - pad, hi + pad];
+    // the first curve last, on top
+    for (i, s) in frame.plot.series.iter().enumerate().rev() {
+        raster.line(&fit(&s.points), style.series_ink(i));
     }
-    [lo, hi]
+    if let Some(m) = &frame.plot.markers {
+        for p in fit(&m.points) {
+            raster.point(p, style.marker_ink());
+        }
+    }
+    raster
 }
 
-/// The x range: every curve and marker.
-pub fn x_bounds(plot: &Plot) -> [f64; 2] {
-    let xs = plot
+/// The legend entries of a frame: its curves (those off the y range named with their range),
+/// markers, reference lines, shaded ranges and pins.
+fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
+    let plot = frame.plot;
+    let (xs, ys) = (plot.x.scale, frame.y_scale);
+    let mut out: Vec<Entry> = plot
         .series
         .iter()
-        .chain(&plot.markers)
-        .flat_map(|s| plotted(&s.points, &plot.x, &plot.y));
-    bounds(xs.map(|p| p.0))
-}
-
-/// The y range: the focus curves and the markers (overlays are clipped to it).
-pub fn y_bounds(plot: &Plot) -> [f64; 2] {
-    let ys = plot
-        .series
-        .iter()
-        .take(plot.focus)
-        .chain(&plot.markers)
-        .flat_map(|s| plotted(&s.points, &plot.x, &plot.y));
-    bounds(ys.map(|p| p.1))
-}
-
-/// Three tick labels (low, middle, high) of a range in plot coordinates, in the axis' unit with
-/// SI prefixes; on a log axis the middle is the geometric mean and the labels are real values.
-pub fn ticks(range: [f64; 2], axis: &Axis) -> [String; 3] {
-    let label = |v: f64| {
-        let real = if axis.log { 10f64.powf(v) } else { v };
-        format_si(real, axis.unit)
-    };
-    [
-        label(range[0]),
-        label(0.5 * (range[0] + range[1])),
-        label(range[1]),
-    ]
-}
-
-/// Draws a plot into `area`.
-pub fn draw(plot: &Plot, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let xb = x_bounds(plot);
-    let yb = y_bounds(plot);
-    let series: Vec<Vec<(f64, f64)>> = plot
-        .series
-        .iter()
-        .map(|s| plotted(&s.points, &plot.x, &plot.y))
-        .collect();
-    let marked = plot
-        .markers
-        .as_ref()
-        .map(|m| plotted(&m.points, &plot.x, &plot.y));
-    let mut datasets: Vec<Dataset> = plot
-        .series
-        .iter()
-        .zip(&series)
         .enumerate()
-        .map(|(i, (s, points))| {
-            Dataset::default()
-                .name(s.name.clone())
-                .marker(style.line_marker())
-                .graph_type(GraphType::Line)
-                .style(style.series(i))
-                .data(points)
+        .map(|(i, s)| {
+            let ink = style.series_ink(i);
+            let drawn = plotted(&s.points, xs, ys);
+            let inside = drawn
+                .iter()
+                .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1));
+            let text = if drawn.is_empty() {
+                format!("{}: no values to draw", s.name)
+            } else if !inside {
+                let [lo, hi] = crate::tui::charts::range::bounds(s.points.iter().map(|p| p.1));
+                format!(
+                    "{}: off scale, {}..{}",
+                    s.name,
+                    format_si(lo, plot.y.unit),
+                    format_si(hi, plot.y.unit)
+                )
+            } else {
+                s.name.clone()
+            };
+            Entry {
+                sample: style.sample(ink),
+                style: ink.style,
+                text,
+            }
         })
         .collect();
-    if let (Some(m), Some(points)) = (&plot.markers, &marked)
-        && !points.is_empty()
-    {
-        datasets.push(
-            Dataset::default()
-                .name(m.name.clone())
-                .marker(ratatui::symbols::Marker::Block)
-                .graph_type(GraphType::Scatter)
-                .style(style.marker())
-                .data(points),
-        );
-    }
-    let title = |a: &Axis| {
-        if a.log {
-            format!("{} (log)", a.label)
+    let marker = style.marker_ink();
+    out.extend(plot.markers.iter().map(|m| Entry {
+        sample: style.sample(marker),
+        style: marker.style,
+        text: m.name.clone(),
+    }));
+    let (_, horizontal) = style.mark_glyphs();
+    out.extend(plot.y_marks.iter().map(|m| Entry {
+        sample: horizontal.to_string().repeat(2),
+        style: style.mark(),
+        text: m.label.clone(),
+    }));
+    let (shade_glyph, shade_style) = style.shaded();
+    out.extend(plot.shaded.iter().map(|s| Entry {
+        sample: shade_glyph.to_string().repeat(2),
+        style: shade_style,
+        text: s.label.clone(),
+    }));
+    out.extend(
+        pins.iter()
+            .enumerate()
+            .take(frame.pins.len())
+            .map(|(p, name)| {
+                let ink = style.pin_ink(p, 0);
+                Entry {
+                    sample: style.sample(ink),
+                    style: ink.style,
+                    text: name.clone(),
+                }
+            }),
+    );
+    out
+}
+
+/// One plot laid out: its geometry, ticks, raster, legend entries and place.
+pub struct Laid {
+    /// Where its parts go.
+    pub geometry: Geometry,
+    /// The y ticks and title.
+    pub y_ticks: Ticks,
+    /// Its curves.
+    pub raster: Raster,
+    /// Its legend.
+    pub entries: Vec<Entry>,
+    /// Where the legend goes.
+    pub place: Place,
+}
+
+/// Lays out the stacked frames in `area` with `extra[i]` legend rows above plot i.
+fn lay_out(
+    frames: &[Frame],
+    style: RenderOptions,
+    extras: &Extras,
+    area: Rect,
+    extra: &[u16],
+) -> Option<(Vec<Laid>, Ticks)> {
+    let n = frames.len() as u16;
+    let shares = axis::split(area, n);
+    // y ticks first: they set the label column, which sets the plot width
+    let y_ticks: Vec<Ticks> = frames
+        .iter()
+        .zip(&shares)
+        .zip(extra)
+        .enumerate()
+        .map(|(i, ((f, share), &rows))| {
+            let h = axis::plot_height(*share, rows, i + 1 == frames.len());
+            let max = (h as usize / 2).clamp(2, 8);
+            ticks(f.y, f.y_scale, &f.plot.y.label, f.plot.y.unit, max)
+        })
+        .collect();
+    let label_width = y_ticks
+        .iter()
+        .flat_map(|t| t.ticks.iter().map(|(_, l)| l.chars().count()))
+        .max()
+        .unwrap_or(1) as u16;
+    let last = frames.last()?;
+    let plot_width = area.width.checked_sub(label_width + 1)?;
+    let x_ticks = axis::x_ticks(last, plot_width, label_width + 1);
+    let laid = frames
+        .iter()
+        .zip(shares)
+        .zip(y_ticks)
+        .enumerate()
+        .map(|(i, ((f, share), y_ticks))| {
+            let geometry = Geometry::new(share, label_width, extra[i], i + 1 == frames.len());
+            let raster = rasterize(f, style, geometry.plot);
+            let entries = entries(f, style, &extras.pins);
+            Laid {
+                geometry,
+                y_ticks,
+                raster,
+                entries,
+                place: Place::Rows(extra[i]),
+            }
+        })
+        .collect();
+    Some((laid, x_ticks))
+}
+
+/// The frames of a figure stacked in `area`, each legend placed: in the header, else in an
+/// empty corner, else in rows of its own, else in the corner covering the fewest data cells.
+pub fn layout(
+    frames: &[Frame],
+    style: RenderOptions,
+    extras: &Extras,
+    area: Rect,
+) -> Option<(Vec<Laid>, Ticks)> {
+    let none = vec![0; frames.len()];
+    let (mut laid, mut x_ticks) = lay_out(frames, style, extras, area, &none)?;
+    // where each legend goes: the header, an empty corner, rows of its own, the emptiest corner
+    let mut extra = none.clone();
+    for (i, l) in laid.iter_mut().enumerate() {
+        let g = &l.geometry;
+        let title = l.y_ticks.title.chars().count() + 2;
+        if title + legend::line_width(&l.entries) <= area.width as usize {
+            l.place = Place::Header;
+        } else if let Some(c) = legend::corner(&l.raster, g.local_plot(), &l.entries, false) {
+            l.place = c;
         } else {
-            a.label.clone()
+            let rows = legend::rows_needed(&l.entries, area.width as usize);
+            if g.plot.height >= rows + 3 {
+                extra[i] = rows;
+            } else if let Some(c) = legend::corner(&l.raster, g.local_plot(), &l.entries, true) {
+                l.place = c;
+            } else {
+                l.place = Place::Header;
+            }
         }
+    }
+    if extra.iter().any(|&r| r > 0) {
+        let places: Vec<Place> = laid.iter().map(|l| l.place).collect();
+        (laid, x_ticks) = lay_out(frames, style, extras, area, &extra)?;
+        for ((l, place), rows) in laid.iter_mut().zip(places).zip(&extra) {
+            l.place = if *rows > 0 { Place::Rows(*rows) } else { place };
+        }
+    }
+    Some((laid, x_ticks))
+}
+
+/// Draws the frames of a figure stacked in `area`.
+pub fn draw(frames: &[Frame], style: RenderOptions, extras: &Extras, buf: &mut Buffer, area: Rect) {
+    let Some((laid, x_ticks)) = layout(frames, style, extras, area) else {
+        return;
     };
-    let chart = Chart::new(datasets)
-        .x_axis(
-            AxisWidget::default()
-                .title(title(&plot.x))
-                .bounds(xb)
-                .labels(ticks(xb, &plot.x).to_vec()),
-        )
-        .y_axis(
-            AxisWidget::default()
-                .title(title(&plot.y))
-                .bounds(yb)
-                .labels(ticks(yb, &plot.y).to_vec()),
-        )
-        .legend_position(Some(LegendPosition::TopRight))
-        .hidden_legend_constraints((Constraint::Percentage(60), Constraint::Percentage(60)));
-    frame.render_widget(chart, area);
+    for (f, l) in frames.iter().zip(&laid) {
+        draw_one(f, l, &x_ticks, style, extras, buf);
+    }
+}
+
+fn draw_one(
+    frame: &Frame,
+    laid: &Laid,
+    x_ticks: &Ticks,
+    style: RenderOptions,
+    extras: &Extras,
+    buf: &mut Buffer,
+) {
+    let g = &laid.geometry;
+    axis::shade(frame, g, style, buf);
+    laid.raster.render(buf, g.plot);
+    axis::marks(frame, g, &laid.raster, style, buf);
+    axis::frame(frame, g, &laid.y_ticks, x_ticks, buf);
+    if let Some(f) = extras.cursor {
+        let col = ((f.clamp(0.0, 1.0) * (g.plot.width.max(1) - 1) as f64).round()) as u16;
+        for row in 0..g.plot.height {
+            let cell = &mut buf[(g.plot.x + col, g.plot.y + row)];
+            if laid.raster.occupied(col, row) {
+                cell.set_style(Style::default().add_modifier(Modifier::REVERSED));
+            } else {
+                cell.set_char(style.cursor_glyph())
+                    .set_style(style.cursor());
+            }
+        }
+    }
+    let header = g.header;
+    buf.set_stringn(
+        header.x,
+        header.y,
+        &laid.y_ticks.title,
+        header.width as usize,
+        Style::default(),
+    );
+    match laid.place {
+        Place::Header => {
+            let title = laid.y_ticks.title.chars().count() as u16 + 2;
+            let rest = Rect {
+                x: header.x + title.min(header.width),
+                width: header.width.saturating_sub(title),
+                height: 1,
+                ..header
+            };
+            legend::render_lines(&laid.entries, buf, rest);
+        }
+        Place::Rows(rows) => {
+            let below = Rect {
+                y: header.y + 1,
+                height: rows,
+                ..header
+            };
+            legend::render_lines(&laid.entries, buf, below);
+        }
+        Place::Corner(x, y) => {
+            legend::render_box(&laid.entries, buf, g.plot.x + x, g.plot.y + y);
+        }
+    }
 }

@@ -7,7 +7,7 @@ use ratatui::widgets::{Paragraph, Widget};
 use wearlab::units::format_si;
 
 use crate::tui::charts::Map;
-use crate::tui::view::chart::bounds;
+use crate::tui::charts::range::bounds;
 use crate::tui::view::theme::RenderOptions;
 
 /// Columns of the colour bar and its labels.

@@ -2,24 +2,28 @@
 //! labelled by the inputs that result carries: while a newer request is solving, the previous
 //! result stays visible, dimmed, and says whose it is.
 
+pub mod axis;
 pub mod bars;
 pub mod chart;
 pub mod form;
 pub mod heatmap;
 pub mod layout;
+pub mod legend;
 pub mod popups;
+pub mod raster;
 pub mod status;
 pub mod theme;
 
 use ratatui::Frame;
-use ratatui::layout::{Alignment, Constraint, Layout, Rect};
+use ratatui::layout::{Alignment, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 use wearlab::engine::Answer;
 use wearlab::preset::{Preset, Problem};
 
 use crate::tui::app::{App, Mode};
-use crate::tui::charts::{Figure, NoFigure};
+use crate::tui::charts::{Figure, NoFigure, Plot, range};
+use chart::Extras;
 pub use layout::MIN_SIZE;
 pub use theme::RenderOptions;
 
@@ -168,11 +172,17 @@ fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame,
         ),
         Ok(Figure::Map(map)) => heatmap::draw(&map, style, frame.buffer_mut(), inner),
         Ok(Figure::Plots(plots)) => {
-            let n = plots.len().max(1) as u32;
-            let parts = Layout::vertical(vec![Constraint::Ratio(1, n); plots.len()]).split(inner);
-            for (plot, part) in plots.iter().zip(parts.iter()) {
-                chart::draw(plot, style, frame, *part);
-            }
+            let pins = app.ui.pins_of(chart);
+            let pinned: Vec<&[Plot]> = pins.iter().map(|p| p.plots.as_slice()).collect();
+            let frames = range::frames(&plots, &pinned, app.ui.log_y.contains(&chart));
+            let extras = Extras {
+                cursor: app.ui.cursor,
+                pins: pins
+                    .iter()
+                    .map(|p| p.name(&answer.request.preset))
+                    .collect(),
+            };
+            chart::draw(&frames, style, &extras, frame.buffer_mut(), inner);
         }
     }
     if dim {

@@ -1,7 +1,8 @@
 //! Colours and styles, with the fallbacks for NO_COLOR and `--ascii`.
 
 use ratatui::style::{Color, Modifier, Style};
-use ratatui::symbols::Marker;
+
+use crate::tui::view::raster::Ink;
 
 /// How to draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,6 +21,9 @@ const SERIES: [Color; 6] = [
     Color::Red,
     Color::Blue,
 ];
+
+/// The characters of the curves in character mode, one per curve.
+const GLYPHS: [char; 8] = ['*', '+', 'x', 'o', '#', '%', '&', '$'];
 
 /// The shades of the heatmap without colour, lightest first.
 pub const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
@@ -72,24 +76,93 @@ impl RenderOptions {
         }
     }
 
-    /// Marked points.
-    pub fn marker(self) -> Style {
-        if self.color {
+    /// Curves are drawn in Braille dots (in colour, not `--ascii`); else one character per
+    /// cell, each curve its own.
+    pub fn braille(self) -> bool {
+        self.color && !self.ascii
+    }
+
+    /// How the i-th curve of a plot is drawn.
+    pub fn series_ink(self, i: usize) -> Ink {
+        Ink {
+            glyph: GLYPHS[i % GLYPHS.len()],
+            solid: false,
+            style: self.series(i),
+        }
+    }
+
+    /// How marked points are drawn.
+    pub fn marker_ink(self) -> Ink {
+        let style = if self.color {
             Style::default()
                 .fg(Color::White)
                 .add_modifier(Modifier::BOLD)
         } else {
-            Style::default()
+            Style::default().add_modifier(Modifier::BOLD)
+        };
+        Ink {
+            glyph: if self.ascii { '@' } else { '●' },
+            solid: true,
+            style,
         }
     }
 
-    /// How curves are drawn.
-    pub fn line_marker(self) -> Marker {
-        if self.ascii {
-            Marker::Dot
-        } else {
-            Marker::Braille
+    /// How the i-th curve of pin `pin` (from 0) is drawn: the pin's number, dim, in the curve's
+    /// colour.
+    pub fn pin_ink(self, pin: usize, i: usize) -> Ink {
+        Ink {
+            glyph: char::from_digit(pin as u32 + 1, 10).unwrap_or('#'),
+            solid: true,
+            style: self.series(i).add_modifier(Modifier::DIM),
         }
+    }
+
+    /// A legend sample of an ink: a short line in its colour, or its character twice.
+    pub fn sample(self, ink: Ink) -> String {
+        if self.braille() && !ink.solid {
+            "──".into()
+        } else if ink.solid && !ink.glyph.is_ascii_digit() {
+            ink.glyph.to_string()
+        } else {
+            ink.glyph.to_string().repeat(2)
+        }
+    }
+
+    /// Reference lines (mu, c = 0, the contact edges).
+    pub fn mark(self) -> Style {
+        Style::default().add_modifier(Modifier::DIM)
+    }
+
+    /// The characters of vertical and horizontal reference lines.
+    pub fn mark_glyphs(self) -> (char, char) {
+        if self.ascii {
+            (':', '-')
+        } else {
+            ('┊', '┈')
+        }
+    }
+
+    /// Shaded ranges: a dark background, or a dotted fill without colour.
+    pub fn shaded(self) -> (char, Style) {
+        match (self.color, self.ascii) {
+            (true, _) => (' ', Style::default().bg(Color::Indexed(236))),
+            (false, false) => ('·', Style::default()),
+            (false, true) => ('.', Style::default()),
+        }
+    }
+
+    /// The cursor line.
+    pub fn cursor(self) -> Style {
+        if self.color {
+            Style::default().fg(Color::Yellow)
+        } else {
+            Style::default().add_modifier(Modifier::BOLD)
+        }
+    }
+
+    /// The cursor's character on cells without data.
+    pub fn cursor_glyph(self) -> char {
+        if self.ascii { '|' } else { '│' }
     }
 
     /// The heatmap colour of t in [0, 1]: blue (low) through green to red (high).

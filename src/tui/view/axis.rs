@@ -1,0 +1,272 @@
+//! The frame of a plot: where its parts go, the axis lines with tick marks and labels, the
+//! reference lines (vertical marks labelled on the x axis line, horizontal ones named in the
+//! legend) and shaded ranges.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+
+use crate::tui::charts::range::Frame;
+use crate::tui::charts::ticks::{Ticks, ticks};
+use crate::tui::view::raster::Raster;
+use crate::tui::view::theme::RenderOptions;
+
+/// Where the parts of one plot go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Geometry {
+    /// The header row: the y axis title (and the legend when it fits).
+    pub header: Rect,
+    /// The column of y tick labels.
+    pub labels: Rect,
+    /// The data area.
+    pub plot: Rect,
+    /// The row of the x axis line.
+    pub axis_row: u16,
+    /// The row of the x tick labels (the last plot only).
+    pub x_labels: Option<u16>,
+}
+
+/// Rows of data of a plot in `share` with `rows` legend rows, with or without x labels.
+pub fn plot_height(share: Rect, rows: u16, last: bool) -> u16 {
+    share.height.saturating_sub(2 + rows + last as u16).max(1)
+}
+
+impl Geometry {
+    /// The parts of a plot in `share`, with a y label column `label_width` wide.
+    pub fn new(share: Rect, label_width: u16, rows: u16, last: bool) -> Geometry {
+        let height = plot_height(share, rows, last);
+        let plot = Rect {
+            x: share.x + label_width + 1,
+            y: share.y + 1 + rows,
+            width: share.width.saturating_sub(label_width + 1).max(1),
+            height,
+        };
+        let axis_row = plot.y + plot.height;
+        Geometry {
+            header: Rect { height: 1, ..share },
+            labels: Rect {
+                x: share.x,
+                width: label_width,
+                ..plot
+            },
+            plot,
+            axis_row,
+            x_labels: last.then_some(axis_row + 1),
+        }
+    }
+
+    /// The plot area relative to itself (for the raster).
+    pub fn local_plot(&self) -> Rect {
+        Rect {
+            x: 0,
+            y: 0,
+            ..self.plot
+        }
+    }
+}
+
+/// `n` stacked shares of `area`, the first ones a row taller when it does not divide.
+pub fn split(area: Rect, n: u16) -> Vec<Rect> {
+    let n = n.max(1);
+    let (each, more) = (area.height / n, area.height % n);
+    let mut y = area.y;
+    (0..n)
+        .map(|i| {
+            let height = each + (i < more) as u16;
+            let r = Rect { y, height, ..area };
+            y += height;
+            r
+        })
+        .collect()
+}
+
+/// The column of a fraction of the plot width.
+fn column(f: f64, width: u16) -> u16 {
+    (f.clamp(0.0, 1.0) * (width.max(1) - 1) as f64).round() as u16
+}
+
+/// The row of a fraction of the plot height (from the bottom).
+fn row(f: f64, height: u16) -> u16 {
+    ((1.0 - f.clamp(0.0, 1.0)) * (height.max(1) - 1) as f64).round() as u16
+}
+
+fn frac(v: f64, [lo, hi]: [f64; 2]) -> f64 {
+    (v - lo) / (hi - lo)
+}
+
+/// The x tick labels and the axis title placed on a row `width` wide whose plot starts at
+/// column `left`: the labels that fit (column, text), none overlapping another, and the title's
+/// column: at the row's end, else at its start, else at the end over the last labels.
+fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(u16, String)>, u16) {
+    let plot_width = width.saturating_sub(left);
+    let mut labels: Vec<(u16, String)> = Vec::new();
+    let mut free = 0u16;
+    for (pos, label) in &t.ticks {
+        let len = label.chars().count() as u16;
+        let centre = left + column(frac(*pos, range), plot_width);
+        let start = centre.saturating_sub(len / 2).max(free);
+        if start + len > width || start > centre {
+            continue;
+        }
+        free = start + len + 2;
+        labels.push((start, label.clone()));
+    }
+    let title = t.title.chars().count() as u16;
+    let end = |l: &(u16, String)| l.0 + l.1.chars().count() as u16;
+    let right = width.saturating_sub(title);
+    if labels.last().is_none_or(|l| end(l) < right) {
+        return (labels, right);
+    }
+    if labels.first().is_some_and(|l| l.0 > title) {
+        return (labels, 0);
+    }
+    labels.retain(|l| end(l) < right);
+    (labels, right)
+}
+
+/// The x ticks of the shared axis: as many labels as fit on the label row with the axis title
+/// (at least three when they can be had by leaving "(log)" out of the title: the labels show
+/// it).
+pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
+    let x = &frame.plot.x;
+    let width = plot_width + left;
+    let candidates = |short: bool| {
+        (2..=(plot_width as usize / 6).max(2))
+            .rev()
+            .map(move |max| {
+                let mut t = ticks(frame.x, x.scale, &x.label, x.unit, max);
+                if short {
+                    for suffix in [" (log)", " (symlog)"] {
+                        if let Some(s) = t.title.strip_suffix(suffix) {
+                            t.title = s.to_string();
+                        }
+                    }
+                }
+                t
+            })
+    };
+    let shown = |t: &Ticks| place_x(t, frame.x, left, width).0.len();
+    let all = |t: &Ticks| shown(t) == t.ticks.len();
+    let every = || candidates(false).chain(candidates(true));
+    every()
+        .find(|t| all(t) && t.ticks.len() >= 3)
+        .or_else(|| {
+            // the most labels, the first of equals
+            every().fold(None, |best: Option<Ticks>, t| match best {
+                Some(b) if shown(&b) >= shown(&t) => Some(b),
+                _ => Some(t),
+            })
+        })
+        .unwrap_or_else(|| ticks(frame.x, x.scale, &x.label, x.unit, 2))
+}
+
+/// Shades the plot's shaded x ranges (under everything else).
+pub fn shade(frame: &Frame, g: &Geometry, style: RenderOptions, buf: &mut Buffer) {
+    let (glyph, st) = style.shaded();
+    let p = g.plot;
+    for s in &frame.plot.shaded {
+        let (Some(a), Some(b)) = (
+            frame.plot.x.scale.to_plot(s.from),
+            frame.plot.x.scale.to_plot(s.to),
+        ) else {
+            continue;
+        };
+        let (c0, c1) = (
+            column(frac(a, frame.x), p.width),
+            column(frac(b, frame.x), p.width),
+        );
+        for col in c0.min(c1)..=c0.max(c1) {
+            for r in 0..p.height {
+                let cell = &mut buf[(p.x + col, p.y + r)];
+                cell.set_style(st);
+                if !style.color {
+                    cell.set_char(glyph);
+                }
+            }
+        }
+    }
+}
+
+/// Draws the reference lines on the cells without data.
+pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions, buf: &mut Buffer) {
+    let p = g.plot;
+    let (vertical, horizontal) = style.mark_glyphs();
+    let mut put = |col: u16, r: u16, c: char| {
+        if !raster.occupied(col, r) {
+            buf[(p.x + col, p.y + r)]
+                .set_char(c)
+                .set_style(style.mark());
+        }
+    };
+    for m in &frame.plot.y_marks {
+        if let Some(v) = frame.y_scale.to_plot(m.at) {
+            let r = row(frac(v, frame.y), p.height);
+            (0..p.width).for_each(|col| put(col, r, horizontal));
+        }
+    }
+    for m in &frame.plot.x_marks {
+        if let Some(v) = frame.plot.x.scale.to_plot(m.at) {
+            let col = column(frac(v, frame.x), p.width);
+            (0..p.height).for_each(|r| put(col, r, vertical));
+        }
+    }
+}
+
+/// Draws the axis lines with tick marks, the tick labels, and the vertical marks' labels on the
+/// x axis line.
+pub fn frame(frame: &Frame, g: &Geometry, y: &Ticks, x: &Ticks, buf: &mut Buffer) {
+    let p = g.plot;
+    let axis_x = p.x - 1;
+    for r in p.y..p.y + p.height {
+        buf[(axis_x, r)].set_char('│');
+    }
+    buf[(axis_x, g.axis_row)].set_char('└');
+    for col in p.x..p.x + p.width {
+        buf[(col, g.axis_row)].set_char('─');
+    }
+    let mut used = Vec::new();
+    for (pos, label) in &y.ticks {
+        let r = p.y + row(frac(*pos, frame.y), p.height);
+        if used.contains(&r) {
+            continue;
+        }
+        used.push(r);
+        buf[(axis_x, r)].set_char('┤');
+        let len = label.chars().count() as u16;
+        let x0 = g.labels.x + g.labels.width.saturating_sub(len);
+        buf.set_stringn(x0, r, label, g.labels.width as usize, Style::default());
+    }
+    for (pos, _) in &x.ticks {
+        buf[(p.x + column(frac(*pos, frame.x), p.width), g.axis_row)].set_char('┬');
+    }
+    let mut free = p.x;
+    for m in &frame.plot.x_marks {
+        let Some(v) = frame.plot.x.scale.to_plot(m.at) else {
+            continue;
+        };
+        let len = m.label.chars().count() as u16;
+        let centre = p.x + column(frac(v, frame.x), p.width);
+        let start = centre.saturating_sub(len / 2).max(free);
+        if start + len > p.x + p.width {
+            continue;
+        }
+        buf.set_stringn(start, g.axis_row, &m.label, len as usize, Style::default());
+        free = start + len + 1;
+    }
+    if let Some(r) = g.x_labels {
+        let left = p.x - g.header.x;
+        let width = g.header.width;
+        let (labels, title) = place_x(x, frame.x, left, width);
+        for (start, label) in labels {
+            buf.set_string(g.header.x + start, r, label, Style::default());
+        }
+        let len = x.title.chars().count() as u16;
+        buf.set_stringn(
+            g.header.x + title,
+            r,
+            &x.title,
+            len as usize,
+            Style::default(),
+        );
+    }
+}

@@ -1,0 +1,138 @@
+//! The legend of a plot: where it goes (never on data while there is room elsewhere) and how
+//! its entries are written.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+
+use crate::tui::view::raster::Raster;
+
+/// One legend line: a sample of how the thing is drawn, and its name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entry {
+    /// Two columns showing the curve's look ("──" in its colour, "**", "11", "●").
+    pub sample: String,
+    /// The sample's style.
+    pub style: Style,
+    /// What it is.
+    pub text: String,
+}
+
+impl Entry {
+    /// Columns taken: sample, space, text.
+    pub fn width(&self) -> usize {
+        self.sample.chars().count() + 1 + self.text.chars().count()
+    }
+
+    /// Writes the entry at (x, y), at most `width` columns.
+    pub fn render(&self, buf: &mut Buffer, x: u16, y: u16, width: u16) {
+        let text = format!(" {}", self.text);
+        let (end, _) = buf.set_stringn(x, y, &self.sample, width as usize, self.style);
+        let used = end.saturating_sub(x);
+        buf.set_stringn(
+            end,
+            y,
+            &text,
+            width.saturating_sub(used) as usize,
+            Style::default(),
+        );
+    }
+}
+
+/// Where a plot's legend goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// In the header row, right of the y axis title.
+    Header,
+    /// In rows of its own above the plot: this many.
+    Rows(u16),
+    /// Inside the plot area at this corner (column, row of the plot area).
+    Corner(u16, u16),
+}
+
+/// The columns the entries take in one line, two spaces apart.
+pub fn line_width(entries: &[Entry]) -> usize {
+    entries.iter().map(|e| e.width() + 2).sum::<usize>()
+}
+
+/// Rows of `width` columns that the entries take when packed whole, two spaces apart.
+pub fn rows_needed(entries: &[Entry], width: usize) -> u16 {
+    let mut rows = 0u16;
+    let mut used = width;
+    for e in entries {
+        if used + 2 + e.width() > width {
+            rows += 1;
+            used = e.width();
+        } else {
+            used += 2 + e.width();
+        }
+    }
+    rows
+}
+
+/// The legend box's size inside the plot: the widest entry (and a column apart), one row each.
+pub fn box_size(entries: &[Entry]) -> (u16, u16) {
+    let w = entries.iter().map(Entry::width).max().unwrap_or(0) + 1;
+    (w as u16, entries.len() as u16)
+}
+
+/// The corner of the plot area where the legend box covers no data cell: top right, top left,
+/// bottom right, bottom left, in that order of preference. With `fallback`, the corner covering
+/// the fewest when none is empty.
+pub fn corner(raster: &Raster, plot: Rect, entries: &[Entry], fallback: bool) -> Option<Place> {
+    let (w, h) = box_size(entries);
+    if w > plot.width || h > plot.height {
+        return None;
+    }
+    let (right, bottom) = (plot.width - w, plot.height - h);
+    let corners = [(right, 0), (0, 0), (right, bottom), (0, bottom)];
+    let covered = |&(x, y): &(u16, u16)| {
+        raster.count(Rect {
+            x,
+            y,
+            width: w,
+            height: h,
+        })
+    };
+    match corners.iter().find(|c| covered(c) == 0) {
+        Some(&(x, y)) => Some(Place::Corner(x, y)),
+        None if fallback => corners
+            .iter()
+            .min_by_key(|c| covered(c))
+            .map(|&(x, y)| Place::Corner(x, y)),
+        None => None,
+    }
+}
+
+/// Writes the entries as packed lines into `area` (header row or legend rows), right-aligned.
+pub fn render_lines(entries: &[Entry], buf: &mut Buffer, area: Rect) {
+    let mut lines: Vec<Vec<&Entry>> = Vec::new();
+    let mut used = area.width as usize;
+    for e in entries {
+        if used + 2 + e.width() > area.width as usize || lines.is_empty() {
+            lines.push(Vec::new());
+            used = e.width();
+        } else {
+            used += 2 + e.width();
+        }
+        lines.last_mut().expect("pushed").push(e);
+    }
+    for (row, line) in lines.iter().enumerate().take(area.height as usize) {
+        let width: usize = line.iter().map(|e| e.width()).sum::<usize>() + 2 * (line.len() - 1);
+        let mut x = area.x + (area.width as usize).saturating_sub(width) as u16;
+        for e in line {
+            e.render(buf, x, area.y + row as u16, area.x + area.width - x);
+            x += e.width() as u16 + 2;
+        }
+    }
+}
+
+/// Writes the entries as a box at the top left corner (x, y), clearing it first.
+pub fn render_box(entries: &[Entry], buf: &mut Buffer, x: u16, y: u16) {
+    let (w, _) = box_size(entries);
+    for (i, e) in entries.iter().enumerate() {
+        let row = y + i as u16;
+        buf.set_stringn(x, row, " ".repeat(w as usize), w as usize, Style::default());
+        e.render(buf, x + 1, row, w - 1);
+    }
+}
