@@ -2,6 +2,7 @@
 //! reports. No terminal code lives here.
 
 pub mod engine;
+pub mod explore;
 pub mod finite;
 pub mod physics;
 pub mod preset;

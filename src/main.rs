@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+mod cli;
 mod tui;
 
 use wearlab::physics::SolveError;
@@ -61,6 +62,24 @@ enum Command {
         /// Set a preset value before solving, e.g. material.thickness=10um (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
         settings: Vec<String>,
+    },
+    /// Solve a preset over a range of one parameter (a curve) or two (a grid); rows on stdout.
+    Sweep {
+        /// The preset file (TOML, schema 1).
+        preset: PathBuf,
+        /// The parameter and its range, e.g. material.thickness=1um:10mm:40:log (one for a
+        /// curve, two for a grid; N defaults to 50 for a curve, 20 per side for a grid).
+        #[arg(long, value_name = "KEY=FROM:TO[:N][:log]", allow_hyphen_values = true)]
+        vary: Vec<String>,
+        /// Set a preset value first, e.g. plane.model=strip (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
+        settings: Vec<String>,
+        /// The quantities to write, comma-separated (default: the scalar keys of `solve`).
+        #[arg(long, value_name = "LIST")]
+        output: Option<String>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
     },
 }
 
@@ -125,6 +144,19 @@ fn main() -> ExitCode {
                 settings,
             },
         ),
+        Some(Command::Sweep {
+            preset,
+            vary,
+            settings,
+            output,
+            format,
+        }) => cli::sweep::run(&cli::sweep::Request {
+            path: &preset,
+            vary: &vary,
+            settings: &settings,
+            output: output.as_deref(),
+            format,
+        }),
         None => explore(
             cli.preset,
             tui::Options {

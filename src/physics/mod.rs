@@ -100,13 +100,16 @@ pub enum Spacing {
 }
 
 impl Spacing {
-    /// `points` values from `min` to `max`, both included (points >= 2).
+    /// `points` values from `min` to `max`, both included exactly (points >= 2), so that a range
+    /// ending on a parameter's limit never steps past it by round-off.
     pub fn points(self, min: f64, max: f64, points: usize) -> Vec<f64> {
         let n = points.max(2);
         (0..n)
             .map(|i| {
                 let t = i as f64 / (n - 1) as f64;
                 match self {
+                    _ if i == 0 => min,
+                    _ if i == n - 1 => max,
                     Spacing::Log => (min.ln() + t * (max / min).ln()).exp(),
                     Spacing::Linear => min + t * (max - min),
                 }

@@ -19,6 +19,8 @@ pub enum Access {
     Number {
         /// The allowed values.
         limit: Limit,
+        /// A typical magnitude: where a default range or a nudge from 0 starts.
+        typical: f64,
         /// Reads it.
         get: fn(&Preset) -> f64,
         /// Writes it (unchecked: `Preset::set` checks).
@@ -28,6 +30,8 @@ pub enum Access {
     Harmonic {
         /// The allowed values.
         limit: Limit,
+        /// A typical magnitude: where a default range or a nudge from 0 starts.
+        typical: f64,
         /// Reads it.
         get: fn(&Harmonic) -> f64,
         /// Writes it (unchecked).
@@ -65,6 +69,15 @@ impl Param {
     pub fn limit(&self) -> Option<&Limit> {
         match &self.access {
             Access::Number { limit, .. } | Access::Harmonic { limit, .. } => Some(limit),
+            Access::Choice { .. } => None,
+        }
+    }
+
+    /// A typical magnitude of a number (None for a choice): where a default range or a nudge
+    /// from 0 starts.
+    pub fn typical(&self) -> Option<f64> {
+        match self.access {
+            Access::Number { typical, .. } | Access::Harmonic { typical, .. } => Some(typical),
             Access::Choice { .. } => None,
         }
     }
@@ -126,10 +139,10 @@ fn scale(index: usize) -> Spacing {
 
 const fn number(
     key: &'static str,
-    symbol: &'static str,
-    label: &'static str,
+    [symbol, label]: [&'static str; 2],
     unit: &'static str,
     limit: Limit,
+    typical: f64,
     get: fn(&Preset) -> f64,
     set: fn(&mut Preset, f64),
 ) -> Param {
@@ -138,16 +151,21 @@ const fn number(
         symbol,
         label,
         unit,
-        access: Access::Number { limit, get, set },
+        access: Access::Number {
+            limit,
+            typical,
+            get,
+            set,
+        },
     }
 }
 
 const fn wave(
     key: &'static str,
-    symbol: &'static str,
-    label: &'static str,
+    [symbol, label]: [&'static str; 2],
     unit: &'static str,
     limit: Limit,
+    typical: f64,
     get: fn(&Harmonic) -> f64,
     set: fn(&mut Harmonic, f64),
 ) -> Param {
@@ -156,14 +174,18 @@ const fn wave(
         symbol,
         label,
         unit,
-        access: Access::Harmonic { limit, get, set },
+        access: Access::Harmonic {
+            limit,
+            typical,
+            get,
+            set,
+        },
     }
 }
 
 const fn choice(
     key: &'static str,
-    symbol: &'static str,
-    label: &'static str,
+    [symbol, label]: [&'static str; 2],
     names: &'static [&'static str],
     get: fn(&Preset) -> usize,
     set: fn(&mut Preset, usize),
@@ -180,31 +202,31 @@ const fn choice(
 /// Every parameter, in the order of the preset file.
 #[rustfmt::skip]
 pub const PARAMS: &[Param] = &[
-    number("material.youngs_modulus", "E", "Young's modulus", "Pa", limits::YOUNGS_MODULUS, |p| p.material.youngs_modulus, |p, v| p.material.youngs_modulus = v),
-    number("material.poisson_ratio", "nu", "Poisson's ratio", "", limits::POISSON_RATIO, |p| p.material.poisson_ratio, |p, v| p.material.poisson_ratio = v),
-    number("material.thickness", "h", "thickness of the strip / layer", "m", limits::THICKNESS, |p| p.material.thickness, |p, v| p.material.thickness = v),
-    number("friction.coefficient", "mu", "friction coefficient", "", limits::FRICTION, |p| p.friction.coefficient, |p, v| p.friction.coefficient = v),
-    number("friction.adhesion", "tau0", "adhesive shear stress", "Pa", limits::ADHESION, |p| p.friction.adhesion, |p, v| p.friction.adhesion = v),
-    number("wear.coefficient", "k", "wear coefficient", "1/Pa", limits::WEAR, |p| p.wear, |p, v| p.wear = v),
-    choice("plane.model", "model", "plane model", MODELS, |p| model_index(p.plane.model), |p, i| p.plane.model = Model::ALL[i]),
-    number("plane.radius", "R", "punch radius", "m", limits::RADIUS, |p| p.plane.radius, |p, v| p.plane.radius = v),
-    number("plane.load", "P", "load per unit length", "N/m", limits::LINE_LOAD, |p| p.plane.load, |p, v| p.plane.load = v),
-    number("plane.sweep.load_min", "P min", "smallest load of the mu*(P) curve", "N/m", limits::LINE_LOAD, |p| p.plane.sweep.min, |p, v| p.plane.sweep.min = v),
-    number("plane.sweep.load_max", "P max", "largest load of the mu*(P) curve", "N/m", limits::LINE_LOAD, |p| p.plane.sweep.max, |p, v| p.plane.sweep.max = v),
-    number("plane.sweep.points", "points", "points of the mu*(P) curve", "", limits::SWEEP_POINTS, |p| p.plane.sweep.points as f64, |p, v| p.plane.sweep.points = v as usize),
-    choice("plane.sweep.scale", "scale", "spacing of the mu*(P) curve", SCALES, |p| scale_index(p.plane.sweep.spacing), |p, i| p.plane.sweep.spacing = scale(i)),
-    number("spatial.mean_pressure", "pbar", "mean pressure", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.mean_pressure, |p, v| p.spatial.mean_pressure = v),
-    number("spatial.sliding_speed", "V", "sliding speed", "m/s", limits::SPEED, |p| p.spatial.sliding_speed, |p, v| p.spatial.sliding_speed = v),
-    number("spatial.time", "t", "the instant shown", "s", limits::TIME, |p| p.spatial.time, |p, v| p.spatial.time = v),
-    number("spatial.duration", "duration", "extent of the time charts", "s", limits::DURATION, |p| p.spatial.duration, |p, v| p.spatial.duration = v),
-    number("spatial.grid", "grid", "points per side of the field", "", limits::GRID, |p| p.spatial.grid as f64, |p, v| p.spatial.grid = v as usize),
-    number("spatial.sweep.pressure_min", "pbar min", "smallest mean pressure of the mu*(pbar) curve", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.sweep.min, |p, v| p.spatial.sweep.min = v),
-    number("spatial.sweep.pressure_max", "pbar max", "largest mean pressure of the mu*(pbar) curve", "Pa", limits::MEAN_PRESSURE, |p| p.spatial.sweep.max, |p, v| p.spatial.sweep.max = v),
-    number("spatial.sweep.points", "points", "points of the mu*(pbar) curve", "", limits::SWEEP_POINTS, |p| p.spatial.sweep.points as f64, |p, v| p.spatial.sweep.points = v as usize),
-    choice("spatial.sweep.scale", "scale", "spacing of the mu*(pbar) curve", SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| p.spatial.sweep.spacing = scale(i)),
-    wave("spatial.harmonics.N.amplitude", "A", "amplitude of the harmonic", "m", limits::AMPLITUDE, |h| h.amplitude, |h, v| h.amplitude = v),
-    wave("spatial.harmonics.N.wavenumber_x", "wx", "wavenumber along the sliding line", "rad/m", limits::WAVENUMBER, |h| h.wavenumber_x, |h, v| h.wavenumber_x = v),
-    wave("spatial.harmonics.N.wavenumber_y", "wy", "wavenumber across the sliding line", "rad/m", limits::WAVENUMBER, |h| h.wavenumber_y, |h, v| h.wavenumber_y = v),
-    wave("spatial.harmonics.N.phase_x", "rho_x", "phase along x at t = 0", "rad", limits::PHASE, |h| h.phase_x, |h, v| h.phase_x = v),
-    wave("spatial.harmonics.N.phase_y", "rho_y", "phase along y", "rad", limits::PHASE, |h| h.phase_y, |h, v| h.phase_y = v),
+    number("material.youngs_modulus", ["E", "Young's modulus"], "Pa", limits::YOUNGS_MODULUS, 1e9, |p| p.material.youngs_modulus, |p, v| p.material.youngs_modulus = v),
+    number("material.poisson_ratio", ["nu", "Poisson's ratio"], "", limits::POISSON_RATIO, 0.3, |p| p.material.poisson_ratio, |p, v| p.material.poisson_ratio = v),
+    number("material.thickness", ["h", "thickness of the strip / layer"], "m", limits::THICKNESS, 1e-3, |p| p.material.thickness, |p, v| p.material.thickness = v),
+    number("friction.coefficient", ["mu", "friction coefficient"], "", limits::FRICTION, 0.3, |p| p.friction.coefficient, |p, v| p.friction.coefficient = v),
+    number("friction.adhesion", ["tau0", "adhesive shear stress"], "Pa", limits::ADHESION, 1e4, |p| p.friction.adhesion, |p, v| p.friction.adhesion = v),
+    number("wear.coefficient", ["k", "wear coefficient"], "1/Pa", limits::WEAR, 1e-15, |p| p.wear, |p, v| p.wear = v),
+    choice("plane.model", ["model", "plane model"], MODELS, |p| model_index(p.plane.model), |p, i| p.plane.model = Model::ALL[i]),
+    number("plane.radius", ["R", "punch radius"], "m", limits::RADIUS, 0.01, |p| p.plane.radius, |p, v| p.plane.radius = v),
+    number("plane.load", ["P", "load per unit length"], "N/m", limits::LINE_LOAD, 1e3, |p| p.plane.load, |p, v| p.plane.load = v),
+    number("plane.sweep.load_min", ["P min", "smallest load of the mu*(P) curve"], "N/m", limits::LINE_LOAD, 1e2, |p| p.plane.sweep.min, |p, v| p.plane.sweep.min = v),
+    number("plane.sweep.load_max", ["P max", "largest load of the mu*(P) curve"], "N/m", limits::LINE_LOAD, 1e5, |p| p.plane.sweep.max, |p, v| p.plane.sweep.max = v),
+    number("plane.sweep.points", ["points", "points of the mu*(P) curve"], "", limits::SWEEP_POINTS, 60.0, |p| p.plane.sweep.points as f64, |p, v| p.plane.sweep.points = v as usize),
+    choice("plane.sweep.scale", ["scale", "spacing of the mu*(P) curve"], SCALES, |p| scale_index(p.plane.sweep.spacing), |p, i| p.plane.sweep.spacing = scale(i)),
+    number("spatial.mean_pressure", ["pbar", "mean pressure"], "Pa", limits::MEAN_PRESSURE, 1e6, |p| p.spatial.mean_pressure, |p, v| p.spatial.mean_pressure = v),
+    number("spatial.sliding_speed", ["V", "sliding speed"], "m/s", limits::SPEED, 0.1, |p| p.spatial.sliding_speed, |p, v| p.spatial.sliding_speed = v),
+    number("spatial.time", ["t", "the instant shown"], "s", limits::TIME, 10.0, |p| p.spatial.time, |p, v| p.spatial.time = v),
+    number("spatial.duration", ["duration", "extent of the time charts"], "s", limits::DURATION, 100.0, |p| p.spatial.duration, |p, v| p.spatial.duration = v),
+    number("spatial.grid", ["grid", "points per side of the field"], "", limits::GRID, 64.0, |p| p.spatial.grid as f64, |p, v| p.spatial.grid = v as usize),
+    number("spatial.sweep.pressure_min", ["pbar min", "smallest mean pressure of the mu*(pbar) curve"], "Pa", limits::MEAN_PRESSURE, 1e5, |p| p.spatial.sweep.min, |p, v| p.spatial.sweep.min = v),
+    number("spatial.sweep.pressure_max", ["pbar max", "largest mean pressure of the mu*(pbar) curve"], "Pa", limits::MEAN_PRESSURE, 1e8, |p| p.spatial.sweep.max, |p, v| p.spatial.sweep.max = v),
+    number("spatial.sweep.points", ["points", "points of the mu*(pbar) curve"], "", limits::SWEEP_POINTS, 60.0, |p| p.spatial.sweep.points as f64, |p, v| p.spatial.sweep.points = v as usize),
+    choice("spatial.sweep.scale", ["scale", "spacing of the mu*(pbar) curve"], SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| p.spatial.sweep.spacing = scale(i)),
+    wave("spatial.harmonics.N.amplitude", ["A", "amplitude of the harmonic"], "m", limits::AMPLITUDE, 1e-7, |h| h.amplitude, |h, v| h.amplitude = v),
+    wave("spatial.harmonics.N.wavenumber_x", ["wx", "wavenumber along the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_x, |h, v| h.wavenumber_x = v),
+    wave("spatial.harmonics.N.wavenumber_y", ["wy", "wavenumber across the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_y, |h, v| h.wavenumber_y = v),
+    wave("spatial.harmonics.N.phase_x", ["rho_x", "phase along x at t = 0"], "rad", limits::PHASE, 1.0, |h| h.phase_x, |h, v| h.phase_x = v),
+    wave("spatial.harmonics.N.phase_y", ["rho_y", "phase along y"], "rad", limits::PHASE, 1.0, |h| h.phase_y, |h, v| h.phase_y = v),
 ];

@@ -1,0 +1,119 @@
+//! `wearlab sweep PRESET --vary KEY=FROM:TO[:N][:log] [--vary ...] [--set ...] [--output LIST]
+//! [--format csv|json]`: the library's sweep (`wearlab::explore::sweep`) with a progress bar on
+//! a terminal, its rows on stdout, and the exit codes of `solve`.
+
+use std::io::{self, IsTerminal};
+use std::path::Path;
+use std::process::ExitCode;
+
+use indicatif::{ProgressBar, ProgressStyle};
+
+use wearlab::explore::axis::{Axis, CURVE_POINTS, GRID_POINTS};
+use wearlab::explore::quantity::{self, QuantityKey};
+use wearlab::explore::{output, sweep};
+use wearlab::preset::Preset;
+
+use crate::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
+
+/// What `wearlab sweep` was asked.
+pub struct Request<'a> {
+    /// The preset file.
+    pub path: &'a Path,
+    /// `--vary`, in order.
+    pub vary: &'a [String],
+    /// `--set`, in order.
+    pub settings: &'a [String],
+    /// `--output`, a comma-separated list.
+    pub output: Option<&'a str>,
+    /// `--format`.
+    pub format: Format,
+}
+
+fn invalid(why: &str) -> ExitCode {
+    say(&format!("error: {why}"));
+    ExitCode::from(EXIT_INVALID)
+}
+
+fn axes(preset: &Preset, vary: &[String]) -> Result<Vec<Axis>, String> {
+    let points = match vary.len() {
+        0 => {
+            return Err(
+                "give --vary KEY=FROM:TO[:N][:log] (one for a curve, two for a grid)".into(),
+            );
+        }
+        1 => CURVE_POINTS,
+        2 => GRID_POINTS,
+        n => {
+            return Err(format!(
+                "{n} --vary given: at most two (one gives a curve, two a grid)"
+            ));
+        }
+    };
+    let axes = vary
+        .iter()
+        .map(|v| Axis::parse(preset, v, points).map_err(|why| format!("--vary {why}")))
+        .collect::<Result<Vec<_>, _>>()?;
+    if let [a, b] = axes.as_slice()
+        && a.key == b.key
+    {
+        return Err(format!(
+            "--vary {} given twice: vary two different parameters",
+            a.key
+        ));
+    }
+    Ok(axes)
+}
+
+fn outputs(preset: &Preset, list: Option<&str>) -> Result<Vec<QuantityKey>, String> {
+    match list {
+        None => Ok(quantity::defaults(preset)),
+        Some(list) => list
+            .split(',')
+            .map(|name| QuantityKey::parse(name, preset).map_err(|why| format!("--output {why}")))
+            .collect(),
+    }
+}
+
+fn progress(points: usize) -> ProgressBar {
+    if !io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(points as u64);
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} points, {eta} left") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// Runs `wearlab sweep`.
+pub fn run(request: &Request) -> ExitCode {
+    let preset = match load_with(request.path, request.settings) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let axes = match axes(&preset, request.vary) {
+        Ok(a) => a,
+        Err(why) => return invalid(&why),
+    };
+    let outputs = match outputs(&preset, request.output) {
+        Ok(o) => o,
+        Err(why) => return invalid(&why),
+    };
+    let bar = progress(axes.iter().map(|a| a.range.points).product());
+    let rows = sweep::run(&preset, &axes, &outputs, &|| bar.inc(1));
+    bar.finish_and_clear();
+    let text = match request.format {
+        Format::Csv => output::csv(&axes, &outputs, &rows),
+        Format::Json => output::json(&preset, &axes, &outputs, &rows),
+    };
+    let printed = print(&text, Ok(()));
+    match rows.iter().find_map(|r| r.failure.as_ref()) {
+        Some(why) if printed == ExitCode::SUCCESS && rows.iter().all(|r| r.failure.is_some()) => {
+            say(&format!(
+                "error: no point of the sweep has an answer; the first: {why}"
+            ));
+            ExitCode::from(EXIT_UNSOLVABLE)
+        }
+        _ => printed,
+    }
+}

@@ -1,0 +1,14 @@
+//! Exploring any parameter (issue 12): sweeps of every numeric input of a preset (`preset::Key`)
+//! over a range (`axis`), the quantities a sweep can show (`quantity`, one registry for the
+//! command line and the explorer), one solved point (`point`), sweeps in parallel for
+//! `wearlab sweep` (`sweep`) and their CSV and JSON (`output`).
+
+pub mod axis;
+pub mod output;
+pub mod point;
+mod quantities;
+pub mod quantity;
+pub mod sweep;
+
+pub use axis::Axis;
+pub use quantity::{Quantity, QuantityKey};

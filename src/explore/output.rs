@@ -1,0 +1,126 @@
+//! The rows of a sweep as CSV or JSON (`wearlab sweep --format`). Numbers are written in the
+//! shortest form that reads back to the same bits (`{:e}` in CSV, as `wearlab solve --format csv`
+//! does; serde_json's in JSON, as `wearlab solve` does); flags as true/false. A field is empty
+//! (JSON null) only where its row's `status` says why; `status` is "ok" otherwise.
+
+use serde::ser::{Serialize, SerializeMap, Serializer};
+
+use crate::explore::axis::Axis;
+use crate::explore::quantity::QuantityKey;
+use crate::explore::sweep::Row;
+use crate::physics::Spacing;
+use crate::preset::{Preset, Problem};
+
+fn cell(q: &QuantityKey, v: &Result<f64, String>) -> String {
+    match v {
+        Ok(v) if q.quantity().flag => (*v != 0.0).to_string(),
+        Ok(v) => format!("{v:e}"),
+        Err(_) => String::new(),
+    }
+}
+
+fn quoted(text: &str) -> String {
+    if text.contains([',', '"', '\n']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// CSV: a header of the varied keys, the outputs and `status`, then one line per row.
+pub fn csv(axes: &[Axis], outputs: &[QuantityKey], rows: &[Row]) -> String {
+    let mut header: Vec<String> = axes.iter().map(|a| a.key.to_string()).collect();
+    header.extend(outputs.iter().map(|q| q.to_string()));
+    header.push("status".into());
+    let mut out = header.join(",") + "\n";
+    for row in rows {
+        let mut fields: Vec<String> = row.at.iter().map(|v| format!("{v:e}")).collect();
+        fields.extend(outputs.iter().zip(&row.values).map(|(q, v)| cell(q, v)));
+        fields.push(quoted(&row.status()));
+        out += &(fields.join(",") + "\n");
+    }
+    out
+}
+
+struct JsonRow<'a> {
+    axes: &'a [Axis],
+    outputs: &'a [QuantityKey],
+    row: &'a Row,
+}
+
+impl Serialize for JsonRow<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(None)?;
+        for (axis, v) in self.axes.iter().zip(&self.row.at) {
+            map.serialize_entry(&axis.key.to_string(), v)?;
+        }
+        for (q, v) in self.outputs.iter().zip(&self.row.values) {
+            let name = q.to_string();
+            match v {
+                Ok(v) if q.quantity().flag => map.serialize_entry(&name, &(*v != 0.0))?,
+                Ok(v) => map.serialize_entry(&name, v)?,
+                Err(_) => map.serialize_entry(&name, &())?,
+            }
+        }
+        map.serialize_entry("status", &self.row.status())?;
+        map.end()
+    }
+}
+
+#[derive(serde::Serialize)]
+struct Vary {
+    key: String,
+    from: f64,
+    to: f64,
+    points: usize,
+    scale: Spacing,
+}
+
+#[derive(serde::Serialize)]
+struct Column {
+    name: String,
+    unit: &'static str,
+    description: &'static str,
+}
+
+#[derive(serde::Serialize)]
+struct Document<'a> {
+    problem: Problem,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    model: Option<&'static str>,
+    vary: Vec<Vary>,
+    outputs: Vec<Column>,
+    rows: Vec<JsonRow<'a>>,
+}
+
+/// JSON: the problem (and plane model), the varied ranges, the outputs with their units and
+/// descriptions, and the rows as objects keyed by the varied keys, the outputs and `status`.
+pub fn json(preset: &Preset, axes: &[Axis], outputs: &[QuantityKey], rows: &[Row]) -> String {
+    let doc = Document {
+        problem: preset.problem,
+        model: (preset.problem == Problem::Plane).then(|| preset.plane.model.name()),
+        vary: axes
+            .iter()
+            .map(|a| Vary {
+                key: a.key.to_string(),
+                from: a.range.min,
+                to: a.range.max,
+                points: a.range.points,
+                scale: a.range.spacing,
+            })
+            .collect(),
+        outputs: outputs
+            .iter()
+            .map(|q| Column {
+                name: q.to_string(),
+                unit: q.quantity().unit,
+                description: q.quantity().description,
+            })
+            .collect(),
+        rows: rows
+            .iter()
+            .map(|row| JsonRow { axes, outputs, row })
+            .collect(),
+    };
+    serde_json::to_string_pretty(&doc).expect("a sweep holds only numbers and strings") + "\n"
+}

@@ -1,0 +1,134 @@
+//! One point of a sweep or a map: a preset solved through the library's stage pipeline, the
+//! same functions `wearlab solve` reports from, so that every number is bit for bit the one
+//! `wearlab solve --set` prints at the same inputs.
+//!
+//! - plane: `plane::solve` and `validity::check`, the stages of `plane::operating_point`; the
+//!   energy identity (its costly quadrature), the largest pressure and the wear at the tip are
+//!   computed only when a quantity asks for them.
+//! - spatial: `spatial::state_at` at the preset's time, on the smallest field grid and a two-point
+//!   mean-pressure sweep (the solution and the contact check do not depend on either).
+
+use std::cell::OnceCell;
+
+use crate::physics::plane::energy::{Energy, energy};
+use crate::physics::plane::validity::{Validity, check};
+use crate::physics::plane::{self, PlaneSolution};
+use crate::physics::quadrature::tanh_sinh;
+use crate::physics::spatial::{self, SpatialState, StateAt, state_at};
+use crate::physics::{SolveError, SweepRange, limits};
+use crate::preset::{Preset, Problem};
+
+/// A solved plane point.
+#[derive(Debug)]
+pub struct PlanePoint {
+    /// The solution.
+    pub solution: PlaneSolution,
+    /// The model's validity verdict at this point.
+    pub validity: Validity,
+    energy: OnceCell<Energy>,
+}
+
+/// A solved spatial point.
+#[derive(Debug)]
+pub struct SpatialPoint {
+    /// The state at the preset's time (field on an 8 x 8 grid, a two-point mean-pressure sweep).
+    pub state: SpatialState,
+}
+
+/// A solved point of either problem.
+#[derive(Debug)]
+pub enum Point {
+    /// The plane problem.
+    Plane(Box<PlanePoint>),
+    /// The spatial problem.
+    Spatial(Box<SpatialPoint>),
+}
+
+/// Solves the preset's problem at its own values.
+pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
+    match preset.problem {
+        Problem::Plane => {
+            let solution = plane::solve(&preset.plane_inputs(), preset.plane.model)?;
+            Ok(Point::Plane(Box::new(PlanePoint {
+                validity: check(&solution),
+                solution,
+                energy: OnceCell::new(),
+            })))
+        }
+        Problem::Spatial => {
+            let inputs = preset.spatial_inputs();
+            inputs.validate()?;
+            let at = StateAt {
+                time: preset.spatial.time,
+                grid: limits::GRID.min as usize,
+                sweep: SweepRange {
+                    points: 2,
+                    ..preset.spatial.sweep
+                },
+            };
+            let state = state_at(&inputs, &spatial::evolutions(&inputs), &at)?;
+            Ok(Point::Spatial(Box::new(SpatialPoint { state })))
+        }
+    }
+}
+
+impl Point {
+    /// Why the point's numbers do not hold, when they do not: complete contact lost or not
+    /// certified (spatial; `wearlab solve` exits 3 there). None for a good point.
+    pub fn failure(&self) -> Option<String> {
+        match self {
+            Point::Plane(_) => None,
+            Point::Spatial(s) => s.state.contact.failure(),
+        }
+    }
+}
+
+impl PlanePoint {
+    /// The two sides of the energy identity (2.9), computed on first use.
+    pub fn energy(&self) -> &Energy {
+        self.energy.get_or_init(|| energy(&self.solution))
+    }
+
+    /// The largest contact pressure max q2 [Pa]: a scan of 64 intervals of [-a, b], then a golden
+    /// section search of the best one (100 steps at most, to 1e-12 of the width).
+    pub fn max_pressure(&self) -> f64 {
+        const SCAN: usize = 64;
+        let sol = &self.solution;
+        let l = sol.contact_width();
+        let q = |u: f64| sol.pressure_from_trailing_edge(u);
+        let at = |i: usize| l * i as f64 / SCAN as f64;
+        let best = (1..SCAN)
+            .max_by(|i, j| q(at(*i)).total_cmp(&q(at(*j))))
+            .unwrap_or(1);
+        let (mut lo, mut hi) = (at(best - 1), at(best + 1));
+        let ratio = 0.5 * (5f64.sqrt() - 1.0);
+        let mut x1 = hi - ratio * (hi - lo);
+        let mut x2 = lo + ratio * (hi - lo);
+        let (mut q1, mut q2) = (q(x1), q(x2));
+        for _ in 0..100 {
+            if hi - lo <= 1e-12 * l {
+                break;
+            }
+            if q1 < q2 {
+                (lo, x1, q1) = (x1, x2, q2);
+                x2 = lo + ratio * (hi - lo);
+                q2 = q(x2);
+            } else {
+                (hi, x2, q2) = (x2, x1, q1);
+                x1 = hi - ratio * (hi - lo);
+                q1 = q(x1);
+            }
+        }
+        q1.max(q2).max(q(at(best)))
+    }
+
+    /// The wear per pass at the punch tip [m]: k times the integral of q2 from the tip (x = 0, or
+    /// the nearer end of the contact when the tip lies outside it) to the leading edge b, the
+    /// depth a strip point under the tip's track loses in one pass (tanh-sinh, step 1/16).
+    pub fn tip_wear(&self) -> f64 {
+        let sol = &self.solution;
+        let from = 0f64.clamp(-sol.a, sol.b);
+        let rule = tanh_sinh(1.0 / 16.0);
+        sol.inputs.wear * rule.integrate(from, sol.b, |x| sol.pressure(x))
+    }
+}

@@ -1,0 +1,168 @@
+//! The table of quantities (`quantity::Quantity`), plane first, then spatial. The formulas are
+//! those of `docs/physics/plane.md` and `docs/physics/spatial.md`; the values are read from the
+//! solution the solvers return, never recomputed here.
+
+use crate::explore::point::{PlanePoint, SpatialPoint};
+use crate::explore::quantity::{Eval, Origin, Quantity};
+use crate::physics::plane::Model;
+use crate::physics::spatial::HarmonicSolution;
+use crate::preset::Problem;
+
+const fn plane(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    eval: fn(&PlanePoint) -> Result<f64, String>,
+) -> Quantity {
+    Quantity {
+        name,
+        symbol,
+        unit,
+        description,
+        problem: Problem::Plane,
+        origin: Origin::Report,
+        group: false,
+        flag: false,
+        models: None,
+        eval: Eval::Plane(eval),
+    }
+}
+
+const fn spatial(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    eval: Eval,
+) -> Quantity {
+    Quantity {
+        name,
+        symbol,
+        unit,
+        description,
+        problem: Problem::Spatial,
+        origin: Origin::Report,
+        group: false,
+        flag: false,
+        models: None,
+        eval,
+    }
+}
+
+impl Quantity {
+    const fn derived(self) -> Quantity {
+        Quantity {
+            origin: Origin::Derived,
+            ..self
+        }
+    }
+    const fn group(self) -> Quantity {
+        Quantity {
+            group: true,
+            ..self
+        }
+    }
+    const fn flag(self) -> Quantity {
+        Quantity { flag: true, ..self }
+    }
+    const fn only(self, models: &'static [Model]) -> Quantity {
+        Quantity {
+            models: Some(models),
+            ..self
+        }
+    }
+}
+
+/// The models whose solution has the exponent shift theta (and gamma).
+const EXPONENT: &[Model] = &[Model::Wide, Model::Strip];
+
+fn exponent(value: Option<f64>) -> Result<f64, String> {
+    value.ok_or_else(|| "the narrow model has no theta".into())
+}
+
+fn yes(flag: bool) -> Result<f64, String> {
+    Ok(if flag { 1.0 } else { 0.0 })
+}
+
+fn wave(s: &SpatialPoint, n: usize) -> &HarmonicSolution {
+    &s.state.solution.harmonics[n]
+}
+
+const fn harmonic(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    eval: fn(&SpatialPoint, usize) -> Result<f64, String>,
+) -> Quantity {
+    spatial(name, symbol, unit, description, Eval::Harmonic(eval))
+}
+
+/// Every quantity.
+#[rustfmt::skip]
+pub(crate) const QUANTITIES: &[Quantity] = &[
+    plane("load", "P", "N/m", "normal load per unit length (the input)", |p| Ok(p.solution.inputs.load)),
+    plane("normal_force", "Q2", "N/m", "total normal contact force", |p| Ok(p.solution.normal_force)),
+    plane("tangential_force", "T", "N/m", "tangential force that drives the punch, T = Q1 + psi (3.11)", |p| Ok(p.solution.tangential_force)),
+    plane("a", "a", "m", "trailing half-width: the contact zone is [-a, b]", |p| Ok(p.solution.a)),
+    plane("b", "b", "m", "leading half-width (b is the leading edge)", |p| Ok(p.solution.b)),
+    plane("theta", "theta", "", "exponent shift of the pressure, q2 ~ (a+x)^(1/2-theta) (b-x)^(1/2+theta) (4.5): > 0 friction dominates (a > b), < 0 wear dominates (b > a)", |p| exponent(p.solution.theta)).only(EXPONENT).group(),
+    plane("gamma", "gamma", "1/Pa", "gamma = pi chi mu/m - k of (4.3); theta has its sign", |p| exponent(p.solution.gamma)).only(EXPONENT),
+    plane("psi", "psi", "N/m", "deformation component of friction, the integral of q2 g' (2.2)", |p| Ok(p.solution.psi)),
+    plane("delta_g", "Delta_g", "m", "g(b) - g(-a) (3.11)", |p| Ok(p.solution.delta_g)),
+    plane("mu_star", "mu*", "", "total friction coefficient (3.13)", |p| Ok(p.solution.mu_star)),
+    plane("energy.I", "I", "N/m", "integral of q1 u', one side of the energy identity (2.9)", |p| Ok(p.energy().i)),
+    plane("energy.J", "J", "N/m", "integral of q2 v', the other side of (2.9)", |p| Ok(p.energy().j)),
+    plane("energy.residual", "I-J residual", "", "|I - J| relative to the gross work: how well (2.9) holds", |p| Ok(p.energy().residual)),
+    plane("validity.ok", "valid", "", "whether the model's validity check passes at this point (1 yes, 0 no)", |p| yes(p.validity.ok)).flag(),
+    plane("validity.contact_width_over_thickness", "(a+b)/h", "", "contact width over the thickness, 0 for the half-plane: the wide model is the limit of small values, the narrow (Winkler) model of large ones", |p| Ok(p.validity.contact_width_over_thickness)).group(),
+    plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 when wear dominates, < 0 when friction does", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),
+    plane("contact_width", "a+b", "m", "contact width", |p| Ok(p.solution.contact_width())).derived(),
+    plane("max_pressure", "max q2", "Pa", "largest contact pressure", |p| Ok(p.max_pressure())).derived(),
+    plane("tip_wear", "tip wear", "m", "wear per pass at the punch tip: k times the integral of q2 from the tip to the leading edge", |p| Ok(p.tip_wear())).derived(),
+    plane("width_over_radius", "(a+b)/R", "", "contact width over the punch radius: the small-slope theory needs it small (Hertz: sqrt(8 P/(m R)))", |p| Ok(p.solution.contact_width() / p.solution.inputs.radius)).derived().group(),
+    plane("wear_number", "k m", "", "wear coefficient times the plane modulus m = pi E/(2(1 - nu^2)): how strongly wear shifts the pressure forwards", |p| Ok(p.solution.inputs.wear * p.solution.inputs.material.plane_modulus())).derived().group(),
+    plane("friction_number", "mu chi", "", "friction coefficient times chi = (1 - 2nu)/(2(1 - nu)): how strongly friction shifts the pressure backwards; theta = 0 where mu chi = k m/pi", |p| Ok(p.solution.inputs.friction.coefficient * p.solution.inputs.material.chi())).derived().group(),
+    plane("load_number", "P/(m R)", "", "load over the plane modulus times the radius: the contact width over the radius grows like its square root", |p| Ok(p.solution.inputs.load / (p.solution.inputs.material.plane_modulus() * p.solution.inputs.radius))).derived().group(),
+    spatial("time", "t", "s", "the instant solved", Eval::Diagnostic(|s| Ok(s.state.solution.time))),
+    spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", Eval::Diagnostic(|s| Ok(s.state.solution.inputs.mean_pressure))),
+    spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi", Eval::Spatial(|s| Ok(s.state.solution.load))),
+    spatial("mu_star", "mu*", "", "total friction coefficient, mu + (1 + mu^2) psi/P", Eval::Spatial(|s| Ok(s.state.solution.mu_star))),
+    spatial("psi", "psi", "Pa", "deformation component of friction, psi = -<p g_x>", Eval::Spatial(|s| Ok(s.state.solution.psi))),
+    spatial("contact.min_pressure", "p_min", "Pa", "smallest contact pressure (certified over the period cell, else the bound pbar - sum A/M); contact is complete where it is > 0", Eval::Diagnostic(|s| Ok(s.state.contact.min_pressure))),
+    spatial("contact.lower_bound", "pbar-sum A/M", "Pa", "pbar - sum A/M, a lower bound of the pressure everywhere", Eval::Diagnostic(|s| Ok(s.state.contact.lower_bound))),
+    spatial("contact.complete", "complete", "", "whether contact is complete, p > 0 everywhere, certified (1 yes, 0 no)", Eval::Diagnostic(|s| yes(s.state.contact.complete))).flag(),
+    spatial("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction", Eval::Spatial(|s| Ok(s.state.solution.mu_star - s.state.solution.inputs.friction.coefficient))).derived(),
+    harmonic("harmonics.N.k", "k", "rad/m", "wavenumber |(wx, wy)| of the harmonic", |s, n| Ok(wave(s, n).initial.wavenumber())),
+    harmonic("harmonics.N.decay_rate", "beta", "1/s", "decay rate: A(t) = A(0) e^(-beta t)", |s, n| Ok(wave(s, n).evolution.decay_rate)),
+    harmonic("harmonics.N.drift_velocity", "c", "m/s", "drift velocity of the pattern, positive along +x (the friction force on the layer)", |s, n| Ok(wave(s, n).evolution.drift_velocity)),
+    harmonic("harmonics.N.phase_rate", "Omega", "rad/s", "phase rate: rho_x(t) = rho_x(0) - Omega t", |s, n| Ok(wave(s, n).evolution.phase_rate)),
+    harmonic("harmonics.N.phase_lead", "phi", "rad", "phase lead of the pressure over the shape: the friction coupling against the normal compliance, tan phi = mu sx B/A", |s, n| Ok(wave(s, n).evolution.phase_lead)).group(),
+    harmonic("harmonics.N.pressure_per_amplitude", "1/M", "Pa/m", "pressure amplitude per unit shape amplitude", |s, n| Ok(wave(s, n).evolution.pressure_per_amplitude())),
+    harmonic("harmonics.N.amplitude", "A", "m", "amplitude at time t", |s, n| Ok(wave(s, n).state.amplitude)),
+    harmonic("harmonics.N.phase_x", "rho_x", "rad", "phase along x at time t", |s, n| Ok(wave(s, n).state.phase_x)),
+    harmonic("harmonics.N.phase_y", "rho_y", "rad", "phase along y", |s, n| Ok(wave(s, n).state.phase_y)),
+    harmonic("harmonics.N.decay_time", "1/beta", "s", "decay time: the amplitude falls by a factor e in 1/beta", |s, n| decay_time(wave(s, n))).derived(),
+    harmonic("harmonics.N.kh", "kh", "", "wavenumber times thickness: below about 1 the layer is thin for this wave, above about 3 it acts as a half-space", kh).derived().group(),
+    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(wave(s, n).evolution.decay_rate * s.state.solution.time)).derived().group(),
+    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure: contact is surely complete while these sum below 1", |s, n| Ok(wave(s, n).state.amplitude / (wave(s, n).evolution.m * s.state.solution.inputs.mean_pressure))).derived().group(),
+];
+
+fn decay_time(h: &HarmonicSolution) -> Result<f64, String> {
+    let beta = h.evolution.decay_rate;
+    if beta > 0.0 {
+        Ok(1.0 / beta)
+    } else {
+        Err("beta = 0 (no wear, or V = 0): the harmonic does not decay, 1/beta is infinite".into())
+    }
+}
+
+fn kh(s: &SpatialPoint, n: usize) -> Result<f64, String> {
+    let h = s.state.solution.inputs.material.thickness;
+    if h.is_finite() {
+        Ok(wave(s, n).initial.wavenumber() * h)
+    } else {
+        Err("h = inf (half-space): kh is infinite".into())
+    }
+}

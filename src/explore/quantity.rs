@@ -1,0 +1,232 @@
+//! The quantity registry: everything a sweep, a curve or a map can show, one entry each (name,
+//! symbol, unit, description, how it is computed from a solved point). The names of quantities
+//! that `wearlab solve` reports are its JSON keys (`mu_star`, `contact.min_pressure`,
+//! `harmonics.N.decay_rate`); the others are derived (`mu_star_minus_mu`, `max_pressure`) or the
+//! problem's dimensionless groups. The table itself is in `quantities`.
+
+use std::fmt;
+
+use crate::explore::point::{PlanePoint, Point, SpatialPoint};
+use crate::explore::quantities::QUANTITIES;
+use crate::physics::plane::Model;
+use crate::preset::{Preset, Problem};
+
+/// How a quantity is computed from a point.
+#[derive(Clone, Copy, Debug)]
+pub enum Eval {
+    /// From a plane point.
+    Plane(fn(&PlanePoint) -> Result<f64, String>),
+    /// From a spatial point whose contact check passed.
+    Spatial(fn(&SpatialPoint) -> Result<f64, String>),
+    /// From any spatial point, also where complete contact is lost: the inputs and the contact
+    /// check, which says how it is lost.
+    Diagnostic(fn(&SpatialPoint) -> Result<f64, String>),
+    /// From one harmonic (0-based) of a spatial point whose contact check passed.
+    Harmonic(fn(&SpatialPoint, usize) -> Result<f64, String>),
+}
+
+/// Where a quantity comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// A key of `wearlab solve`'s JSON report.
+    Report,
+    /// Derived from the solution (the explorer's sweep chart offers it).
+    Derived,
+}
+
+/// One quantity.
+#[derive(Clone, Copy, Debug)]
+pub struct Quantity {
+    /// The name in `--output`, in CSV headers and JSON keys; `N` stands for a harmonic's index.
+    pub name: &'static str,
+    /// The symbol on charts ("mu*", "a+b", "1/beta").
+    pub symbol: &'static str,
+    /// The SI unit ("" for dimensionless).
+    pub unit: &'static str,
+    /// What it is, in words (its sign convention where it has one).
+    pub description: &'static str,
+    /// The problem it belongs to.
+    pub problem: Problem,
+    /// A key of the solve report, or derived.
+    pub origin: Origin,
+    /// One of the problem's dimensionless groups (the explorer's dimensionless view).
+    pub group: bool,
+    /// A yes/no answer, 1 or 0 (written true/false).
+    pub flag: bool,
+    /// The plane models that have it (None: all).
+    pub models: Option<&'static [Model]>,
+    /// How it is computed.
+    pub eval: Eval,
+}
+
+/// A quantity, and for a harmonic's quantity which harmonic (0-based).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct QuantityKey {
+    index: usize,
+    harmonic: Option<usize>,
+}
+
+const HARMONIC: &str = "harmonics.N.";
+
+impl QuantityKey {
+    /// The quantity.
+    pub fn quantity(self) -> &'static Quantity {
+        &QUANTITIES[self.index]
+    }
+
+    /// The harmonic (0-based) of a harmonic's quantity.
+    pub fn harmonic(self) -> Option<usize> {
+        self.harmonic
+    }
+
+    /// The symbol, with the harmonic's number (1-based, as the explorer shows it): "beta1".
+    pub fn symbol(self) -> String {
+        match self.harmonic {
+            Some(n) => format!("{}{}", self.quantity().symbol, n + 1),
+            None => self.quantity().symbol.to_string(),
+        }
+    }
+
+    /// Every quantity of the preset's problem and model, the harmonics' for each harmonic.
+    pub fn all(preset: &Preset) -> Vec<QuantityKey> {
+        let mut keys = Vec::new();
+        for (index, q) in QUANTITIES.iter().enumerate() {
+            if q.problem != preset.problem || q.missing_in(preset).is_some() {
+                continue;
+            }
+            match q.eval {
+                Eval::Harmonic(_) => {
+                    keys.extend((0..preset.spatial.harmonics.len()).map(|n| QuantityKey {
+                        index,
+                        harmonic: Some(n),
+                    }))
+                }
+                _ => keys.push(QuantityKey {
+                    index,
+                    harmonic: None,
+                }),
+            }
+        }
+        keys
+    }
+
+    /// Parses a quantity's name for a preset: of its problem, defined for its model, naming a
+    /// harmonic it has. Err says why and lists the names.
+    pub fn parse(text: &str, preset: &Preset) -> Result<QuantityKey, String> {
+        let text = text.trim();
+        let harmonic = text.strip_prefix("harmonics.").and_then(|rest| {
+            let (n, field) = rest.split_once('.')?;
+            Some((n.parse::<usize>().ok()?, field))
+        });
+        let found = QUANTITIES.iter().enumerate().find(|(_, q)| {
+            q.problem == preset.problem
+                && match harmonic {
+                    Some((_, field)) => q.name.strip_prefix(HARMONIC) == Some(field),
+                    None => q.name == text,
+                }
+        });
+        let Some((index, q)) = found else {
+            let names: Vec<&str> = QUANTITIES
+                .iter()
+                .filter(|q| q.problem == preset.problem)
+                .map(|q| q.name)
+                .collect();
+            return Err(format!(
+                "unknown output '{text}': the outputs of a {} preset are {}",
+                preset.problem.name(),
+                names.join(", ")
+            ));
+        };
+        if let Some(why) = q.missing_in(preset) {
+            return Err(format!("output '{text}': {why}"));
+        }
+        let count = preset.spatial.harmonics.len();
+        match harmonic {
+            Some((n, _)) if n >= count => Err(format!(
+                "output '{text}': there is no harmonic {n} (the preset has {count}, numbered 0 to {})",
+                count - 1
+            )),
+            _ => Ok(QuantityKey {
+                index,
+                harmonic: harmonic.map(|(n, _)| n),
+            }),
+        }
+    }
+
+    /// The value at a solved point; Err says why it has none there (the point's contact check
+    /// failed, or the quantity is undefined at this point).
+    pub fn value(self, point: &Point) -> Result<f64, String> {
+        let q = self.quantity();
+        let n = self.harmonic.unwrap_or(0);
+        match (q.eval, point) {
+            (Eval::Plane(f), Point::Plane(p)) => f(p),
+            (Eval::Diagnostic(f), Point::Spatial(s)) => f(s),
+            (Eval::Spatial(_) | Eval::Harmonic(_), Point::Spatial(s)) => {
+                if let Some(why) = s.state.contact.failure() {
+                    return Err(why);
+                }
+                match q.eval {
+                    Eval::Harmonic(f) => f(s, n),
+                    Eval::Spatial(f) => f(s),
+                    _ => unreachable!("matched above"),
+                }
+            }
+            _ => Err(format!("{self} belongs to the other problem")),
+        }
+    }
+}
+
+impl Quantity {
+    /// Why the preset's model has no such quantity (theta for the narrow model), if it has none.
+    pub fn missing_in(&self, preset: &Preset) -> Option<String> {
+        let model = preset.plane.model;
+        match self.models {
+            Some(models) if preset.problem == Problem::Plane && !models.contains(&model) => {
+                Some(format!("the {} model has no {}", model.name(), self.symbol))
+            }
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for QuantityKey {
+    /// The name, with the harmonic's index: `harmonics.0.decay_rate`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.harmonic {
+            Some(n) => f.write_str(&self.quantity().name.replace(".N.", &format!(".{n}."))),
+            None => f.write_str(self.quantity().name),
+        }
+    }
+}
+
+/// The outputs of `wearlab sweep` without `--output`: the scalar keys of `wearlab solve`'s report
+/// (the model's; the costly energy identity left out) and, for the spatial problem, each
+/// harmonic's decay rate and drift velocity.
+const DEFAULTS: &[&str] = &[
+    "load",
+    "normal_force",
+    "tangential_force",
+    "a",
+    "b",
+    "theta",
+    "gamma",
+    "psi",
+    "delta_g",
+    "mu_star",
+    "validity.ok",
+    "validity.contact_width_over_thickness",
+    "time",
+    "mean_pressure",
+    "contact.min_pressure",
+    "contact.complete",
+    "harmonics.N.decay_rate",
+    "harmonics.N.drift_velocity",
+];
+
+/// The default outputs of a preset's problem and model.
+pub fn defaults(preset: &Preset) -> Vec<QuantityKey> {
+    QuantityKey::all(preset)
+        .into_iter()
+        .filter(|k| DEFAULTS.contains(&k.quantity().name))
+        .collect()
+}
