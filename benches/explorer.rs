@@ -73,7 +73,7 @@ fn select_load(app: &mut App) {
     app.ui.selected = app
         .rows()
         .iter()
-        .position(|r| r.param.label == "P")
+        .position(|r| r.param().key == "plane.load")
         .unwrap();
 }
 

@@ -169,7 +169,7 @@ fn a_session_in_tmux() {
     keys(&["Enter"]);
     keys(&["-l", "lots"]);
     keys(&["Enter"]);
-    wait_for("P: 'lots' is not a number");
+    wait_for("plane.load = 'lots' is not a number");
     keys(&["Escape"]);
     wait_for("edit cancelled");
     assert!(screen().contains("20.0 kN/m"));

@@ -1,7 +1,7 @@
 //! What each action of the key table does to the model (part of `update`: pure).
 
 use wearlab::physics::spatial::harmonic::Harmonic;
-use wearlab::preset::{Preset, Problem};
+use wearlab::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
 use crate::tui::charts::{Chart, NoFigure, export as csv};
@@ -30,14 +30,14 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         }
         Action::Edit => {
             let row = app.row();
-            match row.choices() {
-                Some(names) => {
+            match row.param().choices() {
+                Some(_) => {
                     app.ui.mode = Mode::Choosing(form::get(&app.doc.preset, &row) as usize);
-                    app.say(format!("{}: one of {}", row.name(), names.join(", ")));
+                    app.say(format!("{}: {}", row.symbol(), row.param().allowed()));
                 }
                 None => {
                     app.ui.mode = Mode::Editing(String::new());
-                    app.say(format!("type {} ({})", row.name(), row.param.limit.allowed));
+                    app.say(format!("type {} ({})", row.symbol(), row.param().allowed()));
                 }
             }
             Vec::new()
@@ -69,11 +69,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             commands
         }
         Action::CycleModel => {
-            let row = app
-                .rows()
-                .into_iter()
-                .find(|r| r.param.label == "model")
-                .expect("the plane form has a model row");
+            let row = Key::of("plane.model").expect("the registry has the plane model");
             let value = form::nudged(&app.doc.preset, &row, true, false);
             match form::set(&app.doc.preset, &row, value) {
                 Ok((next, change)) => {
@@ -135,7 +131,7 @@ fn set(app: &mut App, value: f64) -> Vec<Command> {
     match form::set(&app.doc.preset, &row, value) {
         Ok((next, change)) => apply(app, next, change),
         Err(why) => {
-            app.complain(format!("{}: {why}", row.name()));
+            app.complain(why);
             Vec::new()
         }
     }
@@ -234,7 +230,7 @@ fn add_harmonic(app: &mut App) -> Vec<Command> {
             wavenumber_y: first.wavenumber_y * m as f64,
             ..last
         });
-        form::consistent(&next).ok().map(|()| next)
+        next.check_rules().ok().map(|()| next)
     });
     match added {
         Some(next) => {
@@ -263,7 +259,7 @@ fn remove_harmonic(app: &mut App) -> Vec<Command> {
         app.complain("the punch needs at least one harmonic");
         return Vec::new();
     }
-    let index = app.row().harmonic.unwrap_or(n - 1);
+    let index = app.row().harmonic_index().unwrap_or(n - 1);
     let mut next = app.doc.preset.clone();
     next.spatial.harmonics.remove(index);
     let change = Change {

@@ -144,9 +144,9 @@ impl Pin {
         let (ours, theirs) = (&self.preset.spatial.harmonics, &now.spatial.harmonics);
         let mut differ: Vec<String> = form::rows(&self.preset)
             .iter()
-            .filter(|r| r.harmonic.is_none_or(|n| n < theirs.len()))
+            .filter(|r| r.harmonic_index().is_none_or(|n| n < theirs.len()))
             .filter(|r| form::show(&self.preset, r) != form::show(now, r))
-            .map(|r| format!("{} = {}", r.name(), form::show(&self.preset, r)))
+            .map(|r| format!("{} = {}", r.symbol(), form::show(&self.preset, r)))
             .collect();
         if self.preset.problem == Problem::Spatial && ours.len() != theirs.len() {
             differ.push(format!("{} harmonics", ours.len()));

@@ -108,7 +108,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         Mode::Editing(buffer) => text_key(app, key, buffer, Mode::Editing, accept_value),
         Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
         Mode::Choosing(selected) => {
-            let choices = app.row().choices().unwrap_or_default();
+            let choices = app.row().param().choices().unwrap_or_default();
             match keys::prompt_action(Prompt::List, &key) {
                 Some(PromptAction::Accept) => {
                     app.ui.mode = Mode::Normal;
@@ -117,7 +117,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                     match crate::tui::form::set(&app.doc.preset, &row, selected as f64) {
                         Ok((next, change)) => apply(app, next, change),
                         Err(why) => {
-                            app.complain(format!("{}: {why}", row.name()));
+                            app.complain(why);
                             Vec::new()
                         }
                     }
@@ -266,7 +266,7 @@ fn accept_value(app: &mut App, buffer: String) -> Vec<Command> {
         }
         Err(why) => {
             // the field keeps the last valid value; the text stays for correction
-            app.complain(format!("{}: {why}", row.name()));
+            app.complain(why);
             Vec::new()
         }
     }

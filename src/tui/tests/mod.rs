@@ -56,7 +56,7 @@ fn select(app: &mut App, label: &str, harmonic: Option<usize>) {
     app.ui.selected = app
         .rows()
         .iter()
-        .position(|r| r.param.label == label && r.harmonic == harmonic)
+        .position(|r| r.param().symbol == label && r.harmonic_index() == harmonic)
         .unwrap_or_else(|| panic!("no row {label}"));
 }
 

@@ -56,7 +56,7 @@ fn nudges_small_and_large_ask_for_a_solve_or_say_why_not() {
     assert_eq!(app.doc.preset.material.poisson_ratio, 0.49);
     assert_eq!(
         message(&app),
-        "nu: nu = 0.5 is out of range: allowed 0 <= nu < 0.5"
+        "material.poisson_ratio = 0.5 is out of range: allowed 0 <= nu < 0.5"
     );
 }
 
@@ -75,7 +75,10 @@ fn enter_types_a_value_with_units_and_refuses_garbage_keeping_the_text() {
     press(&mut app, KeyCode::Enter);
     type_text(&mut app, "lots");
     assert!(press(&mut app, KeyCode::Enter).is_empty());
-    assert_eq!(message(&app), "nu: 'lots' is not a number");
+    assert_eq!(
+        message(&app),
+        "material.poisson_ratio = 'lots' is not a number (allowed 0 <= nu < 0.5)"
+    );
     assert_eq!(app.ui.mode, Mode::Editing("lots".into()));
     for _ in 0..4 {
         press(&mut app, KeyCode::Backspace);
@@ -84,7 +87,7 @@ fn enter_types_a_value_with_units_and_refuses_garbage_keeping_the_text() {
     press(&mut app, KeyCode::Enter);
     assert_eq!(
         message(&app),
-        "nu: nu = 0.7 is out of range: allowed 0 <= nu < 0.5"
+        "material.poisson_ratio = 0.7 is out of range: allowed 0 <= nu < 0.5"
     );
     press(&mut app, KeyCode::Esc);
     assert_eq!(app.ui.mode, Mode::Normal);
@@ -148,7 +151,7 @@ fn whole_number_rows_refuse_fractions_and_the_sweep_keeps_its_order() {
     press(&mut app, KeyCode::Enter);
     assert_eq!(
         message(&app),
-        "points: points = 1 is out of range: allowed a whole number from 2 to 2000"
+        "plane.sweep.points = 1 is out of range: allowed a whole number from 2 to 2000"
     );
     press(&mut app, KeyCode::Esc);
     press(&mut app, KeyCode::Right);
@@ -159,7 +162,7 @@ fn whole_number_rows_refuse_fractions_and_the_sweep_keeps_its_order() {
     assert!(press(&mut app, KeyCode::Enter).is_empty());
     assert_eq!(
         message(&app),
-        "P min: P max = 100 kN/m must be larger than P min = 200 kN/m"
+        "plane.sweep.load_max = 100000 must be larger than plane.sweep.load_min = 200000"
     );
 }
 
@@ -203,7 +206,9 @@ fn m_cycles_every_model_and_says_why_not_where_it_cannot() {
     }
     let mut half_plane = super::app("hertz-check.toml");
     assert!(press(&mut half_plane, KeyCode::Char('m')).is_empty());
-    assert!(message(&half_plane).starts_with("the narrow model needs a finite thickness h"));
+    assert!(
+        message(&half_plane).starts_with("plane.model = narrow needs a finite material.thickness")
+    );
     let mut spatial = super::app("dispersion.toml");
     assert!(press(&mut spatial, KeyCode::Char('m')).is_empty());
     assert_eq!(
@@ -236,7 +241,7 @@ fn plus_and_minus_add_and_remove_harmonics() {
     press(&mut app, KeyCode::Enter);
     assert_eq!(
         message(&app),
-        "wx2: harmonics 1 and 2 have the same wave vector: give each wave vector once"
+        "harmonics 1 and 2 have the same wave vector: give each wave vector once"
     );
     press(&mut app, KeyCode::Esc);
     press(&mut app, KeyCode::Char('-'));
@@ -290,4 +295,23 @@ fn question_mark_opens_a_scrolling_help_that_any_other_key_closes() {
     assert_eq!(app.ui.mode, Mode::Help(10));
     press(&mut app, KeyCode::Char('x'));
     assert_eq!(app.ui.mode, Mode::Normal);
+}
+
+#[test]
+fn every_parameter_of_the_registry_has_its_nudge() {
+    use crate::tui::form::{STEPS, Step};
+    for p in wearlab::preset::PARAMS {
+        let step = STEPS.iter().find(|(k, _)| *k == p.key).map(|(_, s)| *s);
+        let choice = p.choices().is_some();
+        assert!(
+            step.is_some_and(|s| (s == Step::Choice) == choice),
+            "{}: {step:?}",
+            p.key
+        );
+    }
+    assert_eq!(
+        STEPS.len(),
+        wearlab::preset::PARAMS.len(),
+        "no step for a parameter that is gone"
+    );
 }

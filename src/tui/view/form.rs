@@ -28,8 +28,8 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let mut selected_line = 0;
     let mut heading = String::new();
     for (i, row) in app.rows().iter().enumerate() {
-        if row.heading() != heading {
-            heading = row.heading();
+        if form::heading(row) != heading {
+            heading = form::heading(row);
             lines.push(Line::styled(heading.clone(), style.heading()));
         }
         let selected = i == app.ui.selected;
@@ -37,7 +37,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
             (Mode::Editing(buffer), true) => tail(&format!("{buffer}_"), width),
             _ => form::show(&app.doc.preset, row),
         };
-        let text = format!("  {:<LABEL$}{value:>width$}", row.param.label);
+        let text = format!("  {:<LABEL$}{value:>width$}", row.param().symbol);
         if selected {
             selected_line = lines.len();
             lines.push(Line::from(Span::styled(text, style.selected())));

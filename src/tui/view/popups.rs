@@ -148,7 +148,7 @@ pub fn picker(
 /// The list of a choice row, over the form.
 pub fn choices(app: &App, selected: usize, style: RenderOptions, frame: &mut Frame, form: Rect) {
     let row = app.row();
-    let names = row.choices().unwrap_or_default();
+    let names = row.param().choices().unwrap_or_default();
     let rect = centered(form, form.width.saturating_sub(4), names.len() as u16 + 2);
     frame.render_widget(Clear, rect);
     let lines: Vec<Line> = names
@@ -164,6 +164,6 @@ pub fn choices(app: &App, selected: usize, style: RenderOptions, frame: &mut Fra
         .collect();
     let block = Block::default()
         .borders(Borders::ALL)
-        .title(format!(" {} ", row.name()));
+        .title(format!(" {} ", row.symbol()));
     frame.render_widget(Paragraph::new(lines).block(block), rect);
 }

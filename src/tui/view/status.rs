@@ -52,7 +52,7 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
         Output::Spatial(Ok(out)) => {
-            let selected = app.row().harmonic;
+            let selected = app.row().harmonic_index();
             spatial(out, selected, style, width, inner.height as usize)
         }
     };
