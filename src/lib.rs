@@ -7,4 +7,5 @@ pub mod finite;
 pub mod physics;
 pub mod preset;
 pub mod report;
+pub mod spatial_report;
 pub mod units;

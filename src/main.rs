@@ -12,7 +12,7 @@ mod tui;
 use wearlab::physics::SolveError;
 use wearlab::physics::limits::{self, Limit};
 use wearlab::preset::{self, Preset, Problem};
-use wearlab::{finite, report};
+use wearlab::{finite, report, spatial_report};
 
 /// Exit code when the result could not be written (closed pipe, full disk).
 const EXIT_OUTPUT: u8 = 1;
@@ -255,28 +255,19 @@ fn solve(path: &Path, format: Format, options: &Overrides) -> ExitCode {
                 Err(e) => solver_failure(e),
             }
         }
-        Problem::Spatial => match report::spatial_report(&preset, options.time, &options.probes) {
-            Ok(r) => {
-                let printed = match format {
+        Problem::Spatial => {
+            match spatial_report::spatial_report(&preset, options.time, &options.probes) {
+                Ok(r) => match format {
                     Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
                     Format::Csv => {
-                        let csv = report::field_csv(&r, &preset.friction);
+                        let csv = spatial_report::field_csv(&r);
                         let guard = finite::check_csv(&csv);
                         print(&csv, guard)
                     }
-                };
-                match r.contact.failure() {
-                    // The complete-contact solution does not hold: the numbers are printed for
-                    // inspection, but the solver has no answer.
-                    Some(why) if printed == ExitCode::SUCCESS => {
-                        say(&format!("error: {why}"));
-                        ExitCode::from(EXIT_UNSOLVABLE)
-                    }
-                    _ => printed,
-                }
+                },
+                Err(e) => solver_failure(e),
             }
-            Err(e) => solver_failure(e),
-        },
+        }
     }
 }
 

@@ -182,8 +182,13 @@ fn spatial_json_has_every_key_of_the_contract() {
         "time",
         "mean_pressure",
         "load",
+        "tangential_force",
         "mu_star",
         "psi",
+        "delta",
+        "max_pressure",
+        "mean_gap",
+        "harmonics_hold",
         "harmonics",
         "contact",
         "probes",
@@ -210,10 +215,27 @@ fn spatial_json_has_every_key_of_the_contract() {
     ] {
         assert!(harmonics[0][key].is_number(), "harmonics[].{key}");
     }
-    for key in ["min_pressure", "at", "lower_bound", "complete", "exact"] {
+    for key in [
+        "complete",
+        "fraction",
+        "time_to_complete",
+        "min_pressure",
+        "at",
+        "lower_bound",
+        "exact",
+        "not_certified",
+        "complete_after",
+    ] {
         assert!(v["contact"].get(key).is_some(), "contact.{key}");
     }
+    // complete from t = 0: the certified closed form, no running-in
     assert_eq!(v["contact"]["exact"], true);
+    assert_eq!(v["contact"]["fraction"], 1.0);
+    assert_eq!(v["contact"]["time_to_complete"], Value::Null);
+    assert_eq!(
+        (v["harmonics_hold"].as_str(), v["mean_gap"].as_f64()),
+        (Some("now"), Some(0.0))
+    );
     let probes = v["probes"].as_array().unwrap();
     assert_eq!(probes.len(), 2);
     assert_eq!(
@@ -223,31 +245,80 @@ fn spatial_json_has_every_key_of_the_contract() {
     for key in ["pressure", "shear", "shape"] {
         assert!(probes[0][key].is_number(), "probes[].{key}");
     }
-    for key in ["mean_pressure", "load", "mu_star"] {
+    for key in ["mean_pressure", "load", "mu_star", "contact_fraction"] {
         assert_eq!(v["sweep"][key].as_array().unwrap().len(), 60, "sweep.{key}");
     }
+    // mu* over the whole range: partial contact below the complete-contact load too
+    let complete_at = v["sweep"]["complete_mean_pressure"].as_f64().unwrap();
+    let pressures = v["sweep"]["mean_pressure"].as_array().unwrap();
+    assert!(pressures[0].as_f64().unwrap() < complete_at);
+    assert!(
+        v["sweep"]["mu_star"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(Value::is_number)
+    );
 }
 
 #[test]
-fn lost_contact_exits_with_3_and_says_where() {
+fn partial_contact_exits_0_with_the_running_in() {
     let out = wearlab()
-        .args(["solve", "presets/contact-lost.toml"])
+        .args([
+            "solve",
+            "presets/contact-lost.toml",
+            "--probe",
+            "0,0",
+            "--probe",
+            "5e-4,0",
+        ])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(3));
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(
-        err.trim(),
-        "error: complete contact lost: p_min = -5.32 MPa at x = 736 um, y = 0 m; it holds after t = 35.2 s"
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
     );
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(v["contact"]["complete"], false);
-    // after the wear has run long enough, contact is complete
+    let c = &v["contact"];
+    assert_eq!(
+        (c["complete"].as_bool(), c["exact"].as_bool()),
+        (Some(false), Some(false))
+    );
+    let fraction = c["fraction"].as_f64().unwrap();
+    assert!(fraction > 0.0 && fraction < 1.0);
+    // the simulated running-in takes longer than the formal closed-form time (35.2 s)
+    let (simulated, formal) = (
+        c["time_to_complete"].as_f64().unwrap(),
+        c["complete_after"].as_f64().unwrap(),
+    );
+    assert!(simulated > formal, "{simulated} vs {formal}");
+    assert!(v["mean_gap"].as_f64().unwrap() > 0.0 && c["min_pressure"].as_f64().unwrap() < 0.0);
+    assert_eq!(v["harmonics_hold"], "after complete contact");
+    // the crest x = 0 is in contact, the valley x = l/2 is not
+    let probes = v["probes"].as_array().unwrap();
+    assert!(probes[0]["pressure"].as_f64().unwrap() > 0.0);
+    assert_eq!(
+        (probes[1]["pressure"].as_f64(), probes[1]["shear"].as_f64()),
+        (Some(0.0), Some(0.0))
+    );
+    // after the running-in, the contact is complete
     let later = wearlab()
-        .args(["solve", "presets/contact-lost.toml", "--time", "40"])
+        .args([
+            "solve",
+            "presets/contact-lost.toml",
+            "--time",
+            &format!("{}", 1.1 * simulated),
+        ])
         .output()
         .unwrap();
     assert!(later.status.success());
+    let w: Value = serde_json::from_slice(&later.stdout).unwrap();
+    assert_eq!(
+        (w["contact"]["complete"].as_bool(), w["mean_gap"].as_f64()),
+        (Some(true), Some(0.0))
+    );
+    assert_eq!(w["contact"]["time_to_complete"], c["time_to_complete"]);
     assert_eq!(
         wearlab()
             .args(["solve", "presets/contact-lost.toml", "--time", "-1"])
@@ -266,6 +337,65 @@ fn lost_contact_exits_with_3_and_says_where() {
             .code(),
         Some(2)
     );
+}
+
+#[test]
+fn the_grid_limit_depends_on_the_shape() {
+    // 1-D shapes up to 4096 nodes, 2-D shapes up to 1024 per side
+    let one_d = wearlab()
+        .args([
+            "solve",
+            "presets/contact-lost.toml",
+            "--format",
+            "csv",
+            "--set",
+            "spatial.grid=4096",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        one_d.status.success(),
+        "{}",
+        String::from_utf8_lossy(&one_d.stderr)
+    );
+    assert_eq!(
+        String::from_utf8(one_d.stdout).unwrap().lines().count(),
+        1 + 4096
+    );
+    let two_d = wearlab()
+        .args([
+            "solve",
+            "presets/jgh-egg-box.toml",
+            "--set",
+            "spatial.grid=2048",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(two_d.status.code(), Some(2));
+    let err = String::from_utf8(two_d.stderr).unwrap();
+    assert!(
+        err.contains("from 8 to 1024 for a shape that varies along x and y"),
+        "{err}"
+    );
+}
+
+#[test]
+fn partial_contact_without_a_period_cell_exits_3_and_says_why() {
+    // an incommensurate second wave (ratio sqrt 2) under a low load: no period cell to solve on
+    let out = wearlab()
+        .args([
+            "solve",
+            "presets/dispersion.toml",
+            "--set",
+            "spatial.mean_pressure=1e4",
+            "--set",
+            "spatial.harmonics.1.wavenumber_x=4442.882938158366",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(3));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("no common period"), "{err}");
 }
 
 #[test]

@@ -352,14 +352,15 @@ fn mu_star_over_the_whole_range_of_mean_pressure() {
         if pbar >= pc {
             let mut at = input.clone();
             at.mean_pressure = pbar;
-            assert!((curve.mu_star[i] - solve(&at, 0.0).unwrap().mu_star).abs() < 1e-14);
+            assert!((curve.mu_star[i].unwrap() - solve(&at, 0.0).unwrap().mu_star).abs() < 1e-14);
         }
-        assert!(curve.mu_star[i] < 0.3);
+        assert!(curve.mu_star[i].unwrap() < 0.3);
     }
     // the contact grows with the load, and mu* is continuous through the complete-contact load
     assert!(curve.contact_fraction.windows(2).all(|f| f[1] >= f[0]));
     let below = pressures.iter().rposition(|p| *p < pc).unwrap();
-    let jump = (curve.mu_star[below + 1] - curve.mu_star[below]).abs();
-    let step = (curve.mu_star[below] - curve.mu_star[below - 1]).abs();
+    let mu_star = |i: usize| curve.mu_star[i].unwrap();
+    let jump = (mu_star(below + 1) - mu_star(below)).abs();
+    let step = (mu_star(below) - mu_star(below - 1)).abs();
     assert!(jump < 3.0 * step, "{jump:e} vs {step:e}");
 }

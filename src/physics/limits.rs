@@ -158,8 +158,21 @@ pub const HARMONICS: Limit = range("a whole number from 1 to 64", 1.0, 64.0).who
 pub const TIME: Limit = range("0 <= t <= 1e12 (s)", 0.0, 1e12);
 /// Duration of the time charts [s].
 pub const DURATION: Limit = range("0 < duration <= 1e12 (s)", f64::MIN_POSITIVE, 1e12);
-/// Points per side of the field grid.
-pub const GRID: Limit = range("a whole number from 8 to 512", 8.0, 512.0).whole();
+/// Points per side of the grid (fields and partial contact); at most `GRID_2D` for a shape that
+/// varies along both x and y.
+pub const GRID: Limit = range(
+    "a whole number from 8 to 4096 (to 1024 for a shape that varies along x and y)",
+    8.0,
+    4096.0,
+)
+.whole();
+/// Points per side of the grid for a shape that varies along both x and y.
+pub const GRID_2D: Limit = range(
+    "a whole number from 8 to 1024 for a shape that varies along x and y",
+    8.0,
+    1024.0,
+)
+.whole();
 /// A probe coordinate x or y [m] (`wearlab solve --probe`).
 pub const PROBE: Limit = range("-1e6 <= x, y <= 1e6 (m)", -1e6, 1e6);
 
@@ -173,7 +186,7 @@ mod tests {
         assert!(THICKNESS.accepts(f64::INFINITY) && !THICKNESS.accepts(1e4));
         assert!(WAVENUMBER.accepts(0.0) && !WAVENUMBER.accepts(1e-4));
         assert!(!YOUNGS_MODULUS.accepts(f64::INFINITY) && !YOUNGS_MODULUS.accepts(1e308));
-        assert!(!GRID.accepts(8.5) && GRID.accepts(512.0));
+        assert!(!GRID.accepts(8.5) && GRID.accepts(4096.0) && !GRID_2D.accepts(2048.0));
         assert!(!DURATION.accepts(0.0));
         for limit in [YOUNGS_MODULUS, FRICTION, TIME, WAVENUMBER, THICKNESS] {
             assert!(!limit.accepts(f64::NAN) && !limit.accepts(-1.0));

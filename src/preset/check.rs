@@ -8,7 +8,7 @@ use toml::Spanned;
 
 use crate::physics::limits::{self, Limit};
 use crate::physics::spatial::harmonic::Harmonic;
-use crate::physics::spatial::validate_harmonics;
+use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 use crate::preset::file::{FilePlane, FilePreset, FileSpatial};
 use crate::preset::wording;
@@ -231,12 +231,20 @@ impl Checker<'_> {
             }
             None => default_pressure_sweep(mean_pressure),
         };
+        let grid = self.count(&sp.grid, "grid", &limits::GRID)?;
+        validate_grid(&harmonics, grid).map_err(|e| {
+            let why = e.to_string();
+            self.error(
+                Some(sp.grid.span()),
+                why.trim_start_matches("invalid input: "),
+            )
+        })?;
         Ok(SpatialSection {
             mean_pressure,
             sliding_speed: self.value(&sp.sliding_speed, "sliding_speed", &limits::SPEED)?,
             time: self.value(&sp.time, "time", &limits::TIME)?,
             duration: self.value(&sp.duration, "duration", &limits::DURATION)?,
-            grid: self.count(&sp.grid, "grid", &limits::GRID)?,
+            grid,
             sweep,
             harmonics,
         })

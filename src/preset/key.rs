@@ -7,7 +7,7 @@ use std::fmt;
 
 use crate::physics::SweepRange;
 use crate::physics::limits;
-use crate::physics::spatial::validate_harmonics;
+use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::params::{Access, PARAMS, Param};
 use crate::preset::{Preset, Problem};
 use crate::units::parse_si;
@@ -227,6 +227,7 @@ impl Preset {
             ["spatial.sweep.pressure_min", "spatial.sweep.pressure_max"],
         )?;
         validate_harmonics(&self.spatial.harmonics)
+            .and_then(|()| validate_grid(&self.spatial.harmonics, self.spatial.grid))
             .map_err(|e| e.to_string().trim_start_matches("invalid input: ").into())
     }
 }

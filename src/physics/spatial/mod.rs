@@ -98,6 +98,20 @@ pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
     Ok(())
 }
 
+/// Checks the grid side against the shape: `limits::GRID`, and `limits::GRID_2D` when the
+/// harmonics vary along both x and y.
+pub fn validate_grid(harmonics: &[Harmonic], grid: usize) -> Result<(), SolveError> {
+    let varies = |w: fn(&Harmonic) -> f64| harmonics.iter().any(|h| w(h) != 0.0);
+    let limit = if varies(|h| h.wavenumber_x) && varies(|h| h.wavenumber_y) {
+        &limits::GRID_2D
+    } else {
+        &limits::GRID
+    };
+    limit
+        .check("grid", grid as f64)
+        .map_err(SolveError::InvalidInput)
+}
+
 /// One harmonic at the time of the solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HarmonicSolution {

@@ -142,8 +142,8 @@ pub fn solve(
     if p_cc.iter().all(|p| *p >= 0.0) {
         return Ok(ContactSolution {
             pressure: p_cc,
-            // the mean of the rows: c pbar + d = <U> = 0
-            offset: -prob.diagonal * pbar,
+            // the mean of the rows: c pbar + d = <U> = 0 (written so that c = 0 gives +0)
+            offset: 0.0 - prob.diagonal * pbar,
             complete: true,
             iterations: 0,
             linear_iterations: 0,
@@ -158,7 +158,7 @@ pub fn solve(
         _ => p_cc.iter().map(|p| *p > 0.0).collect(),
     };
     let mut pressure = p_cc;
-    let mut offset = -prob.diagonal * pbar;
+    let mut offset = 0.0 - prob.diagonal * pbar;
     let mut seen: Vec<Vec<u64>> = Vec::new();
     let mut best: Option<ContactSolution> = None;
     let mut linear_iterations = 0;

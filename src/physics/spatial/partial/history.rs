@@ -41,7 +41,8 @@ impl History {
 
 impl RunningIn {
     /// The history over [0, duration] [s]: every stepped state up to `duration`, then, once
-    /// contact is complete, `points` closed-form states evenly spaced up to `duration`.
+    /// contact is complete, `points` closed-form states evenly spaced up to `duration` (up to the
+    /// first that is no longer complete, if the harmonics drift into phase again).
     pub fn history(&self, duration: f64, points: usize) -> Result<History, SolveError> {
         let mut h = History {
             time_to_complete: self.time_to_complete,
@@ -63,6 +64,9 @@ impl RunningIn {
             let t = from + (duration - from) * i as f64 / points.max(1) as f64;
             op.decay(end_shape, &mut shape, k_w * (t - from));
             let state = setup.state(&mut op, shape.clone(), t, None)?;
+            if !state.outputs.complete {
+                break;
+            }
             h.push(&Sample {
                 time: t,
                 outputs: state.outputs,

@@ -41,7 +41,8 @@ pub struct Setup {
 
 impl Setup {
     /// Validates the inputs and builds the grid with `side` nodes along each axis on which the
-    /// shape varies (see [`Grid::new`]).
+    /// shape varies (see [`Grid::new`]). The side is not held to the preset's limits here (the
+    /// tests go beyond them); callers with user input check `spatial::validate_grid` first.
     pub fn new(inputs: &SpatialInputs, side: usize) -> Result<Setup, SolveError> {
         inputs.validate()?;
         let grid = Grid::new(&inputs.harmonics, side)?;
@@ -74,6 +75,25 @@ impl Setup {
         time: f64,
         start: Option<&[bool]>,
     ) -> Result<State, SolveError> {
+        let state = self.unchecked_state(op, shape, time, start)?;
+        let p = state.outputs.normal_force;
+        if p.is_nan() || p <= 0.0 {
+            return Err(SolveError::NoSolution(format!(
+                "the vertical force P = pbar - mu psi - tau0 Delta = {p:.6e} Pa is not positive: \
+                 the slopes are far beyond the small-slope theory"
+            )));
+        }
+        Ok(state)
+    }
+
+    /// As [`Setup::state`], without the check that P > 0.
+    pub(crate) fn unchecked_state(
+        &self,
+        op: &mut Operator,
+        shape: Vec<f64>,
+        time: f64,
+        start: Option<&[bool]>,
+    ) -> Result<State, SolveError> {
         let pbar = self.inputs.mean_pressure;
         let friction = self.inputs.friction;
         let problem = ContactProblem {
@@ -84,13 +104,6 @@ impl Setup {
         };
         let sol = solve(op, &problem, start)?;
         let (outputs, gap) = evaluate(op, &shape, pbar, &friction, &sol, sol.offset);
-        if outputs.normal_force.is_nan() || outputs.normal_force <= 0.0 {
-            return Err(SolveError::NoSolution(format!(
-                "the vertical force P = pbar - mu psi - tau0 Delta = {:.6e} Pa is not positive: \
-                 the slopes are far beyond the small-slope theory",
-                outputs.normal_force
-            )));
-        }
         let mean_wear = self.inputs.wear_rate() * pbar * time;
         // W >= 0 exactly (each BE/BDF2 increment of W is >= 0, section 5): the max only removes
         // the round-off of the subtraction (~1e-16 of U)

@@ -312,7 +312,7 @@ impl RunningIn {
     /// The state at time t [s] >= 0: the closed form from the first complete state on; before it,
     /// the contact solution for the shape interpolated linearly between the two steps around t
     /// (replayed from the nearest snapshot). Refused beyond the end of a running-in that stayed
-    /// partial.
+    /// partial, and where the closed form separates the contact again.
     pub fn state_at(&self, t: f64) -> Result<State, SolveError> {
         let setup = &self.setup;
         let mut op = setup.operator();
@@ -320,7 +320,15 @@ impl RunningIn {
         if let Some(from) = self.complete_from.filter(|from| t >= *from) {
             let mut shape = vec![0.0; self.end_shape.len()];
             op.decay(&self.end_shape, &mut shape, k_w * (t - from));
-            return setup.state(&mut op, shape, t, None);
+            let state = setup.state(&mut op, shape, t, None)?;
+            if !state.outputs.complete {
+                // harmonics drifting at different speeds can bring the valleys into phase again
+                return Err(SolveError::NoSolution(format!(
+                    "contact, complete from t = {from:.6e} s, separates again by t = {t:.6e} s \
+                     (the harmonics drift into phase); the running-in after that is not simulated"
+                )));
+            }
+            return Ok(state);
         }
         let Some(stepping) = self.stepping else {
             return setup.state(&mut op, setup.initial_shape.clone(), t, None);

@@ -19,6 +19,8 @@ pub struct Outputs {
     pub max_pressure: f64,
     /// min over the nodes of the complete-contact pressure p_cc [Pa] (negative in partial contact).
     pub min_pressure_complete: f64,
+    /// The node [x, y] [m] of that minimum.
+    pub min_pressure_complete_at: [f64; 2],
     /// psi = -<p g_x> [Pa]: the deformation part of the friction force (negative when the pressure
     /// sits on the trailing, -x, side of the bumps).
     pub psi: f64,
@@ -125,7 +127,12 @@ pub fn evaluate(
     let (mu, tau0) = (friction.coefficient, friction.adhesion);
     let mut work = vec![0.0; n];
     op.inverse(shape, &mut work, 0.0);
-    let min_pressure_complete = pbar + work.iter().copied().fold(f64::INFINITY, f64::min);
+    let lowest = (0..n)
+        .min_by(|a, b| work[*a].total_cmp(&work[*b]))
+        .expect("a grid has nodes");
+    let min_pressure_complete = pbar + work[lowest];
+    let grid = op.grid();
+    let min_pressure_complete_at = [grid.x(lowest % grid.nx), grid.y(lowest / grid.nx)];
     let complete = sol.complete || min_pressure_complete >= 0.0;
     let contact: Vec<bool> = sol.pressure.iter().map(|p| complete || *p > 0.0).collect();
     let mut slope = vec![0.0; n];
@@ -167,6 +174,7 @@ pub fn evaluate(
         contact_fraction: fraction,
         max_pressure: sol.pressure.iter().copied().fold(0.0, f64::max),
         min_pressure_complete,
+        min_pressure_complete_at,
         psi,
         delta,
         normal_force,

@@ -14,9 +14,9 @@ pub struct LoadCurve {
     /// pbar [Pa], as given.
     pub mean_pressure: Vec<f64>,
     /// P = pbar - mu psi - tau0 Delta [Pa].
-    pub normal_force: Vec<f64>,
-    /// mu*.
-    pub mu_star: Vec<f64>,
+    pub load: Vec<f64>,
+    /// mu*, null where P <= 0 (far beyond the small-slope theory).
+    pub mu_star: Vec<Option<f64>>,
     /// Fraction of the cell in contact.
     pub contact_fraction: Vec<f64>,
     /// The smallest pbar [Pa] with complete contact: -min over the nodes of (p_cc - pbar).
@@ -37,7 +37,7 @@ pub fn load_curve(
     op.inverse(shape, &mut oscillation, 0.0);
     let mut curve = LoadCurve {
         mean_pressure: pressures.to_vec(),
-        normal_force: Vec::with_capacity(pressures.len()),
+        load: Vec::with_capacity(pressures.len()),
         mu_star: Vec::with_capacity(pressures.len()),
         contact_fraction: Vec::with_capacity(pressures.len()),
         complete_mean_pressure: -oscillation.iter().copied().fold(f64::INFINITY, f64::min),
@@ -47,9 +47,12 @@ pub fn load_curve(
         let mut at = setup.clone();
         at.inputs.mean_pressure = pbar;
         at.inputs.validate()?;
-        let state = at.state(&mut op, shape.to_vec(), 0.0, contact.as_deref())?;
-        curve.normal_force.push(state.outputs.normal_force);
-        curve.mu_star.push(state.outputs.mu_star);
+        let state = at.unchecked_state(&mut op, shape.to_vec(), 0.0, contact.as_deref())?;
+        let o = state.outputs;
+        curve.load.push(o.normal_force);
+        curve
+            .mu_star
+            .push((o.normal_force > 0.0).then_some(o.mu_star));
         curve.contact_fraction.push(state.outputs.contact_fraction);
         contact = Some(state.contact());
         if progress((i + 1) as f64 / pressures.len() as f64).is_break() {
