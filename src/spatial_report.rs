@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::physics::spatial::contact::{self, Contact, NotCertified};
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::{Stopped, run_in};
+use crate::physics::spatial::partial::running_in::run_in;
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::state::{SpatialState, StateAt};
@@ -203,10 +203,7 @@ fn on_the_cell(
     at: &StateAt,
     probes: &[[f64; 2]],
 ) -> Result<SpatialReport, SolveError> {
-    let run = run_in(setup, &mut |_| ControlFlow::Continue(())).map_err(|e| match e {
-        Stopped::Failed(why) => why,
-        Stopped::Cancelled => SolveError::NoSolution("the running-in was cancelled".into()),
-    })?;
+    let run = run_in(setup, &mut |_| ControlFlow::Continue(()))?;
     let state = run.state_at(at.time)?;
     let o = state.outputs;
     // complete from t = 0: the closed form of the original harmonics holds exactly
@@ -215,10 +212,6 @@ fn on_the_cell(
     let pressures = sweep_pressures(at);
     let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
         ControlFlow::Continue(())
-    })
-    .map_err(|e| match e {
-        Stopped::Failed(why) => why,
-        Stopped::Cancelled => SolveError::NoSolution("the sweep was cancelled".into()),
     })?;
     let c = &closed.contact;
     let contact = ContactReport {

@@ -43,6 +43,16 @@ pub enum Stopped {
     Cancelled,
 }
 
+impl From<Stopped> for SolveError {
+    /// For callers that never cancel: a cancel still reads as "no answer".
+    fn from(stopped: Stopped) -> SolveError {
+        match stopped {
+            Stopped::Failed(why) => why,
+            Stopped::Cancelled => SolveError::NoSolution("the computation was cancelled".into()),
+        }
+    }
+}
+
 /// The time step of the running-in.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stepping {
