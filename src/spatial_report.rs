@@ -208,6 +208,9 @@ fn on_the_cell(
     let o = state.outputs;
     // complete from t = 0: the closed form of the original harmonics holds exactly
     let from_start = run.complete_from == Some(0.0) && closed.contact.complete == o.complete;
+    // the shape at t is still the harmonics' closed form (t = 0, no wear, or complete from t = 0):
+    // the certified minimum of its p_cc holds, not only the nodes'
+    let closed_shape = from_start || at.time == 0.0 || run.stepping.is_none();
     let friction = setup.inputs.friction;
     let pressures = sweep_pressures(at);
     let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
@@ -218,19 +221,19 @@ fn on_the_cell(
         complete: o.complete,
         fraction: o.contact_fraction,
         time_to_complete: run.time_to_complete,
-        min_pressure: if from_start {
+        min_pressure: if closed_shape {
             c.min_pressure
         } else {
             o.min_pressure_complete
         },
-        at: if from_start {
+        at: if closed_shape {
             c.at
         } else {
             Some(o.min_pressure_complete_at)
         },
         lower_bound: c.lower_bound,
-        exact: from_start && c.exact,
-        not_certified: if from_start { c.not_certified } else { None },
+        exact: closed_shape && c.exact,
+        not_certified: if closed_shape { c.not_certified } else { None },
         complete_after: c.complete_after,
     };
     let shear = state.shear(&friction);

@@ -281,9 +281,10 @@ fn partial_contact_exits_0_with_the_running_in() {
     );
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     let c = &v["contact"];
+    // at t = 0 the shape is the preset's: the certified minimum of its p_cc
     assert_eq!(
         (c["complete"].as_bool(), c["exact"].as_bool()),
-        (Some(false), Some(false))
+        (Some(false), Some(true))
     );
     let fraction = c["fraction"].as_f64().unwrap();
     assert!(fraction > 0.0 && fraction < 1.0);
@@ -318,6 +319,8 @@ fn partial_contact_exits_0_with_the_running_in() {
         (w["contact"]["complete"].as_bool(), w["mean_gap"].as_f64()),
         (Some(true), Some(0.0))
     );
+    // the worn shape's minimum of p_cc is over the grid's nodes
+    assert_eq!(w["contact"]["exact"].as_bool(), Some(false));
     assert_eq!(w["contact"]["time_to_complete"], c["time_to_complete"]);
     assert_eq!(
         wearlab()
