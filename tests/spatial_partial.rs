@@ -131,13 +131,15 @@ fn egg_box_near_complete_contact() {
 #[test]
 #[ignore]
 fn egg_box_both_asymptotes_on_fine_grids() {
-    // route 3 at the stated grids (run by hand, release): small load A/l^2 ->
-    // pi (3/(8 pi))^(2/3) (pbar/p*)^(2/3) within ~1 % at 0.001, N = 512; near complete at 0.98.
+    // route 3 at the stated grids (run by hand, release, ~1 s): small load A/l^2 ->
+    // pi (3/(8 pi))^(2/3) (pbar/p*)^(2/3) "within ~1 %" at 0.001, N = 512 (measured 1.0108; 1.0120
+    // at N = 1024, so the remaining 1.2 % is the asymptote's, not the grid's); near complete at
+    // 0.98 (measured 0.9747, 0.9883, 0.9981 at N = 256, 512, 1024).
     let small =
         egg_box(0.001, 512) / (PI * (3.0 / (8.0 * PI)).powf(2.0 / 3.0) * 0.001f64.powf(2.0 / 3.0));
-    let near = (1.0 - egg_box(0.98, 256)) / (3.0 / (2.0 * PI) * 0.02);
+    let near = (1.0 - egg_box(0.98, 512)) / (3.0 / (2.0 * PI) * 0.02);
     println!("small load: A/asymptote = {small:.4}; near complete: (1 - A)/asymptote = {near:.4}");
-    assert!((small - 1.0).abs() < 0.01 && (near - 1.0).abs() < 0.025);
+    assert!((small - 1.0).abs() < 0.015 && (near - 1.0).abs() < 0.025);
 }
 
 /// A 2-D shape with B < 0 for its long waves: the "dispersion" preset's harmonics on a 0.5 mm
