@@ -37,9 +37,16 @@ fn invalid(why: &str) -> ExitCode {
 fn axes(preset: &Preset, vary: &[String]) -> Result<Vec<Axis>, String> {
     let points = match vary.len() {
         0 => {
-            return Err(
-                "give --vary KEY=FROM:TO[:N][:log] (one for a curve, two for a grid)".into(),
-            );
+            let Some(e) = &preset.explore else {
+                return Err(
+                    "give --vary KEY=FROM:TO[:N][:log] (one for a curve, two for a \
+                     grid); this preset has no [explore] section to sweep"
+                        .into(),
+                );
+            };
+            e.check(preset)
+                .map_err(|why| format!("the preset's [explore] section: {why}"))?;
+            return Ok(e.axes.clone());
         }
         1 => CURVE_POINTS,
         2 => GRID_POINTS,
@@ -66,7 +73,15 @@ fn axes(preset: &Preset, vary: &[String]) -> Result<Vec<Axis>, String> {
 
 fn outputs(preset: &Preset, list: Option<&str>) -> Result<Vec<QuantityKey>, String> {
     match list {
-        None => Ok(quantity::defaults(preset)),
+        None => {
+            let mut outputs = quantity::defaults(preset);
+            if let Some(q) = preset.explore.as_ref().map(|e| e.quantity)
+                && !outputs.contains(&q)
+            {
+                outputs.push(q);
+            }
+            Ok(outputs)
+        }
         Some(list) => list
             .split(',')
             .map(|name| QuantityKey::parse(name, preset).map_err(|why| format!("--output {why}")))

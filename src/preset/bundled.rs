@@ -32,6 +32,8 @@ pub const BUNDLED: &[Bundled] = bundled![
     "rubber-backward-drift.toml",
     "dispersion.toml",
     "contact-lost.toml",
+    "coating-thickness-sweep.toml",
+    "friction-or-wear-map.toml",
 ];
 
 impl Bundled {

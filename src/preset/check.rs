@@ -24,13 +24,17 @@ fn line_of(text: &str, offset: usize) -> usize {
         .count()
 }
 
-struct Checker<'a> {
+pub(super) struct Checker<'a> {
     path: &'a Path,
     text: &'a str,
 }
 
 impl Checker<'_> {
-    fn error(&self, span: Option<Range<usize>>, reason: impl Into<String>) -> PresetError {
+    pub(super) fn error(
+        &self,
+        span: Option<Range<usize>>,
+        reason: impl Into<String>,
+    ) -> PresetError {
         PresetError {
             path: self.path.to_path_buf(),
             line: span.map(|s| line_of(self.text, s.start)),
@@ -111,7 +115,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         }
         None => default_spatial_section(),
     };
-    Ok(Preset {
+    let mut preset = Preset {
         name: file.name,
         description: file.description,
         problem,
@@ -120,7 +124,13 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         wear,
         plane,
         spatial,
-    })
+        explore: None,
+    };
+    // the section that names keys and outputs is checked against the preset it belongs to
+    if let Some(e) = &file.explore {
+        preset.explore = Some(ck.explore(e, &preset)?);
+    }
+    Ok(preset)
 }
 
 impl Checker<'_> {

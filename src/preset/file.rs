@@ -9,6 +9,7 @@ use toml::Spanned;
 
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
+use crate::preset::explore_section::{self, FileExplore};
 use crate::preset::{
     Preset, PresetError, Problem, SCHEMA, SpatialSection, default_spatial_section, disk, parse,
 };
@@ -114,6 +115,8 @@ pub(super) struct FilePreset {
     pub(super) wear: Option<FileWear>,
     pub(super) plane: Option<Spanned<FilePlane>>,
     pub(super) spatial: Option<Spanned<FileSpatial>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) explore: Option<Spanned<FileExplore>>,
 }
 
 pub(super) fn zero() -> Spanned<f64> {
@@ -162,6 +165,10 @@ pub fn to_toml(preset: &Preset) -> String {
             })),
         })),
         spatial: Some(plain(spatial_file(&preset.spatial))),
+        explore: preset
+            .explore
+            .as_ref()
+            .map(|e| plain(explore_section::to_file(e))),
     };
     toml::to_string(&file).expect("a preset always serializes")
 }

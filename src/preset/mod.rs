@@ -4,6 +4,7 @@
 mod bundled;
 mod check;
 mod disk;
+mod explore_section;
 mod file;
 mod key;
 mod params;
@@ -22,6 +23,7 @@ use crate::physics::{Friction, Material, Spacing, SweepRange};
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
 pub use check::parse;
 pub use disk::{MAX_PRESET_BYTES, write_atomically};
+pub use explore_section::Explore;
 pub use file::{SaveTarget, load, resolve_save_path, save, to_toml};
 pub use key::Key;
 pub use params::{Access, PARAMS, Param};
@@ -100,6 +102,8 @@ pub struct Preset {
     pub plane: PlaneSection,
     /// The spatial problem (defaults when the file has no `[spatial]`).
     pub spatial: SpatialSection,
+    /// The sweep or map the preset's lesson is about (`[explore]`, optional).
+    pub explore: Option<Explore>,
 }
 
 impl Preset {
