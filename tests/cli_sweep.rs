@@ -140,39 +140,49 @@ fn a_point_without_an_answer_says_why_in_its_row() {
         "--vary",
         "spatial.harmonics.0.amplitude=1e-7:1e-5:3:log",
         "--output",
-        "mu_star,contact.min_pressure,contact.complete",
+        "mu_star,contact.complete,contact.fraction,contact.time_to_complete",
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(err.is_empty(), "no progress bar without a terminal: {err}");
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(
         lines[0],
-        "spatial.harmonics.0.amplitude,mu_star,contact.min_pressure,contact.complete,status"
+        "spatial.harmonics.0.amplitude,mu_star,contact.complete,contact.fraction,\
+         contact.time_to_complete,status"
     );
-    assert!(lines[1].ends_with(",true,ok"), "{}", lines[1]);
-    // 10 um on a 1 mm wave at 20 MPa: contact lost; mu* empty, p_min and the verdict kept
+    // complete from t = 0: no time to complete, and the status says why that field is empty
     assert!(
-        lines[3].starts_with("1e-5,,-")
-            && lines[3].contains(",false,\"complete contact lost: p_min ="),
+        lines[1].ends_with(",true,1e0,,\"contact.time_to_complete: complete from t = 0, or still partial at the end of the running-in\""),
         "{}",
-        lines[3]
+        lines[1]
     );
-    // every point lost: exit 3, the rows still printed
+    // 10 um on a 1 mm wave at 20 MPa: partial contact, answered through the running-in
+    let last: Vec<&str> = lines[3].split(',').collect();
+    assert_eq!((last[0], last[2]), ("1e-5", "false"));
+    assert!(last[3].parse::<f64>().unwrap() < 1.0 && last[4].parse::<f64>().unwrap() > 0.0);
+    assert_eq!(last[5], "ok");
+    // no period cell and contact not certified at every point: exit 3, the rows still printed
     let (code, out, err) = run(&[
         "sweep",
-        "presets/wave-thick-layer.toml",
+        "presets/dispersion.toml",
+        "--set",
+        "spatial.harmonics.1.wavenumber_x=4442.882938158366",
         "--vary",
-        "spatial.harmonics.0.amplitude=1e-5:1e-4:2",
+        "spatial.harmonics.0.amplitude=2e-5:4e-5:2",
         "--format",
         "json",
     ]);
     assert_eq!(code, 3);
-    assert!(err.starts_with(
-        "error: no point of the sweep has an answer; the first: complete contact lost"
-    ));
+    assert!(
+        err.starts_with(
+            "error: no point of the sweep has an answer; the first: complete contact not certified"
+        ),
+        "{err}"
+    );
     let doc: Value = serde_json::from_str(&out).unwrap();
     let row = &doc["rows"][0];
-    assert!(row["mu_star"].is_null() && row["contact.min_pressure"].as_f64().unwrap() < 0.0);
+    assert!(row["mu_star"].is_null());
+    assert!(row["status"].as_str().unwrap().contains("no common period"));
 }
 
 #[test]

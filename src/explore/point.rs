@@ -1,12 +1,13 @@
-//! One point of a sweep or a map: a preset solved through the library's stage pipeline, the
-//! same functions `wearlab solve` reports from, so that every number is bit for bit the one
+//! One point of a sweep or a map: a preset solved through the library's own pipeline, the same
+//! functions `wearlab solve` reports from, so that every number is bit for bit the one
 //! `wearlab solve --set` prints at the same inputs.
 //!
 //! - plane: `plane::solve` and `validity::check`, the stages of `plane::operating_point`; the
 //!   energy identity (its costly quadrature), the largest pressure and the wear at the tip are
 //!   computed only when a quantity asks for them.
-//! - spatial: `spatial::state_at` at the preset's time, on the smallest field grid and a two-point
-//!   mean-pressure sweep (the solution and the contact check do not depend on either).
+//! - spatial: `spatial_report::spatial_report` itself (complete contact in closed form, partial
+//!   contact through the running-in), with a two-point mean-pressure sweep since no quantity
+//!   reads the sweep.
 
 use std::cell::OnceCell;
 
@@ -14,9 +15,10 @@ use crate::physics::plane::energy::{Energy, energy};
 use crate::physics::plane::validity::{Validity, check};
 use crate::physics::plane::{self, PlaneSolution};
 use crate::physics::quadrature::tanh_sinh;
-use crate::physics::spatial::{self, SpatialState, StateAt, state_at};
-use crate::physics::{SolveError, SweepRange, limits};
+use crate::physics::spatial::SpatialInputs;
+use crate::physics::{SolveError, SweepRange};
 use crate::preset::{Preset, Problem};
+use crate::spatial_report::{SpatialReport, spatial_report};
 
 /// A solved plane point.
 #[derive(Debug)]
@@ -31,8 +33,10 @@ pub struct PlanePoint {
 /// A solved spatial point.
 #[derive(Debug)]
 pub struct SpatialPoint {
-    /// The state at the preset's time (field on an 8 x 8 grid, a two-point mean-pressure sweep).
-    pub state: SpatialState,
+    /// The inputs.
+    pub inputs: SpatialInputs,
+    /// `wearlab solve`'s report at the preset's time (its `sweep` has two points only).
+    pub report: SpatialReport,
 }
 
 /// A solved point of either problem.
@@ -56,29 +60,15 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
             })))
         }
         Problem::Spatial => {
-            let inputs = preset.spatial_inputs();
-            inputs.validate()?;
-            let at = StateAt {
-                time: preset.spatial.time,
-                grid: limits::GRID.min as usize,
-                sweep: SweepRange {
-                    points: 2,
-                    ..preset.spatial.sweep
-                },
+            let mut preset = preset.clone();
+            preset.spatial.sweep = SweepRange {
+                points: 2,
+                ..preset.spatial.sweep
             };
-            let state = state_at(&inputs, &spatial::evolutions(&inputs), &at)?;
-            Ok(Point::Spatial(Box::new(SpatialPoint { state })))
-        }
-    }
-}
-
-impl Point {
-    /// Why the point's numbers do not hold, when they do not: complete contact lost or not
-    /// certified (spatial; `wearlab solve` exits 3 there). None for a good point.
-    pub fn failure(&self) -> Option<String> {
-        match self {
-            Point::Plane(_) => None,
-            Point::Spatial(s) => s.state.contact.failure(),
+            Ok(Point::Spatial(Box::new(SpatialPoint {
+                inputs: preset.spatial_inputs(),
+                report: spatial_report(&preset, None, &[])?,
+            })))
         }
     }
 }

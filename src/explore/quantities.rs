@@ -5,8 +5,30 @@
 use crate::explore::point::{PlanePoint, SpatialPoint};
 use crate::explore::quantity::{Eval, Origin, Quantity};
 use crate::physics::plane::Model;
-use crate::physics::spatial::HarmonicSolution;
 use crate::preset::Problem;
+use crate::spatial_report::HarmonicReport;
+
+const fn entry(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    problem: Problem,
+    eval: Eval,
+) -> Quantity {
+    Quantity {
+        name,
+        symbol,
+        unit,
+        description,
+        problem,
+        origin: Origin::Report,
+        group: false,
+        flag: false,
+        models: None,
+        eval,
+    }
+}
 
 const fn plane(
     name: &'static str,
@@ -15,18 +37,14 @@ const fn plane(
     description: &'static str,
     eval: fn(&PlanePoint) -> Result<f64, String>,
 ) -> Quantity {
-    Quantity {
+    entry(
         name,
         symbol,
         unit,
         description,
-        problem: Problem::Plane,
-        origin: Origin::Report,
-        group: false,
-        flag: false,
-        models: None,
-        eval: Eval::Plane(eval),
-    }
+        Problem::Plane,
+        Eval::Plane(eval),
+    )
 }
 
 const fn spatial(
@@ -34,20 +52,33 @@ const fn spatial(
     symbol: &'static str,
     unit: &'static str,
     description: &'static str,
-    eval: Eval,
+    eval: fn(&SpatialPoint) -> Result<f64, String>,
 ) -> Quantity {
-    Quantity {
+    entry(
         name,
         symbol,
         unit,
         description,
-        problem: Problem::Spatial,
-        origin: Origin::Report,
-        group: false,
-        flag: false,
-        models: None,
-        eval,
-    }
+        Problem::Spatial,
+        Eval::Spatial(eval),
+    )
+}
+
+const fn harmonic(
+    name: &'static str,
+    symbol: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    eval: fn(&SpatialPoint, usize) -> Result<f64, String>,
+) -> Quantity {
+    entry(
+        name,
+        symbol,
+        unit,
+        description,
+        Problem::Spatial,
+        Eval::Harmonic(eval),
+    )
 }
 
 impl Quantity {
@@ -85,18 +116,8 @@ fn yes(flag: bool) -> Result<f64, String> {
     Ok(if flag { 1.0 } else { 0.0 })
 }
 
-fn wave(s: &SpatialPoint, n: usize) -> &HarmonicSolution {
-    &s.state.solution.harmonics[n]
-}
-
-const fn harmonic(
-    name: &'static str,
-    symbol: &'static str,
-    unit: &'static str,
-    description: &'static str,
-    eval: fn(&SpatialPoint, usize) -> Result<f64, String>,
-) -> Quantity {
-    spatial(name, symbol, unit, description, Eval::Harmonic(eval))
+fn wave(s: &SpatialPoint, n: usize) -> &HarmonicReport {
+    &s.report.harmonics[n]
 }
 
 /// Every quantity.
@@ -125,32 +146,38 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("wear_number", "k m", "", "wear coefficient times the plane modulus m = pi E/(2(1 - nu^2)): how strongly wear shifts the pressure forwards", |p| Ok(p.solution.inputs.wear * p.solution.inputs.material.plane_modulus())).derived().group(),
     plane("friction_number", "mu chi", "", "friction coefficient times chi = (1 - 2nu)/(2(1 - nu)): how strongly friction shifts the pressure backwards; theta = 0 where mu chi = k m/pi", |p| Ok(p.solution.inputs.friction.coefficient * p.solution.inputs.material.chi())).derived().group(),
     plane("load_number", "P/(m R)", "", "load over the plane modulus times the radius: the contact width over the radius grows like its square root", |p| Ok(p.solution.inputs.load / (p.solution.inputs.material.plane_modulus() * p.solution.inputs.radius))).derived().group(),
-    spatial("time", "t", "s", "the instant solved", Eval::Diagnostic(|s| Ok(s.state.solution.time))),
-    spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", Eval::Diagnostic(|s| Ok(s.state.solution.inputs.mean_pressure))),
-    spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi", Eval::Spatial(|s| Ok(s.state.solution.load))),
-    spatial("mu_star", "mu*", "", "total friction coefficient, mu + (1 + mu^2) psi/P", Eval::Spatial(|s| Ok(s.state.solution.mu_star))),
-    spatial("psi", "psi", "Pa", "deformation component of friction, psi = -<p g_x>", Eval::Spatial(|s| Ok(s.state.solution.psi))),
-    spatial("contact.min_pressure", "p_min", "Pa", "smallest contact pressure (certified over the period cell, else the bound pbar - sum A/M); contact is complete where it is > 0", Eval::Diagnostic(|s| Ok(s.state.contact.min_pressure))),
-    spatial("contact.lower_bound", "pbar-sum A/M", "Pa", "pbar - sum A/M, a lower bound of the pressure everywhere", Eval::Diagnostic(|s| Ok(s.state.contact.lower_bound))),
-    spatial("contact.complete", "complete", "", "whether contact is complete, p > 0 everywhere, certified (1 yes, 0 no)", Eval::Diagnostic(|s| yes(s.state.contact.complete))).flag(),
-    spatial("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction", Eval::Spatial(|s| Ok(s.state.solution.mu_star - s.state.solution.inputs.friction.coefficient))).derived(),
-    harmonic("harmonics.N.k", "k", "rad/m", "wavenumber |(wx, wy)| of the harmonic", |s, n| Ok(wave(s, n).initial.wavenumber())),
-    harmonic("harmonics.N.decay_rate", "beta", "1/s", "decay rate: A(t) = A(0) e^(-beta t)", |s, n| Ok(wave(s, n).evolution.decay_rate)),
-    harmonic("harmonics.N.drift_velocity", "c", "m/s", "drift velocity of the pattern, positive along +x (the friction force on the layer)", |s, n| Ok(wave(s, n).evolution.drift_velocity)),
-    harmonic("harmonics.N.phase_rate", "Omega", "rad/s", "phase rate: rho_x(t) = rho_x(0) - Omega t", |s, n| Ok(wave(s, n).evolution.phase_rate)),
-    harmonic("harmonics.N.phase_lead", "phi", "rad", "phase lead of the pressure over the shape: the friction coupling against the normal compliance, tan phi = mu sx B/A", |s, n| Ok(wave(s, n).evolution.phase_lead)).group(),
-    harmonic("harmonics.N.pressure_per_amplitude", "1/M", "Pa/m", "pressure amplitude per unit shape amplitude", |s, n| Ok(wave(s, n).evolution.pressure_per_amplitude())),
-    harmonic("harmonics.N.amplitude", "A", "m", "amplitude at time t", |s, n| Ok(wave(s, n).state.amplitude)),
-    harmonic("harmonics.N.phase_x", "rho_x", "rad", "phase along x at time t", |s, n| Ok(wave(s, n).state.phase_x)),
-    harmonic("harmonics.N.phase_y", "rho_y", "rad", "phase along y", |s, n| Ok(wave(s, n).state.phase_y)),
+    spatial("time", "t", "s", "the instant solved", |s| Ok(s.report.time)),
+    spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", |s| Ok(s.report.mean_pressure)),
+    spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi - tau0 Delta", |s| Ok(s.report.load)),
+    spatial("tangential_force", "T", "Pa", "holding force per unit area along x, T = mu pbar + tau0 fraction + psi", |s| Ok(s.report.tangential_force)),
+    spatial("mu_star", "mu*", "", "total friction coefficient, (T - tau0 fraction)/P", |s| Ok(s.report.mu_star)),
+    spatial("psi", "psi", "Pa", "deformation component of friction, psi = -<p g_x>", |s| Ok(s.report.psi)),
+    spatial("delta", "Delta", "", "-<1_C g_x>, the slope of the contact set (0 in complete contact)", |s| Ok(s.report.delta)),
+    spatial("max_pressure", "p_max", "Pa", "largest contact pressure", |s| Ok(s.report.max_pressure)),
+    spatial("mean_gap", "<gap>", "m", "mean gap over the cell (0 in complete contact)", |s| Ok(s.report.mean_gap)),
+    spatial("contact.complete", "complete", "", "whether the contact is complete, p > 0 over the whole cell (1 yes, 0 no)", |s| yes(s.report.contact.complete)).flag(),
+    spatial("contact.fraction", "fraction", "", "fraction of the cell in contact", |s| Ok(s.report.contact.fraction)),
+    spatial("contact.time_to_complete", "t_complete", "s", "simulated time at which the running-in makes the contact complete", |s| s.report.contact.time_to_complete.ok_or_else(|| "complete from t = 0, or still partial at the end of the running-in".into())),
+    spatial("contact.min_pressure", "p_min", "Pa", "smallest complete-contact pressure p_cc of the shape at t (certified over the cell, or the bound, or over the nodes once worn); negative where the contact is partial", |s| Ok(s.report.contact.min_pressure)),
+    spatial("contact.lower_bound", "pbar-sum A/M", "Pa", "pbar - sum A/M with the closed-form amplitudes, a lower bound of p_cc", |s| Ok(s.report.contact.lower_bound)),
+    spatial("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction", |s| Ok(s.report.mu_star - s.inputs.friction.coefficient)).derived(),
+    harmonic("harmonics.N.k", "k", "rad/m", "wavenumber |(wx, wy)| of the harmonic", |s, n| Ok(wave(s, n).k)),
+    harmonic("harmonics.N.decay_rate", "beta", "1/s", "decay rate of the closed form: A(t) = A(0) e^(-beta t)", |s, n| Ok(wave(s, n).decay_rate)),
+    harmonic("harmonics.N.drift_velocity", "c", "m/s", "drift velocity of the pattern, positive along +x (the friction force on the layer)", |s, n| Ok(wave(s, n).drift_velocity)),
+    harmonic("harmonics.N.phase_rate", "Omega", "rad/s", "phase rate: rho_x(t) = rho_x(0) - Omega t", |s, n| Ok(wave(s, n).phase_rate)),
+    harmonic("harmonics.N.phase_lead", "phi", "rad", "phase lead of the pressure over the shape: the friction coupling against the normal compliance, tan phi = mu sx B/A", |s, n| Ok(wave(s, n).phase_lead)).group(),
+    harmonic("harmonics.N.pressure_per_amplitude", "1/M", "Pa/m", "pressure amplitude per unit shape amplitude", |s, n| Ok(wave(s, n).pressure_per_amplitude)),
+    harmonic("harmonics.N.amplitude", "A", "m", "amplitude at time t (closed form)", |s, n| Ok(wave(s, n).amplitude)),
+    harmonic("harmonics.N.phase_x", "rho_x", "rad", "phase along x at time t (closed form)", |s, n| Ok(wave(s, n).phase_x)),
+    harmonic("harmonics.N.phase_y", "rho_y", "rad", "phase along y", |s, n| Ok(wave(s, n).phase_y)),
     harmonic("harmonics.N.decay_time", "1/beta", "s", "decay time: the amplitude falls by a factor e in 1/beta", |s, n| decay_time(wave(s, n))).derived(),
     harmonic("harmonics.N.kh", "kh", "", "wavenumber times thickness: below about 1 the layer is thin for this wave, above about 3 it acts as a half-space", kh).derived().group(),
-    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(wave(s, n).evolution.decay_rate * s.state.solution.time)).derived().group(),
-    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure: contact is surely complete while these sum below 1", |s, n| Ok(wave(s, n).state.amplitude / (wave(s, n).evolution.m * s.state.solution.inputs.mean_pressure))).derived().group(),
+    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(wave(s, n).decay_rate * s.report.time)).derived().group(),
+    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(wave(s, n).amplitude * wave(s, n).pressure_per_amplitude / s.report.mean_pressure)).derived().group(),
 ];
 
-fn decay_time(h: &HarmonicSolution) -> Result<f64, String> {
-    let beta = h.evolution.decay_rate;
+fn decay_time(h: &HarmonicReport) -> Result<f64, String> {
+    let beta = h.decay_rate;
     if beta > 0.0 {
         Ok(1.0 / beta)
     } else {
@@ -159,9 +186,9 @@ fn decay_time(h: &HarmonicSolution) -> Result<f64, String> {
 }
 
 fn kh(s: &SpatialPoint, n: usize) -> Result<f64, String> {
-    let h = s.state.solution.inputs.material.thickness;
+    let h = s.inputs.material.thickness;
     if h.is_finite() {
-        Ok(wave(s, n).initial.wavenumber() * h)
+        Ok(wave(s, n).k * h)
     } else {
         Err("h = inf (half-space): kh is infinite".into())
     }

@@ -16,12 +16,9 @@ use crate::preset::{Preset, Problem};
 pub enum Eval {
     /// From a plane point.
     Plane(fn(&PlanePoint) -> Result<f64, String>),
-    /// From a spatial point whose contact check passed.
+    /// From a spatial point.
     Spatial(fn(&SpatialPoint) -> Result<f64, String>),
-    /// From any spatial point, also where complete contact is lost: the inputs and the contact
-    /// check, which says how it is lost.
-    Diagnostic(fn(&SpatialPoint) -> Result<f64, String>),
-    /// From one harmonic (0-based) of a spatial point whose contact check passed.
+    /// From one harmonic (0-based) of a spatial point.
     Harmonic(fn(&SpatialPoint, usize) -> Result<f64, String>),
 }
 
@@ -153,24 +150,13 @@ impl QuantityKey {
         }
     }
 
-    /// The value at a solved point; Err says why it has none there (the point's contact check
-    /// failed, or the quantity is undefined at this point).
+    /// The value at a solved point; Err says why it has none there.
     pub fn value(self, point: &Point) -> Result<f64, String> {
-        let q = self.quantity();
         let n = self.harmonic.unwrap_or(0);
-        match (q.eval, point) {
+        match (self.quantity().eval, point) {
             (Eval::Plane(f), Point::Plane(p)) => f(p),
-            (Eval::Diagnostic(f), Point::Spatial(s)) => f(s),
-            (Eval::Spatial(_) | Eval::Harmonic(_), Point::Spatial(s)) => {
-                if let Some(why) = s.state.contact.failure() {
-                    return Err(why);
-                }
-                match q.eval {
-                    Eval::Harmonic(f) => f(s, n),
-                    Eval::Spatial(f) => f(s),
-                    _ => unreachable!("matched above"),
-                }
-            }
+            (Eval::Spatial(f), Point::Spatial(s)) => f(s),
+            (Eval::Harmonic(f), Point::Spatial(s)) => f(s, n),
             _ => Err(format!("{self} belongs to the other problem")),
         }
     }
@@ -217,8 +203,10 @@ const DEFAULTS: &[&str] = &[
     "validity.contact_width_over_thickness",
     "time",
     "mean_pressure",
-    "contact.min_pressure",
+    "tangential_force",
     "contact.complete",
+    "contact.fraction",
+    "contact.min_pressure",
     "harmonics.N.decay_rate",
     "harmonics.N.drift_velocity",
 ];

@@ -16,8 +16,8 @@ use crate::preset::Preset;
 pub struct Row {
     /// The values of the varied parameters, in the order of the axes.
     pub at: Vec<f64>,
-    /// Why the point has no answer (a value the rules refuse, no solution, complete contact
-    /// lost), or None.
+    /// Why the point has no answer (a value the rules between fields refuse, or the solver's
+    /// reason, the one `wearlab solve` exits 3 with), or None.
     pub failure: Option<String>,
     /// Each output's value, or why it has none at this point.
     pub values: Vec<Result<f64, String>>,
@@ -60,7 +60,7 @@ pub fn evaluate(
     outputs: &[QuantityKey],
 ) -> (Option<String>, Vec<Result<f64, String>>) {
     match point::solve(preset) {
-        Ok(p) => (p.failure(), values(&p, outputs)),
+        Ok(p) => (None, values(&p, outputs)),
         Err(e) => {
             let why = e.to_string();
             (
