@@ -296,7 +296,8 @@ fn partial_contact_exits_0_with_the_running_in() {
     assert!(simulated > formal, "{simulated} vs {formal}");
     assert!(v["mean_gap"].as_f64().unwrap() > 0.0 && c["min_pressure"].as_f64().unwrap() < 0.0);
     assert_eq!(v["harmonics_hold"], "after complete contact");
-    // the crest x = 0 is in contact, the valley x = l/2 is not
+    // U = A sin(2 pi x/l), crest at l/4: friction moves the contact backwards (-x), so x = 0,
+    // behind the crest, is in contact and x = l/2, as far ahead of it, is not
     let probes = v["probes"].as_array().unwrap();
     assert!(probes[0]["pressure"].as_f64().unwrap() > 0.0);
     assert_eq!(
