@@ -72,24 +72,38 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         }
         Model::Strip => {
             // (3.7) with the exact kernels: A_j = 1/z + R_j, so the Hilbert part is as above and
-            // the rest is regular.
+            // the rest is regular. H[q1] = mu H[q2] + tau0 ln((l - u)/u) exactly, and the regular
+            // integrals sample q2 at the same nodes for every u: evaluate them once.
             let mat = &inputs.material;
             let m = mat.plane_modulus();
             let pi_chi = std::f64::consts::PI * mat.chi();
             let h = mat.thickness;
             let k = kernels_for(mat.poisson_ratio);
             let rule = &rule;
+            let half = 0.5 * l;
+            let samples: Vec<(f64, f64, f64)> = rule
+                .nodes
+                .iter()
+                .zip(&rule.weights)
+                .map(|(t, w)| {
+                    let s = half + half * t;
+                    (s, half * w, q2(s))
+                })
+                .collect();
             Box::new(move |u| {
-                let regular = |f: &dyn Fn(f64) -> f64| rule.integrate(0.0, l, f) / h;
-                let z = |s: f64| (s - u) / h;
-                let du = -pi_chi * q2(u)
-                    + hilbert(rule, 0.0, l, u, &q1)
-                    + regular(&|s| q1(s) * k.r1(z(s)))
-                    - regular(&|s| q2(s) * k.chi_b12(z(s)));
-                let dv = -pi_chi * q1(u)
-                    - hilbert(rule, 0.0, l, u, &q2)
-                    - regular(&|s| q2(s) * k.r2(z(s)))
-                    - regular(&|s| q1(s) * k.chi_b12(z(s)));
+                let (mut r1, mut r2, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0);
+                for &(s, w, q) in &samples {
+                    let z = (s - u) / h;
+                    let (wq2, wq1, b) = (w * q, w * (mu * q + tau0), k.chi_b12(z));
+                    r1 += wq1 * k.r1(z);
+                    r2 += wq2 * k.r2(z);
+                    b1 += wq1 * b;
+                    b2 += wq2 * b;
+                }
+                let h2 = hilbert(rule, 0.0, l, u, &q2);
+                let h1 = mu * h2 + tau0 * ((l - u) / u).ln();
+                let du = -pi_chi * q2(u) + h1 + (r1 - b2) / h;
+                let dv = -pi_chi * q1(u) - h2 - (r2 + b1) / h;
                 (du / m, dv / m)
             })
         }

@@ -6,6 +6,7 @@
 //! motion, origin at the punch tip; contact zone [-a, b] with b the leading edge; q2 > 0 pressure;
 //! q1 shear on the strip, positive in +x.
 
+pub mod collocation;
 pub mod energy;
 pub mod kernels;
 pub mod narrow;

@@ -2,27 +2,31 @@
 //! kernels (3.7),
 //!   gamma q2 + (1/m) p.v. int q2/(s-x) ds + (1/(m h)) int q2(s) [R2(z) + mu chi B12(z)] ds
 //!     = -x/R - (tau0/m) [pi chi + chi l12((b-x)/h) + chi l12((a+x)/h)],    z = (s-x)/h,
-//! solved by Gauss–Jacobi collocation: q2 = w(t) phi(t) with w = (1-t)^(1/2+theta) (1+t)^(1/2-theta)
-//! on s = c + (L/2) t, unknowns phi at the zeros of P_N^(1/2+theta, 1/2-theta), collocation at the
-//! zeros of P_{N+1}^(-1/2-theta, -1/2+theta), where (1/pi) sum W_i phi_i/(t_i - xi_k) is exactly
-//! tan(pi theta) q2 + (1/pi) p.v. int q2/(t - xi). For a fixed L the shift c = (b-a)/2 enters as
-//! the constant -c/R, so it is one more unknown: one linear solve per L (Householder QR: LU
-//! breaks down for narrow strips with strong wear), then Brent on L for the load.
+//! solved by Gauss–Jacobi collocation at a given contact width (`collocation`), then for the load
+//! by a secant on ln P(ln L): first with about 16 + 2 L/h nodes (P(L) within 1e-3), then with
+//! N = 40 + 4 L/h (rounded up to a multiple of 16) and one factorization reused by refinement at
+//! every width tried; a bracket and Brent's method where the secant fails. The node count grows
+//! with L/h because the kernels vary on the scale h; beyond MAX_NODES the model says so instead of
+//! answering.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
-use std::f64::consts::PI;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use nalgebra::{DMatrix, DVector};
-
-use crate::physics::SolveError;
+use crate::physics::{SolveError, SweepRange};
 use crate::physics::elastic::chi_c12;
+use crate::physics::plane::collocation::{Rules, System};
 use crate::physics::plane::kernels::StripKernels;
+use crate::physics::plane::narrow::winkler_beta;
 use crate::physics::plane::{
     Model, PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction,
 };
-use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
-use crate::physics::roots::{bracket, brent_to};
+use crate::physics::roots::{bracket, brent_to, secant_log};
+
+pub use crate::physics::plane::collocation::Collocation;
+
+/// A kernel evaluated over a column of arguments: (z values, output).
+pub type ColumnKernel<'a> = Box<dyn Fn(&[f64], &mut [f64]) + 'a>;
 
 /// The regular kernels the solver uses (the exact strip, or the wide limit for checks).
 pub trait Kernels {
@@ -36,6 +40,15 @@ pub trait Kernels {
     fn regular(&self, z: f64, mu: f64) -> f64 {
         self.r2(z) + mu * self.chi_b12(z)
     }
+    /// R2 + mu chi B12 for one mu, as a function filling a column of values at the z of a
+    /// column (built once per collocation system).
+    fn regular_columns(&self, mu: f64) -> ColumnKernel<'_> {
+        Box::new(move |zs, out| {
+            for (o, z) in out.iter_mut().zip(zs) {
+                *o = self.regular(*z, mu);
+            }
+        })
+    }
 }
 
 impl Kernels for StripKernels {
@@ -48,8 +61,9 @@ impl Kernels for StripKernels {
     fn chi_l12(&self, z: f64) -> f64 {
         StripKernels::chi_l12(self, z)
     }
-    fn regular(&self, z: f64, mu: f64) -> f64 {
-        StripKernels::regular(self, z, mu)
+    fn regular_columns(&self, mu: f64) -> ColumnKernel<'_> {
+        let regular = self.regular_for(mu);
+        Box::new(move |zs, out| regular.column(zs, out))
     }
 }
 
@@ -99,157 +113,173 @@ pub fn kernels_for(nu: f64) -> Arc<StripKernels> {
     k
 }
 
-/// The collocation solution at one contact width.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Collocation {
-    /// Contact width L [m].
-    pub l: f64,
-    /// Shift c = (b - a)/2 [m].
-    pub c: f64,
-    /// Exponent shift theta.
-    pub theta: f64,
-    /// Jacobi nodes t_i in (-1, 1).
-    pub nodes: Vec<f64>,
-    /// Quadrature weights W_i (with the Jacobi weight).
-    pub weights: Vec<f64>,
-    /// phi_i = q2/w at the nodes [Pa].
-    pub phi: Vec<f64>,
-    /// Q2 [N/m].
-    pub q2: f64,
-    /// psi [N/m].
-    pub psi: f64,
-    /// Delta_g [m].
-    pub delta_g: f64,
-    /// P [N/m] from (3.11).
-    pub load: f64,
-    /// Barycentric weights of the nodes (for phi between them).
-    bary: Vec<f64>,
-}
+/// The largest node count the strip model uses ((a+b)/h up to 242): beyond it the model returns
+/// `SolveError::NoSolution` rather than an unresolved answer.
+pub const MAX_NODES: usize = 1008;
+
+/// Relative accuracy of the linear solves by refinement at an operating point (the width is
+/// found to 1e-15) and along a sweep (whose loads are those of the solutions).
+const POINT_TOLERANCE: f64 = 1e-14;
+const SWEEP_TOLERANCE: f64 = 1e-13;
 
 /// The number of nodes that resolves the strip: 40 + 4 L/h (docs/physics/plane.md suggests 60 + 5 L/h for
-/// 1e-11; this keeps N against 1.5 N within 1e-8, tested).
+/// 1e-11; this keeps N against 1.5 N within 1e-8 up to nu = 0.499, tested).
 pub fn nodes_for(l_over_h: f64) -> usize {
-    (40.0 + 4.0 * l_over_h).ceil().min(400.0) as usize
+    (40.0 + 4.0 * l_over_h).ceil() as usize
 }
 
-/// Solves the collocation system at contact width `l` with `n` nodes.
-pub fn collocate(inputs: &PlaneInputs, kernels: &dyn Kernels, l: f64, n: usize) -> Collocation {
-    collocate_on(inputs, kernels, l, &Rules::new(inputs, n))
+/// The node count used at L/h: `nodes_for` rounded up to a multiple of 16, so that neighbouring
+/// widths share rules and factorizations; None beyond MAX_NODES.
+fn node_count(l_over_h: f64) -> Option<usize> {
+    let n = nodes_for(l_over_h).div_ceil(16) * 16;
+    (n <= MAX_NODES).then_some(n)
 }
 
-/// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns: they depend on
-/// theta and n only, so a sweep or a root search builds them once.
-pub struct Rules {
-    theta: f64,
-    rule: GaussRule,
-    xk: Vec<f64>,
+/// The coarse search's node count at L/h: 16 + 2 L/h rounded up to a multiple of 8 (P(L) within
+/// about 1e-3 of the converged value up to nu = 0.499).
+fn coarse_count(l_over_h: f64) -> usize {
+    ((16.0 + 2.0 * l_over_h).ceil() as usize).div_ceil(8) * 8
 }
 
-impl Rules {
-    /// The rules for these inputs' theta with n nodes.
-    pub fn new(inputs: &PlaneInputs, n: usize) -> Rules {
-        let (_, _, theta) = exponent(inputs);
-        Rules {
-            theta,
-            rule: gauss_jacobi(n, 0.5 + theta, 0.5 - theta),
-            xk: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
-        }
-    }
+/// The widest contact the model resolves [m]: (a+b)/h = (MAX_NODES - 40)/4.
+pub fn widest(inputs: &PlaneInputs) -> f64 {
+    (MAX_NODES - 40) as f64 / 4.0 * inputs.material.thickness
 }
 
-/// As `collocate`, on prepared rules.
-pub fn collocate_on(
+fn singular(l: f64, h: f64) -> SolveError {
+    SolveError::NoSolution(format!(
+        "the strip collocation system is singular at (a+b)/h = {:.3}",
+        l / h
+    ))
+}
+
+/// Solves the collocation system at contact width `l` with `n` nodes (one factorization).
+pub fn collocate(
     inputs: &PlaneInputs,
     kernels: &dyn Kernels,
     l: f64,
-    rules: &Rules,
-) -> Collocation {
-    let (m, _, _) = exponent(inputs);
-    let theta = rules.theta;
-    let (rule, xk) = (&rules.rule, &rules.xk);
-    let n = rule.nodes.len();
-    let chi = inputs.material.chi();
-    let (mu, tau0, r) = (
-        inputs.friction.coefficient,
-        inputs.friction.adhesion,
-        inputs.radius,
-    );
-    let h = inputs.material.thickness;
-    let half = 0.5 * l;
-    let mut a = DMatrix::<f64>::zeros(n + 1, n + 1);
-    let mut rhs = DVector::<f64>::zeros(n + 1);
-    for (k, &xi) in xk.iter().enumerate() {
-        for i in 0..n {
-            let t = rule.nodes[i];
-            let z = half * (t - xi) / h;
-            let regular = kernels.regular(z, mu);
-            a[(k, i)] = rule.weights[i] * (1.0 / (PI * (t - xi)) + half / (PI * h) * regular);
-        }
-        a[(k, n)] = m / PI;
-        let ends = kernels.chi_l12(half * (1.0 - xi) / h) + kernels.chi_l12(half * (1.0 + xi) / h);
-        rhs[k] = -(m / PI) * half * xi / r - tau0 / PI * (PI * chi + ends);
-    }
-    let sol = a
-        .qr()
-        .solve(&rhs)
-        .unwrap_or_else(|| DVector::from_element(n + 1, f64::NAN));
-    let phi: Vec<f64> = sol.iter().take(n).copied().collect();
-    let c = sol[n] * r;
-    let q2 = half * (0..n).map(|i| rule.weights[i] * phi[i]).sum::<f64>();
-    let psi = half
-        * (0..n)
-            .map(|i| rule.weights[i] * phi[i] * (c + half * rule.nodes[i]) / r)
-            .sum::<f64>();
-    let delta_g = l * c / r;
-    // barycentric weights 1/prod(t_j - t_k), each factor doubled so the products stay O(1)
-    let bary = (0..n)
-        .map(|j| {
-            (0..n)
-                .filter(|&k| k != j)
-                .fold(1.0, |w, k| w / (2.0 * (rule.nodes[j] - rule.nodes[k])))
+    n: usize,
+) -> Result<Collocation, SolveError> {
+    let (_, _, theta) = exponent(inputs);
+    System::new(inputs, kernels, Rules::cached(theta, n), POINT_TOLERANCE)
+        .at(l)
+        .ok_or_else(|| singular(l, inputs.material.thickness))
+}
+
+/// Where the width search starts: the smaller of the half-plane width (4.6) and the frictionless
+/// Winkler width (12 beta R P)^(1/3) (the first is right at small L/h, the second at large L/h
+/// for nu <= 0.45; for nu -> 1/2 the layer is softer than Winkler's and the search grows it).
+fn start_width(inputs: &PlaneInputs, p: f64) -> f64 {
+    let (m, _, theta) = exponent(inputs);
+    let half_plane = (8.0 * inputs.radius * p / ((1.0 - 4.0 * theta * theta) * m)).sqrt();
+    let winkler = (12.0 * winkler_beta(inputs) * inputs.radius * p).cbrt();
+    half_plane.min(winkler).min(widest(inputs))
+}
+
+/// `f` evaluated once per distinct argument (the root finders revisit their end points).
+fn memoized(f: impl Fn(f64) -> f64) -> impl Fn(f64) -> f64 {
+    let seen = RefCell::new(Vec::<(f64, f64)>::new());
+    move |x| {
+        let known = seen
+            .borrow()
+            .iter()
+            .find(|(y, _)| y.to_bits() == x.to_bits())
+            .map(|s| s.1);
+        known.unwrap_or_else(|| {
+            let v = f(x);
+            seen.borrow_mut().push((x, v));
+            v
         })
-        .collect();
-    Collocation {
-        bary,
-        l,
-        c,
-        theta,
-        nodes: rule.nodes.clone(),
-        weights: rule.weights.clone(),
-        phi,
-        q2,
-        psi,
-        delta_g,
-        load: q2 - mu * psi - tau0 * delta_g,
     }
 }
 
-/// The contact width at which the load is `p`, by a bracket from the wide estimate and Brent.
-pub(crate) fn width_for_load(
+/// The contact width at which the load is `p` to relative accuracy `rtol`, with the system that
+/// found it (its factors are those of a nearby width; its solutions by refinement accurate to
+/// `tolerance`). Stages of fixed node count: a secant on
+/// ln P(ln L) (P grows like L^2 to L^3) from the start width, coarse (P within 1e-3) until the
+/// width found needs no more coarse nodes than were used, then fine likewise; each fine stage
+/// factors once and refines at every width it tries. Where the secant fails (P(L) not increasing
+/// like a power), a bracket and Brent's method take over.
+fn search<'a>(
     inputs: &PlaneInputs,
-    kernels: &dyn Kernels,
+    kernels: &'a dyn Kernels,
     p: f64,
-    rtol: f64,
-) -> Result<f64, SolveError> {
+    (rtol, tolerance): (f64, f64),
+) -> Result<(f64, System<'a>), SolveError> {
+    const STAGES: usize = 4;
+    const SECANT_EVALS: usize = 20;
     let h = inputs.material.thickness;
-    let rules = std::cell::RefCell::new(HashMap::<usize, Rules>::new());
-    let f = |l: f64| {
-        let n = nodes_for(l / h);
-        let mut cache = rules.borrow_mut();
-        let r = cache.entry(n).or_insert_with(|| Rules::new(inputs, n));
-        collocate_on(inputs, kernels, l, r).load - p
-    };
-    let guess = (8.0 * inputs.radius * p / inputs.material.plane_modulus()).sqrt();
-    let Some((lo, hi)) = bracket(guess, (0.5, 60), (1.5, 60), f) else {
-        return Err(SolveError::NoSolution(format!(
-            "the strip model finds no contact width for P = {p:.4e} N/m"
-        )));
-    };
-    brent_to(lo, hi, rtol, f).ok_or_else(|| {
+    let (_, _, theta) = exponent(inputs);
+    let widest = widest(inputs);
+    let no_width = || {
         SolveError::NoSolution(format!(
-            "the contact width did not converge at P = {p:.4e} N/m"
+            "the strip model finds no contact width for P = {p:.4e} N/m"
         ))
-    })
+    };
+    let beyond = || {
+        SolveError::NoSolution(format!(
+            "at P = {p:.4e} N/m the contact is wider than the strip model resolves ((a+b)/h > \
+             {:.0} with at most {MAX_NODES} nodes); the narrow (Winkler) model is its limit there",
+            widest / h
+        ))
+    };
+    // refinement to 1e-10 suffices for the coarse stages (P within 1e-3)
+    let system = |n: usize, tolerance: f64| {
+        RefCell::new(System::new(inputs, kernels, Rules::cached(theta, n), tolerance))
+    };
+    let load = |sys: &RefCell<System>, l: f64| sys.borrow_mut().at(l).map(|c| c.load);
+    let (mut l, mut slope) = (start_width(inputs, p), 2.5);
+    let mut coarse_done = false;
+    for _ in 0..STAGES {
+        let n = coarse_count(1.1 * l.min(widest) / h);
+        let sys = system(n, 1e-10);
+        let within = |l: f64| (l <= widest).then(|| load(&sys, l)).flatten();
+        let Some((root, s)) = secant_log(within, p, l, slope, 1e-4, SECANT_EVALS) else {
+            break;
+        };
+        (l, slope) = (root, s);
+        if coarse_count(l / h) <= n {
+            coarse_done = true;
+            break;
+        }
+    }
+    if !coarse_done {
+        // one coarse system per width tried; wider than the model resolves counts as too wide
+        let coarse = memoized(|l: f64| {
+            if l > widest {
+                return f64::INFINITY;
+            }
+            load(&system(coarse_count(l / h), 1e-10), l).map_or(f64::NAN, |v| v - p)
+        });
+        let start = start_width(inputs, p);
+        let (lo, hi) = bracket(start, (0.5, 60), (1.5, 60), &coarse).ok_or_else(no_width)?;
+        l = brent_to(lo, hi.min(widest), 1e-4, &coarse).ok_or_else(no_width)?;
+    }
+    if l >= widest * (1.0 - 1e-3) {
+        return Err(beyond());
+    }
+    for _ in 0..STAGES {
+        let n = node_count(1.01 * l / h).ok_or_else(beyond)?;
+        let sys = system(n, tolerance);
+        let found = secant_log(|l| load(&sys, l), p, l, slope, rtol, SECANT_EVALS);
+        (l, slope) = match found {
+            Some(found) => found,
+            None => {
+                let fine = memoized(|l: f64| load(&sys, l).map_or(f64::NAN, |v| v - p));
+                let (lo, hi) = bracket(l, (0.995, 60), (1.005, 60), &fine).ok_or_else(no_width)?;
+                let root = brent_to(lo, hi, rtol, &fine).ok_or_else(|| {
+                    SolveError::NoSolution(format!(
+                        "the contact width did not converge at P = {p:.4e} N/m"
+                    ))
+                })?;
+                (root, slope)
+            }
+        };
+        if node_count(l / h).is_some_and(|needed| needed <= n) {
+            return Ok((l, sys.into_inner()));
+        }
+    }
+    Err(no_width())
 }
 
 /// The solution from a converged collocation.
@@ -290,34 +320,76 @@ pub fn solve_with(
     inputs: &PlaneInputs,
     kernels: &dyn Kernels,
 ) -> Result<PlaneSolution, SolveError> {
-    let l = width_for_load(inputs, kernels, inputs.load, 1e-15)?;
-    let col = collocate(inputs, kernels, l, nodes_for(l / inputs.material.thickness));
-    if col.phi.iter().any(|v| !v.is_finite()) {
-        return Err(SolveError::NoSolution(
-            "the strip collocation system is singular".into(),
-        ));
-    }
+    let (l, mut system) = search(inputs, kernels, inputs.load, (1e-15, POINT_TOLERANCE))?;
+    let col = system
+        .at(l)
+        .ok_or_else(|| singular(l, inputs.material.thickness))?;
     Ok(solution(inputs, col, Model::Strip))
 }
 
-impl Collocation {
-    /// phi at t by barycentric interpolation through the nodes.
-    pub fn phi_at(&self, t: f64) -> f64 {
-        let (mut num, mut den) = (0.0, 0.0);
-        for j in 0..self.nodes.len() {
-            let d = t - self.nodes[j];
-            if d == 0.0 {
-                return self.phi[j];
-            }
-            num += self.bary[j] / d * self.phi[j];
-            den += self.bary[j] / d;
-        }
-        num / den
-    }
+/// The strip sweep by contact width: the widths of the end loads to 1e-6, then one collocation per
+/// width, spaced between them like the requested loads, each at the load it carries (None where
+/// the system is singular or the load is not positive). Neighbouring widths share node counts and
+/// factorizations, and the ends' searches lend theirs.
+pub fn sweep_by_width(
+    inputs: &PlaneInputs,
+    loads: &SweepRange,
+) -> Result<Vec<Option<PlaneSolution>>, SolveError> {
+    let kernels = kernels_for(inputs.material.poisson_ratio);
+    let search_at = |p: f64| {
+        search(
+            &inputs.with_load(p),
+            kernels.as_ref(),
+            p,
+            (1e-6, SWEEP_TOLERANCE),
+        )
+    };
+    let (l_min, low) = search_at(loads.min)?;
+    let (l_max, high) = search_at(loads.max)?;
+    let widths = loads.spacing.points(l_min, l_max, loads.points);
+    Ok(solve_at_widths(
+        inputs,
+        kernels.as_ref(),
+        &widths,
+        [low, high],
+    ))
+}
 
-    /// q2 at distance u from the trailing edge [Pa].
-    pub fn pressure_from_trailing_edge(&self, u: f64) -> f64 {
-        let t = (2.0 * u / self.l - 1.0).clamp(-1.0, 1.0);
-        (1.0 - t).powf(0.5 + self.theta) * (1.0 + t).powf(0.5 - self.theta) * self.phi_at(t)
-    }
+/// The strip solutions at the contact widths `widths` (increasing), each at the load it carries;
+/// None where the width is beyond the model's range, the system is singular or the load is not
+/// positive. `ends` are systems to use where they fit. Taken from the widest down, a system with
+/// up to SLACK more nodes than a width needs serves it (more nodes are only more accurate), so a
+/// sweep factors once per SLACK/4 thicknesses of contact width.
+fn solve_at_widths<'a>(
+    inputs: &PlaneInputs,
+    kernels: &'a dyn Kernels,
+    widths: &[f64],
+    ends: [System<'a>; 2],
+) -> Vec<Option<PlaneSolution>> {
+    const SLACK: usize = 16;
+    let (_, _, theta) = exponent(inputs);
+    let h = inputs.material.thickness;
+    // the two ends' systems, then the current one
+    let mut systems: Vec<System> = ends.into();
+    let mut solutions: Vec<Option<PlaneSolution>> = widths
+        .iter()
+        .rev()
+        .map(|&l| {
+            let needed = node_count(l / h)?;
+            let fits = |s: &System| (needed..=needed + SLACK).contains(&s.nodes());
+            let i = match systems.iter().rposition(fits) {
+                Some(i) => i,
+                None => {
+                    systems.truncate(2);
+                    let rules = Rules::cached(theta, needed);
+                    systems.push(System::new(inputs, kernels, rules, SWEEP_TOLERANCE));
+                    2
+                }
+            };
+            let col = systems[i].at(l)?;
+            (col.load > 0.0).then(|| solution(&inputs.with_load(col.load), col, Model::Strip))
+        })
+        .collect();
+    solutions.reverse();
+    solutions
 }

@@ -66,7 +66,7 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
 }
 
 /// The strip sweep, parametrized by the contact width: Brent finds only the widths of the end
-/// loads, then one linear solve per point gives its load (so the loads are the solutions', spaced
+/// loads, then one collocation per point gives its load (so the loads are the solutions', spaced
 /// like the requested ones in contact width; a width that fails the checks is left out).
 fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sweep {
     let none = || {
@@ -77,39 +77,14 @@ fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sw
     if !valid || inputs.material.is_half_space() {
         return none();
     }
-    let kernels = strip::kernels_for(inputs.material.poisson_ratio);
-    let h = inputs.material.thickness;
-    let ends = (
-        strip::width_for_load(
-            &inputs.with_load(loads.min),
-            kernels.as_ref(),
-            loads.min,
-            1e-6,
-        ),
-        strip::width_for_load(
-            &inputs.with_load(loads.max),
-            kernels.as_ref(),
-            loads.max,
-            1e-6,
-        ),
-    );
-    let (Ok(l_min), Ok(l_max)) = ends else {
+    let Ok(solutions) = strip::sweep_by_width(inputs, loads) else {
         return none();
     };
-    // one set of rules for the whole sweep, with the nodes the widest contact needs
-    let rules = strip::Rules::new(inputs, strip::nodes_for(l_max / h));
     // a width whose collocation fails the checks has no load: it is left out of the curve
-    let solutions: Vec<Option<PlaneSolution>> = loads
-        .spacing
-        .points(l_min, l_max, loads.points)
+    let solutions: Vec<Option<PlaneSolution>> = solutions
         .into_iter()
-        .filter_map(|l| {
-            let col = strip::collocate_on(inputs, kernels.as_ref(), l, &rules);
-            let at = inputs.with_load(col.load);
-            (col.load > 0.0 && col.phi.iter().all(|v| v.is_finite()))
-                .then(|| strip::solution(&at, col, Model::Strip))
-                .filter(|sol| checks::plane(sol).is_ok())
-        })
+        .flatten()
+        .filter(|sol| checks::plane(sol).is_ok())
         .map(Some)
         .collect();
     let load = solutions

@@ -1,0 +1,119 @@
+//! The strip of any thickness (docs/physics/plane.md section 6): kernel table, Gauss–Jacobi rules, one
+//! operating point at (a+b)/h of about 1, 5, 20 and 56, 100-point sweeps, and `wearlab solve` of a
+//! preset at (a+b)/h = 56 as a whole process.
+//! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, mu = 0.3, k m = 0.5 on h = 1e-5 m (the strip preset's
+//! material; P = 1e5 N/m is the SciPy reference's README case).
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use wearlab::physics::{Spacing, SweepRange};
+use wearlab::physics::plane::sweep::sweep;
+use wearlab::physics::plane::{Model, PlaneInputs, solve, strip};
+use wearlab::physics::quadrature::{gauss_jacobi, jacobi_zeros};
+use wearlab::physics::{Friction, Material};
+
+fn inputs(mu: f64, load: f64) -> PlaneInputs {
+    let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);
+    PlaneInputs {
+        material: Material {
+            youngs_modulus: 1e10,
+            poisson_ratio: 0.3,
+            thickness: 1e-5,
+        },
+        friction: Friction {
+            coefficient: mu,
+            adhesion: 0.0,
+        },
+        wear: 0.5 / m,
+        radius: 0.05,
+        load,
+    }
+}
+
+fn table_and_rules(c: &mut Criterion) {
+    c.bench_function("strip_table", |b| {
+        b.iter(|| wearlab::physics::plane::kernels::StripKernels::new(black_box(0.3)))
+    });
+    // the rule pair of the 56 h operating point: 272 nodes, 273 collocation points, theta = 0.1
+    c.bench_function("strip_rules/272", |b| {
+        b.iter(|| {
+            let theta = black_box(0.1);
+            (
+                gauss_jacobi(272, 0.5 + theta, 0.5 - theta),
+                jacobi_zeros(273, -0.5 - theta, -0.5 + theta),
+            )
+        })
+    });
+}
+
+fn operating_points(c: &mut Criterion) {
+    strip::kernels_for(0.3);
+    // loads for (a+b)/h = 1.04, 4.97, 19.97, 56.28
+    for (name, load) in [("1h", 5.5), ("5h", 300.0), ("20h", 1.05e4), ("56h", 1e5)] {
+        let at = inputs(0.3, load);
+        c.bench_function(&format!("strip_point/{name}"), |b| {
+            b.iter(|| solve(black_box(&at), Model::Strip).unwrap())
+        });
+    }
+    // every solve with new Gauss–Jacobi rules (mu changed by 1e-12 relative each time)
+    let mut count = 0.0;
+    c.bench_function("strip_point_cold/56h", |b| {
+        b.iter(|| {
+            count += 1.0;
+            solve(&inputs(0.3 * (1.0 + 1e-12 * count), 1e5), Model::Strip).unwrap()
+        })
+    });
+}
+
+fn sweeps(c: &mut Criterion) {
+    strip::kernels_for(0.3);
+    let at = inputs(0.3, 1e3);
+    // (a+b)/h from 1.35 to 4.6; 19.6 to 26; 60 to 86
+    for (name, min, max) in [
+        ("strip_sweep/upto_5h", 10.0, 250.0),
+        ("strip_sweep/20h", 1e4, 2e4),
+        ("strip_sweep/60_86h", 1.19e5, 3.13e5),
+    ] {
+        let loads = SweepRange {
+            min,
+            max,
+            points: 100,
+            spacing: Spacing::Log,
+        };
+        c.bench_function(name, |b| {
+            b.iter(|| sweep(black_box(&at), Model::Strip, &loads))
+        });
+    }
+}
+
+fn whole_process(c: &mut Criterion) {
+    // the strip preset at P = 1e5 N/m ((a+b)/h = 56) with a 2-point sweep, as a user runs it
+    let preset = std::fs::read_to_string("presets/hard-coating-strip.toml")
+        .unwrap()
+        .replace("load = 1.0e3", "load = 1.0e5")
+        .replace("points = 40", "points = 2");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("strip-56h.toml");
+    std::fs::write(&path, preset).unwrap();
+    c.bench_function("wearlab_solve/strip_56h", |b| {
+        b.iter(|| {
+            let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearlab"))
+                .args(["solve", path.to_str().unwrap()])
+                .output()
+                .unwrap();
+            assert!(out.status.success());
+        })
+    });
+}
+
+criterion_group! {
+    name = strip_benches;
+    config = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3));
+    targets = table_and_rules, operating_points, sweeps, whole_process
+}
+criterion_main!(strip_benches);

@@ -1,0 +1,440 @@
+//! The collocation system of the strip of any thickness at one contact width (docs/physics/plane.md
+//! section 6): q2 = w(t) phi(t) with w = (1-t)^(1/2+theta) (1+t)^(1/2-theta) on s = c + (L/2) t,
+//! unknowns phi at the zeros t_i of P_N^(1/2+theta, 1/2-theta), collocation at the zeros xi_k of
+//! P_{N+1}^(-1/2-theta, -1/2+theta), where (1/pi) sum W_i phi_i/(t_i - xi_k) is exactly
+//! tan(pi theta) q2 + (1/pi) p.v. int q2/(t - xi). For a fixed L the shift c = (b-a)/2 enters as
+//! the constant -c/R: N + 1 equations for phi and c, one linear solve per L.
+//!
+//! The unknowns are scaled to v_i = W_i phi_i R/(m L/2) (quadrature-weighted) and v_N = c/(L/2):
+//!   sum_i [1/(pi (t_i - xi_k)) + (L/2)/(pi h) K((L/2)(t_i - xi_k)/h)] v_i + v_N/pi
+//!     = -xi_k/pi - (tau0 R/(m L/2)) [chi + (chi l12((L/2)(1-xi_k)/h) + chi l12((L/2)(1+xi_k)/h))/pi],
+//! K = R2 + mu chi B12, and each row is divided by its largest entry. Unscaled, LU with partial
+//! pivoting gives a growth factor of 1e11 at (a+b)/h = 56 with k m = 0.5 and loses 5 digits
+//! (plane.md section 6 reports 1e15 for strong wear); scaled, the growth stayed below 2 in every
+//! case tried, so LU is the rule and Householder QR the fallback when the growth exceeds 1e6. The factors are
+//! kept and reused at nearby widths by iterative refinement (residual with the new matrix,
+//! correction with the old factors: O(N^2) per width instead of O(N^3)), and rebuilt when the
+//! refinement stops contracting.
+
+use std::sync::{Arc, Mutex, OnceLock};
+
+use nalgebra::{DMatrix, DVector, Dyn, LU, QR};
+
+use crate::physics::plane::PlaneInputs;
+use crate::physics::plane::strip::{ColumnKernel, Kernels};
+use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
+
+/// LU is used while max|U|/max|A| stays below this; QR above.
+const MAX_GROWTH: f64 = 1e6;
+/// Refinement steps before the factors are rebuilt.
+const MAX_REFINEMENTS: usize = 12;
+/// Rules kept by `Rules::cached`.
+const CACHED_RULES: usize = 12;
+
+/// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns at one theta.
+#[derive(Debug, PartialEq)]
+pub struct Rules {
+    theta: f64,
+    rule: GaussRule,
+    bary: Vec<f64>,
+    points: Vec<f64>,
+}
+
+impl Rules {
+    fn new(theta: f64, n: usize) -> Rules {
+        let rule = gauss_jacobi(n, 0.5 + theta, 0.5 - theta);
+        Rules {
+            theta,
+            bary: rule.barycentric_weights(),
+            points: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
+            rule,
+        }
+    }
+
+    /// The rules for theta and n, built once and kept (the last few used).
+    pub fn cached(theta: f64, n: usize) -> Arc<Rules> {
+        static CACHE: OnceLock<Mutex<Vec<Arc<Rules>>>> = OnceLock::new();
+        let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
+        let mut list = cache.lock().unwrap_or_else(|p| p.into_inner());
+        let hit = list
+            .iter()
+            .position(|r| r.theta.to_bits() == theta.to_bits() && r.len() == n);
+        let rules = match hit {
+            Some(i) => list.remove(i),
+            None => Arc::new(Rules::new(theta, n)),
+        };
+        list.insert(0, Arc::clone(&rules));
+        list.truncate(CACHED_RULES);
+        rules
+    }
+
+    /// The number of unknowns phi_i.
+    pub fn len(&self) -> usize {
+        self.rule.nodes.len()
+    }
+
+    /// Never empty (n >= 1); here for clippy's len_without_is_empty.
+    pub fn is_empty(&self) -> bool {
+        self.rule.nodes.is_empty()
+    }
+}
+
+/// The collocation solution at one contact width.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Collocation {
+    /// Contact width L [m].
+    pub l: f64,
+    /// Shift c = (b - a)/2 [m].
+    pub c: f64,
+    /// Exponent shift theta.
+    pub theta: f64,
+    /// phi_i = q2/w at the nodes [Pa].
+    pub phi: Vec<f64>,
+    /// Q2 [N/m].
+    pub q2: f64,
+    /// psi [N/m].
+    pub psi: f64,
+    /// Delta_g [m].
+    pub delta_g: f64,
+    /// P [N/m] from (3.11).
+    pub load: f64,
+    rules: Arc<Rules>,
+    /// Barycentric weight times phi at each node.
+    bary_phi: Vec<f64>,
+}
+
+impl Collocation {
+    /// The Jacobi nodes t_i in (-1, 1).
+    pub fn nodes(&self) -> &[f64] {
+        &self.rules.rule.nodes
+    }
+
+    /// phi at t by barycentric interpolation through the nodes (four independent sums, so that
+    /// the loop vectorizes: the profile and the energy check call it some 10^5 times).
+    pub fn phi_at(&self, t: f64) -> f64 {
+        let (mut num, mut den) = ([0.0; 4], [0.0; 4]);
+        let nodes = self.nodes().chunks_exact(4);
+        let bary = self.rules.bary.chunks_exact(4);
+        let bary_phi = self.bary_phi.chunks_exact(4);
+        let tails = (nodes.remainder(), bary.remainder(), bary_phi.remainder());
+        for ((x, b), bp) in nodes.zip(bary).zip(bary_phi) {
+            for k in 0..4 {
+                let r = 1.0 / (t - x[k]);
+                num[k] += bp[k] * r;
+                den[k] += b[k] * r;
+            }
+        }
+        for ((x, b), bp) in tails.0.iter().zip(tails.1).zip(tails.2) {
+            let r = 1.0 / (t - x);
+            num[0] += bp * r;
+            den[0] += b * r;
+        }
+        let (num, den) = (
+            (num[0] + num[1]) + (num[2] + num[3]),
+            (den[0] + den[1]) + (den[2] + den[3]),
+        );
+        if num.is_finite() && den.is_finite() {
+            return num / den;
+        }
+        // t is a node (or next to one: 1/(t - x) overflowed)
+        let nearest = self
+            .nodes()
+            .iter()
+            .enumerate()
+            .min_by(|a, b| (t - a.1).abs().total_cmp(&(t - b.1).abs()))
+            .map_or(0, |(j, _)| j);
+        self.phi[nearest]
+    }
+
+    /// q2 at distance u from the trailing edge [Pa].
+    pub fn pressure_from_trailing_edge(&self, u: f64) -> f64 {
+        let t = (2.0 * u / self.l - 1.0).clamp(-1.0, 1.0);
+        let weight = ((0.5 + self.theta) * (-t).ln_1p() + (0.5 - self.theta) * t.ln_1p()).exp();
+        weight * self.phi_at(t)
+    }
+}
+
+/// A factorization of the matrix at some width.
+enum Factors {
+    Lu(LU<f64, Dyn, Dyn>),
+    Qr(QR<f64, Dyn, Dyn>),
+}
+
+impl Factors {
+    /// LU when its growth factor is moderate, else QR; None when the matrix is singular.
+    fn new(a: DMatrix<f64>) -> Option<Factors> {
+        let scale = a.amax();
+        let lu = a.clone().lu();
+        if lu.is_invertible() && lu.u().amax() < MAX_GROWTH * scale {
+            return Some(Factors::Lu(lu));
+        }
+        let qr = a.qr();
+        qr.is_invertible().then_some(Factors::Qr(qr))
+    }
+
+    fn solve(&self, b: &DVector<f64>) -> Option<DVector<f64>> {
+        let y = match self {
+            Factors::Lu(lu) => lu.solve(b),
+            Factors::Qr(qr) => qr.solve(b),
+        }?;
+        y.iter().all(|v| v.is_finite()).then_some(y)
+    }
+
+    /// Solves a y = b by refinement from these factors (of a nearby matrix), starting at `guess`:
+    /// None when a step does not contract the correction by half (above round-off) or more than
+    /// MAX_REFINEMENTS steps are needed. Stops when the next correction, estimated from the
+    /// contraction so far, is below `tolerance` of y. Returns y and the steps taken.
+    fn refine(
+        &self,
+        a: &DMatrix<f64>,
+        b: &DVector<f64>,
+        mut y: DVector<f64>,
+        tolerance: f64,
+    ) -> Option<(DVector<f64>, usize)> {
+        let mut last = f64::INFINITY;
+        for steps in 1..=MAX_REFINEMENTS {
+            let dy = self.solve(&residual(a, &y, b))?;
+            y += &dy;
+            let (step, size) = (dy.amax(), y.amax());
+            // the contraction per step, unknown after the first
+            let ratio = if last.is_finite() { step / last } else { 0.0 };
+            if step <= 1e-15 * size
+                || (last.is_finite() && ratio < 0.5 && step * ratio <= tolerance * size)
+            {
+                return Some((y, steps));
+            }
+            if ratio >= 0.5 {
+                // stalled: converged if at round-off, else these factors are too far off
+                return (step <= 1e-13 * size).then_some((y, steps));
+            }
+            last = step;
+        }
+        None
+    }
+}
+
+/// b - a y, column by column over contiguous slices (so that it vectorizes).
+fn residual(a: &DMatrix<f64>, y: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
+    let mut r = b.clone();
+    let rows = a.nrows();
+    for (column, yi) in a.as_slice().chunks_exact(rows).zip(y.iter()) {
+        for (ri, aki) in r.as_mut_slice().iter_mut().zip(column) {
+            *ri -= aki * yi;
+        }
+    }
+    r
+}
+
+/// The collocation system of one set of inputs and rules, keeping the last factorization.
+pub struct System<'a> {
+    inputs: PlaneInputs,
+    kernels: &'a dyn Kernels,
+    /// Relative accuracy of solutions by refinement.
+    tolerance: f64,
+    /// R2 + mu chi B12 over a column, for the inputs' mu.
+    regular: ColumnKernel<'a>,
+    rules: Arc<Rules>,
+    factors: Option<Factors>,
+    /// The last collocation (root finders evaluate their answer again).
+    last: Option<Collocation>,
+    /// The last four solutions (width, scaled unknowns), newest first.
+    history: Vec<(f64, DVector<f64>)>,
+    /// 1/(pi (t_i - xi_k)), the Cauchy part of the matrix, once computed.
+    cauchy: Option<DMatrix<f64>>,
+    /// Scratch: one column of kernel arguments and values, and the rows' largest entries.
+    scratch: (Vec<f64>, Vec<f64>, Vec<f64>),
+}
+
+impl<'a> System<'a> {
+    /// The system for these inputs with these rules (their theta must be the inputs'); solutions
+    /// by refinement stop when the next correction is estimated below `tolerance` (relative).
+    pub fn new(
+        inputs: &PlaneInputs,
+        kernels: &'a dyn Kernels,
+        rules: Arc<Rules>,
+        tolerance: f64,
+    ) -> System<'a> {
+        let n = rules.len();
+        System {
+            inputs: *inputs,
+            kernels,
+            tolerance,
+            regular: kernels.regular_columns(inputs.friction.coefficient),
+            rules,
+            factors: None,
+            last: None,
+            history: Vec::new(),
+            cauchy: None,
+            scratch: (vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]),
+        }
+    }
+
+    /// The number of unknowns phi_i.
+    pub fn nodes(&self) -> usize {
+        self.rules.len()
+    }
+
+    /// The scaled, row-equilibrated matrix and right side at width l (module note).
+    fn assemble(&mut self, l: f64) -> (DMatrix<f64>, DVector<f64>) {
+        let n = self.rules.len();
+        let inputs = &self.inputs;
+        let h = inputs.material.thickness;
+        let half = 0.5 * l;
+        let (nodes, points) = (&self.rules.rule.nodes, &self.rules.points);
+        let inv_pi = std::f64::consts::FRAC_1_PI;
+        // 1/(pi (t_i - xi_k)) does not depend on l: computed once per system
+        let cauchy = self.cauchy.get_or_insert_with(|| {
+            DMatrix::from_fn(n + 1, n, |k, i| inv_pi / (nodes[i] - points[k]))
+        });
+        let mut a = DMatrix::<f64>::from_element(n + 1, n + 1, inv_pi);
+        let (zs, ks, row_max) = &mut self.scratch;
+        let regular = &self.regular;
+        row_max.fill(inv_pi);
+        let (z_scale, k_scale) = (half / h, inv_pi * half / h);
+        let columns = a.as_mut_slice().chunks_exact_mut(n + 1);
+        for ((column, t), cauchy) in columns
+            .zip(nodes)
+            .zip(cauchy.as_slice().chunks_exact(n + 1))
+        {
+            for (z, xi) in zs.iter_mut().zip(points) {
+                *z = (t - xi) * z_scale;
+            }
+            regular(zs, ks);
+            for (((entry, c), k), big) in column
+                .iter_mut()
+                .zip(cauchy)
+                .zip(&*ks)
+                .zip(row_max.iter_mut())
+            {
+                *entry = c + k_scale * k;
+                *big = big.max(entry.abs());
+            }
+        }
+        let m = inputs.material.plane_modulus();
+        let (chi, tau0, r) = (
+            inputs.material.chi(),
+            inputs.friction.adhesion,
+            inputs.radius,
+        );
+        let adhesion = tau0 * r / (m * half);
+        let b = DVector::from_iterator(
+            n + 1,
+            points.iter().zip(&*row_max).map(|(&xi, big)| {
+                let ends = if tau0 == 0.0 {
+                    0.0
+                } else {
+                    self.kernels.chi_l12(half * (1.0 - xi) / h)
+                        + self.kernels.chi_l12(half * (1.0 + xi) / h)
+                };
+                (-xi * inv_pi - adhesion * (chi + ends * inv_pi)) / big
+            }),
+        );
+        for big in row_max.iter_mut() {
+            *big = 1.0 / *big;
+        }
+        for column in a.as_mut_slice().chunks_exact_mut(n + 1) {
+            for (entry, scale) in column.iter_mut().zip(&*row_max) {
+                *entry *= scale;
+            }
+        }
+        (a, b)
+    }
+
+    /// A first guess of the scaled unknowns at width l: the polynomial in l through the last
+    /// solutions (up to four, fewer where the extrapolation would amplify them more than 16 times:
+    /// the root finders' widths can be nearly equal), or the last one.
+    fn guess(&self, l: f64) -> Option<DVector<f64>> {
+        let newest = &self.history.first()?.1;
+        for count in (2..=self.history.len()).rev() {
+            let known = &self.history[..count];
+            let weights: Vec<f64> = (0..count)
+                .map(|j| {
+                    (0..count)
+                        .filter(|&k| k != j)
+                        .map(|k| (l - known[k].0) / (known[j].0 - known[k].0))
+                        .product()
+                })
+                .collect();
+            if weights.iter().map(|w| w.abs()).sum::<f64>() <= 16.0 {
+                let mut guess = newest * 0.0;
+                for (w, (_, y)) in weights.iter().zip(known) {
+                    guess.axpy(*w, y, 1.0);
+                }
+                return Some(guess);
+            }
+        }
+        Some(newest.clone())
+    }
+
+    /// The collocation at width l: refinement from the kept factors when it converges, else a new
+    /// factorization. None when the matrix is singular.
+    pub fn at(&mut self, l: f64) -> Option<Collocation> {
+        if let Some(last) = self.last.as_ref().filter(|c| c.l.to_bits() == l.to_bits()) {
+            return Some(last.clone());
+        }
+        let (a, b) = self.assemble(l);
+        let reused = match (&self.factors, self.guess(l)) {
+            (Some(factors), Some(guess)) => factors.refine(&a, &b, guess, self.tolerance),
+            _ => None,
+        };
+        let y = match reused {
+            Some((y, _)) => y,
+            None => {
+                let factors = Factors::new(a)?;
+                let y = factors.solve(&b)?;
+                self.factors = Some(factors);
+                y
+            }
+        };
+        self.history.truncate(3);
+        self.history.insert(0, (l, y.clone()));
+        let col = self.collocation(l, &y);
+        self.last = Some(col.clone());
+        Some(col)
+    }
+
+    fn collocation(&self, l: f64, y: &DVector<f64>) -> Collocation {
+        let inputs = &self.inputs;
+        let n = self.rules.len();
+        let (mu, tau0, r) = (
+            inputs.friction.coefficient,
+            inputs.friction.adhesion,
+            inputs.radius,
+        );
+        let half = 0.5 * l;
+        let p0 = inputs.material.plane_modulus() * half / r;
+        let c = half * y[n];
+        let rule = &self.rules.rule;
+        let (mut q2, mut moment) = (0.0, 0.0);
+        for (v, t) in y.iter().zip(&rule.nodes) {
+            q2 += p0 * v;
+            moment += p0 * v * (c + half * t);
+        }
+        let phi: Vec<f64> = y
+            .iter()
+            .zip(&rule.weights)
+            .map(|(v, w)| p0 * v / w)
+            .collect();
+        let (q2, psi) = (half * q2, half * moment / r);
+        let delta_g = l * c / r;
+        let bary_phi = self
+            .rules
+            .bary
+            .iter()
+            .zip(&phi)
+            .map(|(b, p)| b * p)
+            .collect();
+        Collocation {
+            l,
+            c,
+            theta: self.rules.theta,
+            phi,
+            q2,
+            psi,
+            delta_g,
+            load: q2 - mu * psi - tau0 * delta_g,
+            bary_phi,
+            rules: Arc::clone(&self.rules),
+        }
+    }
+}
