@@ -3,10 +3,13 @@
 mod common;
 
 use common::{hilbert, integrate_cos, plane, rel};
+use wearlab::physics::SolveError;
 use wearlab::physics::elastic::plane_modulus;
 use wearlab::physics::plane::energy::energy;
 use wearlab::physics::plane::narrow::winkler_beta;
-use wearlab::physics::plane::strip::{WideLimit, collocate, kernels_for, nodes_for, solve_with};
+use wearlab::physics::plane::strip::{
+    MAX_NODES, WideLimit, collocate, kernels_for, nodes_for, solve_with,
+};
 use wearlab::physics::plane::{Model, PlaneInputs, solve};
 
 fn table_inputs(h: f64, p: f64) -> PlaneInputs {
@@ -256,4 +259,64 @@ fn energy_identity_with_the_exact_kernels() {
     .unwrap();
     let en = energy(&sol);
     assert!(rel(en.i, en.j) < 1e-6, "{en:?}");
+}
+
+#[test]
+fn nearly_incompressible_layer_against_an_independent_boundary_element_width() {
+    // Issue 9: E = 2 MPa, nu = 0.49, h = 0.1 mm, R = 0.1 m, P = 1.86e4 N/m, no friction or wear;
+    // an independent FFT boundary-element code (converged to 1e-7) gives a = b = 2.276 mm.
+    let inp = plane(2e6, 0.49, 1e-4, 0.0, 0.0, 0.0, 0.1, 1.86e4);
+    let sol = solve(&inp, Model::Strip).unwrap();
+    assert!(
+        (sol.a - 2.276e-3).abs() < 0.5e-6 && (sol.b - 2.276e-3).abs() < 0.5e-6,
+        "a = {}, b = {}",
+        sol.a,
+        sol.b
+    );
+    // and N against 1.5 N at that width ((a+b)/h = 45.5)
+    let l = sol.contact_width();
+    let n = nodes_for(l / 1e-4);
+    let k = kernels_for(0.49);
+    let (a, b) = (
+        collocate(&inp, k.as_ref(), l, n).unwrap(),
+        collocate(&inp, k.as_ref(), l, n * 3 / 2).unwrap(),
+    );
+    assert!(rel(a.q2, b.q2) < 1e-8, "{} vs {}", a.q2, b.q2);
+}
+
+#[test]
+fn tends_to_winkler_less_a_fixed_edge_offset() {
+    // As (a+b)/h grows, L_Winkler - L tends to a constant (an edge effect of order h), so the
+    // strip's width joins the Winkler closed form like h/L, for every nu up to 0.49 (the offset
+    // grows as nu -> 1/2: 0.24 h at 0.3, -1.1 h at 0.45, -5.4 h at 0.49, where the layer is
+    // softer than Winkler's). E = 2 MPa, h = 0.1 mm, R = 0.1 m, no friction or wear.
+    for (nu, loads) in [(0.3, [1e2, 3e4]), (0.45, [1e3, 1e5]), (0.49, [1e4, 3e5])] {
+        let offsets = loads.map(|p| {
+            let inp = plane(2e6, nu, 1e-4, 0.0, 0.0, 0.0, 0.1, p);
+            let strip = solve(&inp, Model::Strip).unwrap().contact_width();
+            let winkler = solve(&inp, Model::Narrow).unwrap().contact_width();
+            ((winkler - strip) / 1e-4, strip / 1e-4)
+        });
+        let [(near, l_near), (far, l_far)] = offsets;
+        assert!(
+            l_far > 2.5 * l_near,
+            "nu = {nu}: (a+b)/h {l_near} to {l_far}"
+        );
+        assert!(
+            (far - near).abs() < 0.05 * far.abs(),
+            "nu = {nu}: offsets {near} h at {l_near} h, {far} h at {l_far} h"
+        );
+    }
+}
+
+#[test]
+fn a_contact_wider_than_the_model_resolves_is_an_error_not_a_number() {
+    // the strip preset's material at P = 1e8 N/m: (a+b)/h about 350 (Winkler), beyond the
+    // (MAX_NODES - 40)/4 = 242 thicknesses that MAX_NODES resolve
+    let err = solve(&table_inputs(1e-5, 1e8), Model::Strip).unwrap_err();
+    match err {
+        SolveError::NoSolution(why) => assert!(why.contains("wider than the strip model resolves")),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(MAX_NODES, nodes_for(242.0));
 }

@@ -225,7 +225,12 @@ fn search<'a>(
     };
     // refinement to 1e-10 suffices for the coarse stages (P within 1e-3)
     let system = |n: usize, tolerance: f64| {
-        RefCell::new(System::new(inputs, kernels, Rules::cached(theta, n), tolerance))
+        RefCell::new(System::new(
+            inputs,
+            kernels,
+            Rules::cached(theta, n),
+            tolerance,
+        ))
     };
     let load = |sys: &RefCell<System>, l: f64| sys.borrow_mut().at(l).map(|c| c.load);
     let (mut l, mut slope) = (start_width(inputs, p), 2.5);
@@ -253,7 +258,10 @@ fn search<'a>(
         });
         let start = start_width(inputs, p);
         let (lo, hi) = bracket(start, (0.5, 60), (1.5, 60), &coarse).ok_or_else(no_width)?;
-        l = brent_to(lo, hi.min(widest), 1e-4, &coarse).ok_or_else(no_width)?;
+        if hi > widest {
+            return Err(beyond());
+        }
+        l = brent_to(lo, hi, 1e-4, &coarse).ok_or_else(no_width)?;
     }
     if l >= widest * (1.0 - 1e-3) {
         return Err(beyond());
