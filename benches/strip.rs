@@ -8,11 +8,11 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use wearlab::physics::{Spacing, SweepRange};
 use wearlab::physics::plane::sweep::sweep;
 use wearlab::physics::plane::{Model, PlaneInputs, solve, strip};
 use wearlab::physics::quadrature::{gauss_jacobi, jacobi_zeros};
 use wearlab::physics::{Friction, Material};
+use wearlab::physics::{Spacing, SweepRange};
 
 fn inputs(mu: f64, load: f64) -> PlaneInputs {
     let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);

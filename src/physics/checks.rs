@@ -110,7 +110,7 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
                 .enumerate()
                 .fold((0, f64::INFINITY), |m, (i, v)| if v < m.1 { (i, v) } else { m });
             (lowest < -PRESSURE_ROUND_OFF * largest).then(|| {
-                let u = 0.5 * col.l * (1.0 + col.nodes[i]);
+                let u = 0.5 * col.l * (1.0 + col.nodes()[i]);
                 format!(
                     "the pressure is negative inside the contact (q2/w = {lowest:.3e} Pa at \
                      {u:.4e} m from the trailing edge, against a largest {largest:.3e} Pa): the \

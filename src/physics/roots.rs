@@ -208,6 +208,42 @@ pub fn march_up(
     })
 }
 
+/// The root of f(x) = target for a positive f that grows like a power of x, by the secant method
+/// on ln f against ln x from x0, the first step taken with `slope` (d ln f/d ln x) and each step
+/// at most a factor e. Stops when the step is below `rtol` relative, or below 1e-12 and no longer
+/// halving (round-off), after at most `max_evals` evaluations. Returns the root and the last slope;
+/// None when f fails (returns None, or a value that is not positive and finite), when the slope
+/// leaves [0.2, 20] (f not increasing like a power), or when it does not converge.
+pub fn secant_log(
+    mut f: impl FnMut(f64) -> Option<f64>,
+    target: f64,
+    x0: f64,
+    slope: f64,
+    rtol: f64,
+    max_evals: usize,
+) -> Option<(f64, f64)> {
+    let log = |v: f64| (v > 0.0 && v.is_finite()).then(|| v.ln());
+    let ln_target = log(target)?;
+    let (mut x, mut lf) = (x0, log(f(x0)?)?);
+    let (mut slope, mut last_step) = (slope, f64::INFINITY);
+    for _ in 1..max_evals {
+        let step = ((ln_target - lf) / slope).clamp(-1.0, 1.0);
+        if step.abs() <= rtol || (step.abs() <= 1e-12 && step.abs() > 0.5 * last_step) {
+            return Some((x * step.exp(), slope));
+        }
+        let x_new = x * step.exp();
+        let lf_new = log(f(x_new)?)?;
+        if step.abs() > 1e-8 {
+            slope = (lf_new - lf) / step;
+        }
+        if !(0.2..=20.0).contains(&slope) {
+            return None;
+        }
+        (x, lf, last_step) = (x_new, lf_new, step.abs());
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -273,40 +309,4 @@ mod tests {
             "one evaluation per distinct point"
         );
     }
-}
-
-/// The root of f(x) = target for a positive f that grows like a power of x, by the secant method
-/// on ln f against ln x from x0, the first step taken with `slope` (d ln f/d ln x) and each step
-/// at most a factor e. Stops when the step is below `rtol` relative, or below 1e-12 and no longer
-/// halving (round-off), after at most `max_evals` evaluations. Returns the root and the last slope;
-/// None when f fails (returns None, or a value that is not positive and finite), when the slope
-/// leaves [0.2, 20] (f not increasing like a power), or when it does not converge.
-pub fn secant_log(
-    mut f: impl FnMut(f64) -> Option<f64>,
-    target: f64,
-    x0: f64,
-    slope: f64,
-    rtol: f64,
-    max_evals: usize,
-) -> Option<(f64, f64)> {
-    let log = |v: f64| (v > 0.0 && v.is_finite()).then(|| v.ln());
-    let ln_target = log(target)?;
-    let (mut x, mut lf) = (x0, log(f(x0)?)?);
-    let (mut slope, mut last_step) = (slope, f64::INFINITY);
-    for _ in 1..max_evals {
-        let step = ((ln_target - lf) / slope).clamp(-1.0, 1.0);
-        if step.abs() <= rtol || (step.abs() <= 1e-12 && step.abs() > 0.5 * last_step) {
-            return Some((x * step.exp(), slope));
-        }
-        let x_new = x * step.exp();
-        let lf_new = log(f(x_new)?)?;
-        if step.abs() > 1e-8 {
-            slope = (lf_new - lf) / step;
-        }
-        if !(0.2..=20.0).contains(&slope) {
-            return None;
-        }
-        (x, lf, last_step) = (x_new, lf_new, step.abs());
-    }
-    None
 }

@@ -13,7 +13,6 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use crate::physics::{SolveError, SweepRange};
 use crate::physics::elastic::chi_c12;
 use crate::physics::plane::collocation::{Rules, System};
 use crate::physics::plane::kernels::StripKernels;
@@ -22,6 +21,7 @@ use crate::physics::plane::{
     Model, PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction,
 };
 use crate::physics::roots::{bracket, brent_to, secant_log};
+use crate::physics::{SolveError, SweepRange};
 
 pub use crate::physics::plane::collocation::Collocation;
 
@@ -193,6 +193,22 @@ fn memoized(f: impl Fn(f64) -> f64) -> impl Fn(f64) -> f64 {
     }
 }
 
+/// Why a width search failed.
+enum Missed {
+    /// The width is beyond what MAX_NODES resolve.
+    Beyond(SolveError),
+    /// Any other reason.
+    Failed(SolveError),
+}
+
+impl From<Missed> for SolveError {
+    fn from(missed: Missed) -> SolveError {
+        match missed {
+            Missed::Beyond(e) | Missed::Failed(e) => e,
+        }
+    }
+}
+
 /// The contact width at which the load is `p` to relative accuracy `rtol`, with the system that
 /// found it (its factors are those of a nearby width; its solutions by refinement accurate to
 /// `tolerance`). Stages of fixed node count: a secant on
@@ -205,23 +221,23 @@ fn search<'a>(
     kernels: &'a dyn Kernels,
     p: f64,
     (rtol, tolerance): (f64, f64),
-) -> Result<(f64, System<'a>), SolveError> {
+) -> Result<(f64, System<'a>), Missed> {
     const STAGES: usize = 4;
     const SECANT_EVALS: usize = 20;
     let h = inputs.material.thickness;
     let (_, _, theta) = exponent(inputs);
     let widest = widest(inputs);
     let no_width = || {
-        SolveError::NoSolution(format!(
+        Missed::Failed(SolveError::NoSolution(format!(
             "the strip model finds no contact width for P = {p:.4e} N/m"
-        ))
+        )))
     };
     let beyond = || {
-        SolveError::NoSolution(format!(
+        Missed::Beyond(SolveError::NoSolution(format!(
             "at P = {p:.4e} N/m the contact is wider than the strip model resolves ((a+b)/h > \
              {:.0} with at most {MAX_NODES} nodes); the narrow (Winkler) model is its limit there",
             widest / h
-        ))
+        )))
     };
     // refinement to 1e-10 suffices for the coarse stages (P within 1e-3)
     let system = |n: usize, tolerance: f64| {
@@ -276,9 +292,9 @@ fn search<'a>(
                 let fine = memoized(|l: f64| load(&sys, l).map_or(f64::NAN, |v| v - p));
                 let (lo, hi) = bracket(l, (0.995, 60), (1.005, 60), &fine).ok_or_else(no_width)?;
                 let root = brent_to(lo, hi, rtol, &fine).ok_or_else(|| {
-                    SolveError::NoSolution(format!(
+                    Missed::Failed(SolveError::NoSolution(format!(
                         "the contact width did not converge at P = {p:.4e} N/m"
-                    ))
+                    )))
                 })?;
                 (root, slope)
             }
@@ -335,9 +351,10 @@ pub fn solve_with(
     Ok(solution(inputs, col, Model::Strip))
 }
 
-/// The strip sweep by contact width: the widths of the end loads to 1e-6, then one collocation per
-/// width, spaced between them like the requested loads, each at the load it carries (None where
-/// the system is singular or the load is not positive). Neighbouring widths share node counts and
+/// The strip sweep by contact width: the widths of the end loads to 1e-6 (the widest width the
+/// model resolves when the heavier load needs more), then one collocation per width, spaced
+/// between them like the requested loads, each at the load it carries (None where the system is
+/// singular or the load is not positive). Neighbouring widths share node counts and
 /// factorizations, and the ends' searches lend theirs.
 pub fn sweep_by_width(
     inputs: &PlaneInputs,
@@ -353,7 +370,16 @@ pub fn sweep_by_width(
         )
     };
     let (l_min, low) = search_at(loads.min)?;
-    let (l_max, high) = search_at(loads.max)?;
+    // a heavier end than the model resolves: the sweep stops at the widest width it resolves
+    let (l_max, high) = match search_at(loads.max) {
+        Err(Missed::Beyond(_)) => {
+            let l = widest(inputs) * (1.0 - 1e-3);
+            let rules = Rules::cached(exponent(inputs).2, MAX_NODES);
+            let system = System::new(inputs, kernels.as_ref(), rules, SWEEP_TOLERANCE);
+            (l.max(l_min), system)
+        }
+        other => other?,
+    };
     let widths = loads.spacing.points(l_min, l_max, loads.points);
     Ok(solve_at_widths(
         inputs,
