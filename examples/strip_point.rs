@@ -23,54 +23,39 @@ fn main() {
     let reps: usize = args[7].parse().expect("a count");
     let cold = args.get(8).is_some_and(|a| a == "cold");
     let m = wearlab::physics::elastic::plane_modulus(e, nu);
+    let inputs = |coefficient: f64| PlaneInputs {
+        material: Material {
+            youngs_modulus: e,
+            poisson_ratio: nu,
+            thickness: h,
+        },
+        friction: Friction {
+            coefficient,
+            adhesion: 0.0,
+        },
+        wear: km / m,
+        radius: r,
+        load: p,
+    };
     strip::kernels_for(nu);
     let mut times: Vec<f64> = (0..reps)
         .map(|rep| {
+            // cold: a new theta, so new Gauss–Jacobi rules
             let coefficient = if cold {
                 mu * (1.0 + 1e-12 * (rep + 1) as f64)
             } else {
                 mu
             };
-            let inputs = PlaneInputs {
-                material: Material {
-                    youngs_modulus: e,
-                    poisson_ratio: nu,
-                    thickness: h,
-                },
-                friction: Friction {
-                    coefficient,
-                    adhesion: 0.0,
-                },
-                wear: km / m,
-                radius: r,
-                load: p,
-            };
+            let at = inputs(coefficient);
             let start = Instant::now();
-            let sol = solve(&inputs, Model::Strip).expect("the strip solves");
+            let sol = solve(&at, Model::Strip).expect("the strip solves");
             let seconds = start.elapsed().as_secs_f64();
             std::hint::black_box(sol);
             seconds
         })
         .collect();
     times.sort_by(f64::total_cmp);
-    let sol = solve(
-        &PlaneInputs {
-            material: Material {
-                youngs_modulus: e,
-                poisson_ratio: nu,
-                thickness: h,
-            },
-            friction: Friction {
-                coefficient: mu,
-                adhesion: 0.0,
-            },
-            wear: km / m,
-            radius: r,
-            load: p,
-        },
-        Model::Strip,
-    )
-    .expect("the strip solves");
+    let sol = solve(&inputs(mu), Model::Strip).expect("the strip solves");
     println!(
         "{} {} {}",
         times[reps / 2],
