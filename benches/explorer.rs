@@ -20,6 +20,7 @@ use wearlab::preset::bundled;
 mod tui {
     pub mod actions;
     pub mod app;
+    pub mod chart_keys;
     pub mod charts;
     pub mod effects;
     pub mod event_loop;
@@ -38,6 +39,7 @@ use tui::view::{RenderOptions, view};
 const OPTIONS: RenderOptions = RenderOptions {
     ascii: false,
     color: true,
+    truecolor: false,
 };
 
 /// Solves the commands' requests stage by stage and hands every answer to `update`.

@@ -67,7 +67,7 @@ fn wait_footer(text: &str) {
 }
 
 /// The main screen's footer of the plane problem at 80 columns.
-const PLANE_80: &str = "↑↓ field ←→ nudge ⏎ type Tab chart p problem m model o s e u ? help q quit";
+const PLANE_80: &str = "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y o s e/E u ? help q quit";
 
 fn resize(w: &str, h: &str) {
     tmux(&["resize-window", "-t", "e2e", "-x", w, "-y", h]);
@@ -107,22 +107,22 @@ fn a_session_in_tmux() {
     // the footers of both problems at 80 and 120 columns
     assert_eq!(footer(), PLANE_80);
     resize("120", "40");
-    wait_for("u undo  ? help  q quit");
+    wait_for("u undo ? help q quit");
     assert_eq!(
         footer(),
-        "↑↓ field  ←→ nudge (⇧ more)  ⏎ type  Tab chart  p problem  m model  o open  s save  e export  u undo  ? help  q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log o open s save e/E export u undo ? help q quit"
     );
     keys(&["p"]);
-    wait_for("space play +/- harmonic");
+    wait_for("space play  +/-");
     assert_eq!(
         footer(),
-        "↑↓ field ←→ nudge ⏎ type Tab chart p problem space play +/- harmonic o open s save e export u undo ? help q quit"
+        "↑↓  ←→ nudge  ⏎  Tab chart  p problem  space play  +/-  x cursor  c/C pin  f full  y log  o  s  e/E  u  ? help  q quit"
     );
     resize("80", "24");
-    wait_for("+/- harm o s e u");
+    wait_for("space +/- x c/C");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ type Tab chart p problem space play +/- harm o s e u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x c/C f y o s e/E u ? help q quit"
     );
     keys(&["u"]);
     wait_for("undo: problem spatial -> plane");

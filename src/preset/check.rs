@@ -105,7 +105,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         None if problem == Problem::Plane => return Err(missing("plane", "model, radius, load")),
         None => default_plane_section(),
     };
-    let spatial = match &file.spatial {
+    let (spatial, duration_given) = match &file.spatial {
         Some(sp) => ck.spatial(sp)?,
         None if problem == Problem::Spatial => {
             return Err(missing(
@@ -113,7 +113,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
                 "mean_pressure, sliding_speed, [[spatial.harmonics]]",
             ));
         }
-        None => default_spatial_section(),
+        None => (default_spatial_section(), false),
     };
     let mut preset = Preset {
         name: file.name,
@@ -126,6 +126,9 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         spatial,
         explore: None,
     };
+    if !duration_given {
+        preset.spatial.duration = preset.auto_duration();
+    }
     // the section that names keys and outputs is checked against the preset it belongs to
     if let Some(e) = &file.explore {
         preset.explore = Some(ck.explore(e, &preset)?);
@@ -201,7 +204,11 @@ impl Checker<'_> {
         })
     }
 
-    fn spatial(&self, spatial: &Spanned<FileSpatial>) -> Result<SpatialSection, PresetError> {
+    /// The `[spatial]` section, and whether it gives a duration.
+    fn spatial(
+        &self,
+        spatial: &Spanned<FileSpatial>,
+    ) -> Result<(SpatialSection, bool), PresetError> {
         let sp = spatial.get_ref();
         let mean_pressure =
             self.value(&sp.mean_pressure, "mean_pressure", &limits::MEAN_PRESSURE)?;
@@ -249,15 +256,19 @@ impl Checker<'_> {
                 why.trim_start_matches("invalid input: "),
             )
         })?;
-        Ok(SpatialSection {
+        let section = SpatialSection {
             mean_pressure,
             sliding_speed: self.value(&sp.sliding_speed, "sliding_speed", &limits::SPEED)?,
             time: self.value(&sp.time, "time", &limits::TIME)?,
-            duration: self.value(&sp.duration, "duration", &limits::DURATION)?,
+            duration: match &sp.duration {
+                Some(d) => self.value(d, "duration", &limits::DURATION)?,
+                None => default_spatial_section().duration,
+            },
             grid,
             sweep,
             harmonics,
-        })
+        };
+        Ok((section, sp.duration.is_some()))
     }
 }
 

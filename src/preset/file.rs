@@ -83,18 +83,15 @@ pub(super) struct FileSpatial {
     pub(super) sliding_speed: Spanned<f64>,
     #[serde(default = "zero")]
     pub(super) time: Spanned<f64>,
-    #[serde(default = "default_duration")]
-    pub(super) duration: Spanned<f64>,
+    /// Absent: five of the slowest decay times (`Preset::auto_duration`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) duration: Option<Spanned<f64>>,
     #[serde(default = "default_grid")]
     pub(super) grid: Spanned<i64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FilePressureSweep>>,
     #[serde(default)]
     pub(super) harmonics: Vec<Spanned<FileHarmonic>>,
-}
-
-fn default_duration() -> Spanned<f64> {
-    plain(default_spatial_section().duration)
 }
 
 fn default_grid() -> Spanned<i64> {
@@ -178,7 +175,7 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
         mean_pressure: plain(sp.mean_pressure),
         sliding_speed: plain(sp.sliding_speed),
         time: plain(sp.time),
-        duration: plain(sp.duration),
+        duration: Some(plain(sp.duration)),
         grid: plain(sp.grid as i64),
         sweep: Some(plain(FilePressureSweep {
             pressure_min: plain(sp.sweep.min),

@@ -73,7 +73,7 @@ pub struct SpatialSection {
     pub sliding_speed: f64,
     /// The instant shown t [s].
     pub time: f64,
-    /// Extent of the time charts [s].
+    /// Extent of the time charts [s]; a file without one gets `Preset::auto_duration`.
     pub duration: f64,
     /// Points per side of the field grid.
     pub grid: usize,
@@ -129,6 +129,23 @@ impl Preset {
             sliding_speed: self.spatial.sliding_speed,
             mean_pressure: self.spatial.mean_pressure,
             harmonics: self.spatial.harmonics.clone(),
+        }
+    }
+
+    /// The duration [s] of a preset that gives none: five of the slowest decay times 1/beta
+    /// (`docs/physics/spatial.md`, section 3), so that the time charts show the run-in; the
+    /// default section's 200 s when nothing decays (no wear); within `limits::DURATION`.
+    pub fn auto_duration(&self) -> f64 {
+        let slowest = crate::physics::spatial::evolutions(&self.spatial_inputs())
+            .iter()
+            .map(|e| e.decay_rate)
+            .filter(|b| b.is_finite() && *b > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if slowest.is_finite() {
+            let d = &crate::physics::limits::DURATION;
+            (5.0 / slowest).clamp(d.min, d.max)
+        } else {
+            default_spatial_section().duration
         }
     }
 

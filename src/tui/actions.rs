@@ -4,6 +4,8 @@ use wearlab::physics::spatial::harmonic::Harmonic;
 use wearlab::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
+use crate::tui::chart_keys;
+use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
@@ -29,6 +31,8 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             set(app, value)
         }
         Action::Edit => {
+            // typing needs the form
+            app.ui.expanded = false;
             let row = app.row();
             match row.param().choices() {
                 Some(_) => {
@@ -100,7 +104,14 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.say("save as: a name (saved in your preset folder) or a path, e.g. ~/lab.toml");
             Vec::new()
         }
-        Action::Export => export(app, app.ui.chart),
+        Action::Export => export(app, app.ui.chart, Format::Csv),
+        Action::ExportSvg => export(app, app.ui.chart, Format::Svg),
+        Action::Cursor
+        | Action::MoveCursor(_)
+        | Action::Pin
+        | Action::ClearPins
+        | Action::Expand
+        | Action::LogY => chart_keys::act(app, action),
         Action::Undo => match app.doc.undo.pop() {
             Some((previous, change)) => {
                 app.doc.preset = previous;
@@ -145,6 +156,10 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     let previous = std::mem::replace(&mut app.doc.preset, next);
     // a notice about an earlier step no longer applies
     app.ui.message = None;
+    if app.ui.expanded {
+        // the form is hidden: say what changed
+        app.say(format!("{}: {} -> {}", change.name, change.from, change.to));
+    }
     app.doc.undo.push((previous, change));
     if app.doc.undo.len() > UNDO_DEPTH {
         app.doc.undo.remove(0);
@@ -187,20 +202,37 @@ pub fn quit(app: &mut App) -> Vec<Command> {
     }
 }
 
-/// Exports `chart` as drawn; waits for its result while it has none.
-pub fn export(app: &mut App, chart: Chart) -> Vec<Command> {
-    let Some(answer) = &app.solve.shown else {
-        app.ui.export_waiting = Some(chart);
+/// Exports `chart` as drawn, as CSV or SVG; waits for its result while it has none.
+pub fn export(app: &mut App, chart: Chart, format: Format) -> Vec<Command> {
+    let wait = |app: &mut App| {
+        app.ui.export_waiting = Some((chart, format));
         app.say("the export waits for the chart's result (solving…)");
-        return Vec::new();
+        Vec::new()
     };
-    match csv::csv(chart, answer) {
-        Ok(text) => vec![Command::Export(csv::file_name(chart).into(), text)],
-        Err(NoFigure::Solving) => {
-            app.ui.export_waiting = Some(chart);
-            app.say("the export waits for the chart's result (solving…)");
-            Vec::new()
+    let Some(answer) = &app.solve.shown else {
+        return wait(app);
+    };
+    let text = match format {
+        Format::Csv => csv::csv(chart, answer),
+        Format::Svg => {
+            let pins = app.ui.pins_of(chart);
+            let now = &answer.request.preset;
+            let pinned = pins
+                .iter()
+                .map(|p| (p.plots.as_slice(), p.name(now)))
+                .collect();
+            let toggled = app.ui.log_y.contains(&chart);
+            let scale = app.ui.heat_scale_for(&answer.request.preset);
+            csv::svg(chart, answer, pinned, toggled, scale)
         }
+    };
+    match text {
+        Ok(text) => vec![Command::Export {
+            path: csv::file_name(chart, format).into(),
+            text,
+            overwrite: false,
+        }],
+        Err(NoFigure::Solving) => wait(app),
         Err(NoFigure::Error(why)) => {
             app.complain(format!("nothing to export: {why}"));
             Vec::new()

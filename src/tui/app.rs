@@ -7,6 +7,7 @@ use ratatui::crossterm::event::KeyEvent;
 use wearlab::engine::{Answer, Request};
 use wearlab::preset::{Preset, Problem, SaveTarget};
 
+use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
 
@@ -77,6 +78,8 @@ pub enum Mode {
     SaveAs(String),
     /// The file exists: overwrite?
     ConfirmOverwrite(SaveTarget),
+    /// The export's file exists: overwrite? (the file, the text to write)
+    ConfirmExport(Box<(PathBuf, String)>),
     /// Unsaved edits: open this preset anyway?
     ConfirmOpen(Box<PickerEntry>),
     /// Unsaved edits: quit anyway? (No goes back to the mode it was asked from.)
@@ -109,17 +112,38 @@ pub struct Ui {
     pub message: Option<Message>,
     /// Time is playing (spatial).
     pub playing: bool,
-    /// A chart waiting for its current result to be exported.
-    pub export_waiting: Option<Chart>,
+    /// A chart waiting for its current result to be exported, and how.
+    pub export_waiting: Option<(Chart, Format)>,
     /// The cursor of the readout, as a fraction of the chart's x range (None: off).
     pub cursor: Option<f64>,
     /// Curves pinned for comparison, oldest first.
     pub pins: Vec<Pin>,
+    /// The chart has the whole screen but the status.
+    pub expanded: bool,
     /// The charts whose y axis is toggled (log, symmetric log, or back to linear).
     pub log_y: Vec<Chart>,
+    /// The pressure map's colour scale over the times seen of one set of inputs.
+    pub heat_scale: Option<HeatScale>,
+}
+
+/// A colour scale kept while only the time changes, so that a decay shows as fading colours.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeatScale {
+    /// The inputs it belongs to, at t = 0.
+    pub inputs: Preset,
+    /// The lowest and highest pressure seen [Pa].
+    pub range: [f64; 2],
 }
 
 impl Ui {
+    /// The kept colour scale of the map drawn for these inputs, if it is theirs.
+    pub fn heat_scale_for(&self, preset: &Preset) -> Option<[f64; 2]> {
+        let s = self.heat_scale.as_ref()?;
+        let mut at_zero = preset.clone();
+        at_zero.spatial.time = 0.0;
+        (s.inputs == at_zero).then_some(s.range)
+    }
+
     /// The pins of a chart, oldest first.
     pub fn pins_of(&self, chart: Chart) -> Vec<&Pin> {
         self.pins.iter().filter(|p| p.chart == chart).collect()
@@ -175,6 +199,8 @@ pub enum Msg {
     SaveExists(SaveTarget),
     /// A save finished: the preset written, or why not.
     Saved(SaveTarget, Box<Preset>, Result<(), String>),
+    /// An export needs confirmation: the file exists (the file, the text to write).
+    ExportExists(PathBuf, String),
     /// An export finished: the file, or why not.
     Exported(PathBuf, Result<(), String>),
 }
@@ -196,8 +222,16 @@ pub enum Command {
         /// Replace an existing file.
         overwrite: bool,
     },
-    /// Write this text to this file, answered by `Exported`.
-    Export(PathBuf, String),
+    /// Write this text to this file; refuse an existing file unless `overwrite`. Answered by
+    /// `Exported` or `ExportExists`.
+    Export {
+        /// Where.
+        path: PathBuf,
+        /// What.
+        text: String,
+        /// Replace an existing file.
+        overwrite: bool,
+    },
     /// Leave.
     Quit,
 }
@@ -238,7 +272,9 @@ impl App {
                 export_waiting: None,
                 cursor: None,
                 pins: Vec::new(),
+                expanded: false,
                 log_y: Vec::new(),
+                heat_scale: None,
             },
             doc: Document {
                 preset,

@@ -67,8 +67,11 @@ pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool) -> Msg {
     Msg::Saved(target, preset, result)
 }
 
-/// Writes an export atomically.
-pub fn export(path: PathBuf, text: &str) -> Msg {
+/// Writes an export atomically; asks about an existing file unless `overwrite`.
+pub fn export(path: PathBuf, text: String, overwrite: bool) -> Msg {
+    if !overwrite && path.exists() {
+        return Msg::ExportExists(path, text);
+    }
     let written = preset::write_atomically(&path, |f| f.write_all(text.as_bytes()));
     let result = written.map_err(|e| e.to_string());
     Msg::Exported(path, result)

@@ -16,8 +16,9 @@ use crate::tui::effects;
 use crate::tui::update::update;
 use crate::tui::view::{RenderOptions, view};
 
-/// How often time advances while playing.
-pub const FRAME: Duration = Duration::from_millis(100);
+/// How often time advances while playing: five frames a second, so that the pressure map
+/// writes well under 60 KB/s to a terminal over SSH (README, "Speed"; tests/bytes.rs).
+pub const FRAME: Duration = Duration::from_millis(200);
 
 /// What wakes the loop.
 #[derive(Debug)]
@@ -129,7 +130,11 @@ impl<B: Backend> Loop<B> {
                         preset,
                         overwrite,
                     } => effects::save(target, preset, overwrite),
-                    Command::Export(path, text) => effects::export(path, &text),
+                    Command::Export {
+                        path,
+                        text,
+                        overwrite,
+                    } => effects::export(path, text, overwrite),
                     Command::Quit => return false,
                 };
                 reports.push(report);

@@ -36,6 +36,20 @@ pub enum Action {
     Save,
     /// Export the visible chart as CSV.
     Export,
+    /// Export the visible chart as an SVG figure.
+    ExportSvg,
+    /// Show or hide the cursor readout.
+    Cursor,
+    /// Move the cursor by this many data points (negative: left).
+    MoveCursor(i32),
+    /// Pin the visible chart's curves.
+    Pin,
+    /// Clear the visible chart's pins.
+    ClearPins,
+    /// Give the chart the whole screen, or give it back.
+    Expand,
+    /// Toggle the y axis between linear and logarithmic.
+    LogY,
     /// Undo the last change.
     Undo,
     /// Show the help.
@@ -43,43 +57,6 @@ pub enum Action {
     /// Quit (asks when there are unsaved edits).
     Quit,
 }
-
-/// Every action, for the test that each one is bound.
-#[cfg(test)]
-pub const ACTIONS: [Action; 20] = [
-    Action::PrevField,
-    Action::NextField,
-    Action::Nudge {
-        up: false,
-        large: false,
-    },
-    Action::Nudge {
-        up: true,
-        large: false,
-    },
-    Action::Nudge {
-        up: false,
-        large: true,
-    },
-    Action::Nudge {
-        up: true,
-        large: true,
-    },
-    Action::Edit,
-    Action::NextChart,
-    Action::PrevChart,
-    Action::SwitchProblem,
-    Action::CycleModel,
-    Action::PlayPause,
-    Action::AddHarmonic,
-    Action::RemoveHarmonic,
-    Action::Open,
-    Action::Save,
-    Action::Export,
-    Action::Undo,
-    Action::Help,
-    Action::Quit,
-];
 
 /// A key with the modifiers that matter: Shift for non-character keys, Ctrl for letters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -174,12 +151,12 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 14] = [
+pub const BINDINGS: [Binding; 18] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
         "Up/Down, k/j", "choose a field",
-        ("↑↓", "field", "", 4), None,
+        ("↑↓", "field", "", 2), None,
     ),
     binding(
         &[(key(KeyCode::Left), nudge(false, false)), (ch('h'), nudge(false, false)),
@@ -192,7 +169,7 @@ pub const BINDINGS: [Binding; 14] = [
     binding(
         &[(key(KeyCode::Enter), Action::Edit)],
         "Enter", "type a value (3e9, 3 GPa, 50mm, inf) or pick a choice; Esc cancels",
-        ("⏎", "type", "type", 0), None,
+        ("⏎", "type", "", 4), None,
     ),
     binding(
         &[(key(KeyCode::Tab), Action::NextChart), (key(KeyCode::BackTab), Action::PrevChart),
@@ -203,42 +180,64 @@ pub const BINDINGS: [Binding; 14] = [
     binding(
         &[(ch('p'), Action::SwitchProblem)],
         "p", "switch plane / spatial problem (a preset holds both)",
-        ("p", "problem", "problem", 0), None,
+        ("p", "problem", "", 8), None,
     ),
     binding(
         &[(ch('m'), Action::CycleModel)],
         "m", "cycle the plane model (wide, narrow, strip)",
-        ("m", "model", "model", 0), Some(Problem::Plane),
+        ("m", "model", "", 6), Some(Problem::Plane),
     ),
     binding(
         &[(ch(' '), Action::PlayPause)],
         "space", "play / pause time",
-        ("space", "play", "play", 0), Some(Problem::Spatial),
+        ("space", "play", "", 6), Some(Problem::Spatial),
     ),
     binding(
         &[(ch('+'), Action::AddHarmonic), (ch('-'), Action::RemoveHarmonic)],
         "+ / -", "add a harmonic / remove the selected one (or the last)",
-        ("+/-", "harmonic", "harm", 3), Some(Problem::Spatial),
+        ("+/-", "harmonic", "", 3), Some(Problem::Spatial),
+    ),
+    binding(
+        &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(-1)),
+          (ch(']'), Action::MoveCursor(1)), (ch('{'), Action::MoveCursor(-10)),
+          (ch('}'), Action::MoveCursor(10))],
+        "x, [ ], { }", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten; the status gives x and every curve's value there",
+        ("x", "cursor", "", 7), None,
+    ),
+    binding(
+        &[(ch('c'), Action::Pin), (ch('C'), Action::ClearPins)],
+        "c, C", "pin the chart's curves to compare with later edits (up to three, drawn dim with their number, named by what differs); C clears the chart's pins",
+        ("c/C", "pin", "", 7), None,
+    ),
+    binding(
+        &[(ch('f'), Action::Expand)],
+        "f", "give the chart the whole screen (the status stays); f again gives it back",
+        ("f", "full", "", 7), None,
+    ),
+    binding(
+        &[(ch('y'), Action::LogY)],
+        "y", "toggle a log y axis (symmetric log, linear near zero, where values have both signs)",
+        ("y", "log", "", 7), None,
     ),
     binding(
         &[(ch('o'), Action::Open)],
         "o", "open a preset: bundled or your folder (asks first when there are unsaved edits)",
-        ("o", "open", "", 2), None,
+        ("o", "open", "", 5), None,
     ),
     binding(
         &[(ch('s'), Action::Save)],
         "s", "save the preset (asks a name; asks before overwriting)",
-        ("s", "save", "", 2), None,
+        ("s", "save", "", 5), None,
     ),
     binding(
-        &[(ch('e'), Action::Export)],
-        "e", "export the visible chart's data as CSV, headed by its parameters",
-        ("e", "export", "", 2), None,
+        &[(ch('e'), Action::Export), (ch('E'), Action::ExportSvg)],
+        "e, E", "export the visible chart: e its data as CSV (parameters in a header, units in the column names), E a figure as SVG (axes, legend, parameters); both ask before overwriting",
+        ("e/E", "export", "", 5), None,
     ),
     binding(
         &[(ch('u'), Action::Undo)],
         "u", "undo the last change (says what it undid)",
-        ("u", "undo", "", 2), None,
+        ("u", "undo", "", 5), None,
     ),
     binding(
         &[(ch('?'), Action::Help)],

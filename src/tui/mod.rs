@@ -4,6 +4,7 @@
 
 pub mod actions;
 pub mod app;
+pub mod chart_keys;
 pub mod charts;
 pub mod effects;
 pub mod event_loop;
@@ -48,6 +49,7 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
     let render = RenderOptions {
         ascii: options.ascii,
         color: std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
+        truecolor: std::env::var("COLORTERM").is_ok_and(|v| v == "truecolor" || v == "24bit"),
     };
     let places = Places {
         home: dirs::home_dir(),

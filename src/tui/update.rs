@@ -8,6 +8,7 @@ use wearlab::preset::{Problem, resolve_save_path};
 
 use crate::tui::actions::{act, apply, export, open, quit};
 use crate::tui::app::{App, Command, Mode, Msg};
+use crate::tui::chart_keys;
 use crate::tui::keys::{self, Prompt, PromptAction};
 
 /// Changes the model for one message; returns what the loop must do.
@@ -37,6 +38,10 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
                 }
                 Err(why) => app.complain(format!("not saved: {why}")),
             }
+            Vec::new()
+        }
+        Msg::ExportExists(path, text) => {
+            app.ui.mode = Mode::ConfirmExport(Box::new((path, text)));
             Vec::new()
         }
         Msg::Exported(path, result) => {
@@ -72,11 +77,12 @@ fn on_answer(app: &mut App, answer: Answer) -> Vec<Command> {
     });
     if newer {
         app.solve.shown = Some(answer);
+        chart_keys::keep_heat_scale(app);
     }
     match app.ui.export_waiting {
-        Some(chart) if !app.solve.solving() => {
+        Some((chart, format)) if !app.solve.solving() => {
             app.ui.export_waiting = None;
-            export(app, chart)
+            export(app, chart, format)
         }
         _ => Vec::new(),
     }
@@ -183,6 +189,20 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 }]
             } else {
                 app.say("not saved");
+                Vec::new()
+            }
+        }
+        Mode::ConfirmExport(file) => {
+            app.ui.mode = Mode::Normal;
+            if yes(&key) {
+                let (path, text) = *file;
+                vec![Command::Export {
+                    path,
+                    text,
+                    overwrite: true,
+                }]
+            } else {
+                app.say("not exported: the file stays as it was");
                 Vec::new()
             }
         }

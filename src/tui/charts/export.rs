@@ -1,36 +1,73 @@
-//! The CSV export of a chart: exactly the figure the view draws, headed by the parameters it was
-//! computed from (the answered request's preset as TOML, in comment lines).
+//! The exports of a chart: its data as CSV (`e`) and a figure as SVG (`E`), both exactly the
+//! figure the view draws, both naming the parameters they were computed from (the answered
+//! request's preset): the CSV in comment lines (TOML), the SVG in its caption.
 
 use wearlab::engine::Answer;
-use wearlab::preset::to_toml;
+use wearlab::preset::{Preset, to_toml};
 
-use crate::tui::charts::{Chart, Figure, NoFigure};
+use crate::tui::charts::svg::{Page, svg as draw_svg};
+use crate::tui::charts::{Axis, Chart, Figure, NoFigure, Plot};
+use crate::tui::form;
 
-/// The file name of a chart's export: `wearlab-<title words>.csv`.
-pub fn file_name(chart: Chart) -> String {
+/// What an export writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// The data, as CSV.
+    Csv,
+    /// A figure, as SVG.
+    Svg,
+}
+
+/// The file name of a chart's export: `wearlab-<title words>.csv` (or `.svg`).
+pub fn file_name(chart: Chart, format: Format) -> String {
     let stem = chart
         .title()
         .split(|c: char| !c.is_ascii_alphanumeric())
         .filter(|w| !w.is_empty())
         .collect::<Vec<_>>()
         .join("-");
-    format!("wearlab-{stem}.csv")
+    let ext = match format {
+        Format::Csv => "csv",
+        Format::Svg => "svg",
+    };
+    format!("wearlab-{stem}.{ext}")
 }
 
-/// The CSV text of the figure drawn for `chart` from `answer`.
+/// A column name with its unit: "x [m]", "mu* [-]" for a pure number.
+fn column(axis: &Axis) -> String {
+    match axis.unit {
+        "" => format!("{} [-]", axis.label),
+        u => format!("{} [{u}]", axis.label),
+    }
+}
+
+/// A CSV field, quoted when it holds a comma or a quote.
+fn field(text: &str) -> String {
+    if text.contains([',', '"']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// The CSV text of the figure drawn for `chart` from `answer`: comment lines with the chart and
+/// the preset (TOML), then a header with units, then the rows. A plot figure has one row per
+/// point: the curve's name, then its x and y in the columns of its axes (plots that share an
+/// axis share its column).
 pub fn csv(chart: Chart, answer: &Answer) -> Result<String, NoFigure> {
     let figure = chart.build(answer)?;
-    let mut out = format!(
-        "# wearlab: {}\n# computed from these parameters (preset, TOML):\n",
-        chart.title()
-    );
+    let mut out = format!("# wearlab: {}\n", chart.title());
+    let preset = &answer.request.preset;
+    for line in caption(preset, 100) {
+        out.push_str(&format!("# {line}\n"));
+    }
+    out.push_str("# computed from these parameters (preset, TOML, SI units):\n");
     for line in to_toml(&answer.request.preset).lines() {
         out.push_str(&format!("#   {line}\n"));
     }
     match figure {
         Figure::Map(m) => {
-            out.push_str(&format!("# x [m], y [m], {} [{}]\n", m.name, m.unit));
-            out.push_str(&format!("x,y,{}\n", m.name));
+            out.push_str(&format!("x [m],y [m],{} [{}]\n", m.name, m.unit));
             for (j, y) in m.y.iter().enumerate() {
                 for (i, x) in m.x.iter().enumerate() {
                     let v = m.values[j * m.x.len() + i];
@@ -39,25 +76,76 @@ pub fn csv(chart: Chart, answer: &Answer) -> Result<String, NoFigure> {
             }
         }
         Figure::Plots(plots) => {
-            for (n, p) in plots.iter().enumerate() {
-                out.push_str(&format!(
-                    "# plot {}: x = {} [{}], y = {} [{}]\n",
-                    n + 1,
-                    p.x.label,
-                    p.x.unit,
-                    p.y.label,
-                    p.y.unit
-                ));
-            }
-            out.push_str("plot,curve,x,y\n");
-            for (n, p) in plots.iter().enumerate() {
+            let mut columns: Vec<String> = Vec::new();
+            let mut at = |name: String| match columns.iter().position(|c| *c == name) {
+                Some(i) => i,
+                None => {
+                    columns.push(name);
+                    columns.len() - 1
+                }
+            };
+            let places: Vec<(usize, usize)> = plots
+                .iter()
+                .map(|p| (at(column(&p.x)), at(column(&p.y))))
+                .collect();
+            let header: Vec<String> = columns.iter().map(|c| field(c)).collect();
+            out.push_str(&format!("curve,{}\n", header.join(",")));
+            for (p, (xc, yc)) in plots.iter().zip(places) {
                 for s in p.series.iter().chain(&p.markers) {
                     for (x, y) in &s.points {
-                        out.push_str(&format!("{},{},{x:e},{y:e}\n", n + 1, s.name));
+                        let mut row = vec![String::new(); columns.len()];
+                        row[xc] = format!("{x:e}");
+                        row[yc] = format!("{y:e}");
+                        out.push_str(&format!("{},{}\n", field(&s.name), row.join(",")));
                     }
                 }
             }
         }
     }
     Ok(out)
+}
+
+/// The caption of a figure: the preset's name, then its parameters as the form shows them
+/// (with units), in lines of at most `width` characters.
+pub fn caption(preset: &Preset, width: usize) -> Vec<String> {
+    let rows = form::rows(preset);
+    let items: Vec<String> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let sep = if i + 1 < rows.len() { "," } else { "" };
+            format!("{} = {}{sep}", r.symbol(), form::show(preset, r))
+        })
+        .collect();
+    let mut lines = vec![format!(
+        "{} ({} problem)",
+        preset.name,
+        preset.problem.name()
+    )];
+    lines.extend(
+        crate::tui::view::status::pack(&items, width, "")
+            .into_iter()
+            .map(|l| l.replace(",  ", ", ")),
+    );
+    lines
+}
+
+/// The SVG of the figure drawn for `chart` from `answer`, with the pins (their plots and legend
+/// names), the y axes toggled or not, and a map's colour scale.
+pub fn svg(
+    chart: Chart,
+    answer: &Answer,
+    pins: Vec<(&[Plot], String)>,
+    toggled: bool,
+    scale: Option<[f64; 2]>,
+) -> Result<String, NoFigure> {
+    let figure = chart.build(answer)?;
+    let page = Page {
+        title: chart.title(),
+        caption: caption(&answer.request.preset, 130),
+        pins,
+        toggled,
+        scale,
+    };
+    draw_svg(&figure, &page).map_err(NoFigure::Error)
 }

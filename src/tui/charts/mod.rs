@@ -4,9 +4,12 @@
 //! is one variant and one arm of its problem's `def` (title, help, builder).
 
 pub mod export;
+pub mod palette;
 mod plane;
 pub mod range;
+pub mod readout;
 mod spatial;
+pub mod svg;
 pub mod ticks;
 
 use wearlab::engine::{Answer, Output, PlaneOutput, SpatialOutput};

@@ -147,3 +147,38 @@ pub fn frames<'a>(plots: &'a [Plot], pins: &[&'a [Plot]], toggled: bool) -> Vec<
         })
         .collect()
 }
+
+/// Liang-Barsky: the part of segment a-b inside the rectangle xs x ys, if any.
+pub fn clip(
+    a: (f64, f64),
+    b: (f64, f64),
+    xs: [f64; 2],
+    ys: [f64; 2],
+) -> Option<((f64, f64), (f64, f64))> {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, a.0 - xs[0]),
+        (dx, xs[1] - a.0),
+        (-dy, a.1 - ys[0]),
+        (dy, ys[1] - a.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    let finite = [a.0, a.1, b.0, b.1].iter().all(|v| v.is_finite());
+    (t0 <= t1 && finite).then_some((
+        (a.0 + t0 * dx, a.1 + t0 * dy),
+        (a.0 + t1 * dx, a.1 + t1 * dy),
+    ))
+}

@@ -47,7 +47,7 @@ pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, No
         values: f.pressure.clone(),
         unit: "Pa",
         caption: format!(
-            "p(x, y) over {} x {}   x ->, sliding of the layer <-",
+            "One period cell, {} (x, to the right) by {} (y); the layer slides to -x.",
             format_si(cell.lx, "m"),
             format_si(cell.ly, "m")
         ),

@@ -119,16 +119,60 @@ fn s_starts_an_empty_prompt_and_never_overwrites_without_asking() {
 fn e_exports_the_visible_chart_and_reports_where() {
     let mut app = solved("polymer-coating.toml");
     let cmds = press(&mut app, KeyCode::Char('e'));
-    let [Command::Export(path, text)] = cmds.as_slice() else {
-        panic!("{cmds:?}")
-    };
+    let (path, text) = exported(&cmds);
     assert_eq!(path.to_str(), Some("wearlab-pressure-and-shear.csv"));
-    assert!(text.contains("\n1,pressure q2,"));
+    assert!(text.contains("\npressure q2,"));
     update(&mut app, Msg::Exported(path.clone(), Ok(())));
     assert_eq!(
         message(&app),
         "exported the chart to wearlab-pressure-and-shear.csv"
     );
+}
+
+#[test]
+fn an_export_never_overwrites_a_file_without_asking() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("wearlab-pressure-and-shear.svg");
+    std::fs::write(&path, "mine").unwrap();
+    let mut app = solved("polymer-coating.toml");
+    let cmds = press(&mut app, KeyCode::Char('E'));
+    let [Command::Export { text, .. }] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    // the loop's I/O finds the file and asks
+    let report = crate::tui::effects::export(path.clone(), text.clone(), false);
+    update(&mut app, report);
+    assert!(matches!(app.ui.mode, Mode::ConfirmExport(_)));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(
+        s.contains("wearlab-pressure-and-shear.svg exists: overwrite? y/n"),
+        "{s}"
+    );
+    press(&mut app, KeyCode::Char('n'));
+    assert_eq!(message(&app), "not exported: the file stays as it was");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "mine");
+    // asked again, yes writes it
+    update(
+        &mut app,
+        crate::tui::effects::export(path.clone(), text.clone(), false),
+    );
+    let cmds = press(&mut app, KeyCode::Char('y'));
+    let [
+        Command::Export {
+            path: p,
+            text: t,
+            overwrite: true,
+        },
+    ] = cmds.as_slice()
+    else {
+        panic!("{cmds:?}")
+    };
+    update(
+        &mut app,
+        crate::tui::effects::export(p.clone(), t.clone(), true),
+    );
+    assert!(std::fs::read_to_string(&path).unwrap().starts_with("<svg"));
+    assert!(message(&app).starts_with("exported the chart to"));
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! help, footer and README, the charts' export against their builders, results labelled by their
 //! own inputs, the loop, and screen snapshots (TestBackend + insta).
 
+mod bytes;
 mod charts;
 mod files;
 mod keys;
@@ -96,6 +97,20 @@ fn solved(file: &str) -> App {
     app
 }
 
+/// The file and text of the one export command among `cmds`, which must not overwrite.
+fn exported(cmds: &[Command]) -> (&std::path::PathBuf, &String) {
+    match cmds {
+        [
+            Command::Export {
+                path,
+                text,
+                overwrite: false,
+            },
+        ] => (path, text),
+        _ => panic!("{cmds:?}"),
+    }
+}
+
 fn screen(app: &App, w: u16, h: u16, options: RenderOptions) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     terminal.draw(|f| view(app, options, f)).unwrap();
@@ -105,4 +120,5 @@ fn screen(app: &App, w: u16, h: u16, options: RenderOptions) -> String {
 const PLAIN: RenderOptions = RenderOptions {
     ascii: false,
     color: false,
+    truecolor: false,
 };

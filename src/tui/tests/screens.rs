@@ -9,6 +9,7 @@ use crate::tui::view::popups::help_lines;
 const ASCII: RenderOptions = RenderOptions {
     ascii: true,
     color: false,
+    truecolor: false,
 };
 
 #[test]
@@ -121,4 +122,43 @@ fn the_help_explains_every_status_symbol_of_both_problems() {
             }
         }
     }
+}
+
+/// The chart modes of issue 11, each at 80x24 and 120x40.
+fn both(name: &str, app: &App, style: RenderOptions) {
+    insta::assert_snapshot!(format!("{name}_80x24"), screen(app, 80, 24, style));
+    insta::assert_snapshot!(format!("{name}_120x40"), screen(app, 120, 40, style));
+}
+
+#[test]
+fn cursor_pin_expand_log_y_and_ascii_markers() {
+    // the cursor, three points right of the middle: the status reads both curves there
+    let mut app = solved("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('x'));
+    for _ in 0..3 {
+        press(&mut app, KeyCode::Char(']'));
+    }
+    both("mode_cursor", &app, PLAIN);
+    // a pin, then a heavier load: the pinned curves drawn with their number, named by the load
+    press(&mut app, KeyCode::Char('x'));
+    press(&mut app, KeyCode::Char('c'));
+    select(&mut app, "P", None);
+    let cmds = press(&mut app, KeyCode::Char('L'));
+    settle(&mut app, cmds);
+    both("mode_pin", &app, PLAIN);
+    // the map expanded: the form gives its columns, the map takes the height
+    let mut map = solved("jgh-egg-box.toml");
+    press(&mut map, KeyCode::Char('f'));
+    both("mode_expand", &map, PLAIN);
+    // a(P) of the Hertz check on log axes: a straight line of slope 1/2
+    let mut hertz = solved("hertz-check.toml");
+    hertz.ui.chart = Chart::Plane(PlaneChart::Edges);
+    press(&mut hertz, KeyCode::Char('y'));
+    both("mode_log_y", &hertz, PLAIN);
+    // four amplitudes and mu*(t) without colour: each curve its own character
+    let mut history = solved("dispersion.toml");
+    history.ui.chart = Chart::Spatial(SpatialChart::History);
+    let cmds = history.start();
+    settle(&mut history, cmds);
+    both("mode_ascii_markers", &history, ASCII);
 }

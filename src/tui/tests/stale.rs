@@ -97,12 +97,12 @@ fn export_after_switch(plane_load: f64) -> (Vec<Command>, String) {
 fn an_export_after_a_problem_switch_waits_for_the_charts_own_result() {
     // the plane section of dispersion.toml carries at most 6.2 kN/m on the wide model
     let (exported, _) = export_after_switch(1e3);
-    let [Command::Export(path, text)] = exported.as_slice() else {
+    let [Command::Export { path, text, .. }] = exported.as_slice() else {
         panic!("{exported:?}")
     };
     assert_eq!(path.to_str(), Some("wearlab-pressure-and-shear.csv"));
     assert!(text.contains("problem = \"plane\""));
-    assert!(text.contains(",pressure q2,"));
+    assert!(text.contains("\npressure q2,"));
     assert!(text.lines().count() < 1000, "not the spatial map");
     // where the plane has no solution, the export says so (and writes no map under its name)
     let (exported, message) = export_after_switch(1e4);

@@ -16,9 +16,10 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
         Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
         Mode::Help(_) => Some(Prompt::Help),
-        Mode::ConfirmOverwrite(_) | Mode::ConfirmOpen(_) | Mode::ConfirmQuit(_) => {
-            Some(Prompt::Question)
-        }
+        Mode::ConfirmOverwrite(_)
+        | Mode::ConfirmExport(_)
+        | Mode::ConfirmOpen(_)
+        | Mode::ConfirmQuit(_) => Some(Prompt::Question),
     }
 }
 
@@ -32,6 +33,10 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
         ),
         Mode::ConfirmOverwrite(target) => (
             format!("{} exists: overwrite? y/n", target.path.display()),
+            style.error(),
+        ),
+        Mode::ConfirmExport(file) => (
+            format!("{} exists: overwrite? y/n", file.0.display()),
             style.error(),
         ),
         Mode::ConfirmOpen(entry) => (

@@ -1,75 +1,137 @@
-//! The heatmap: a scalar field drawn with half blocks (two grid rows per text row), with a colour
-//! bar and its range; shades without colour.
+//! The heatmap: a scalar field drawn with half blocks (two grid rows per text row, so that a
+//! square cell looks square), in a quantised viridis map, with a colour bar, its ticks and the
+//! unit; shades without colour. A fixed scale (kept while time plays) says so above the bar.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::widgets::{Paragraph, Widget};
-use wearlab::units::format_si;
+use ratatui::style::{Color, Style};
 
 use crate::tui::charts::Map;
+use crate::tui::charts::Scale;
+use crate::tui::charts::palette::{LEVELS, level};
 use crate::tui::charts::range::bounds;
+use crate::tui::charts::ticks::ticks;
 use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::wrap;
 
 /// Columns of the colour bar and its labels.
-const BAR: u16 = 12;
+const BAR: u16 = 8;
 
-/// Draws the map into `area`: the field on the left, the bar on the right, the caption under it.
-pub fn draw(map: &Map, style: RenderOptions, buf: &mut Buffer, area: Rect) {
-    let [lo, hi] = bounds(map.values.iter().copied());
+/// The size in cells (columns, text rows) of a map of aspect `lx/ly` that fits in `width` x
+/// `height` cells, a text row holding two grid rows.
+pub fn fit(aspect: f64, width: u16, height: u16) -> (u16, u16) {
+    let (w, h2) = (width.max(1) as f64, 2.0 * height.max(1) as f64);
+    if w / h2 > aspect {
+        (((h2 * aspect).round() as u16).clamp(1, width), height)
+    } else {
+        (width, ((w / aspect / 2.0).round() as u16).clamp(1, height))
+    }
+}
+
+/// Draws the map into `area`: the field on the left, the bar right of it, the caption under
+/// it. `fixed`: the colour scale to use instead of the map's own range.
+pub fn draw(
+    map: &Map,
+    fixed: Option<[f64; 2]>,
+    style: RenderOptions,
+    buf: &mut Buffer,
+    area: Rect,
+) {
     let (nx, ny) = (map.x.len(), map.y.len());
-    if nx == 0 || ny == 0 {
+    if nx < 2 || ny < 2 || area.width < BAR + 4 || area.height < 3 {
         return;
     }
-    let w = area.width.saturating_sub(BAR + 1).max(4);
-    let h = area.height.saturating_sub(1).max(2);
+    let [lo, hi] = fixed.unwrap_or_else(|| bounds(map.values.iter().copied()));
+    let aspect = (map.x[nx - 1] - map.x[0]) / (map.y[ny - 1] - map.y[0]);
+    // the words right of the bar when there is room for them, else in a row under the map
+    const SIDE: u16 = 14;
+    let side = fit(aspect, area.width - BAR - 1, area.height);
+    let beside = area.width.saturating_sub(side.0 + BAR + 2) >= SIDE;
+    let (w, h) = if beside {
+        side
+    } else {
+        fit(aspect, area.width - BAR - 1, area.height - 1)
+    };
     let sample = |col: u16, half_row: u16| -> f64 {
         let i = ((col as usize * nx) / w as usize).min(nx - 1);
         // row 0 at the top is the largest y
         let j = ny - 1 - ((half_row as usize * ny) / (2 * h as usize)).min(ny - 1);
         (map.values[j * nx + i] - lo) / (hi - lo)
     };
-    for row in 0..h.min(area.height) {
-        for col in 0..w.min(area.width) {
+    for row in 0..h {
+        for col in 0..w {
             let (top, bottom) = (sample(col, 2 * row), sample(col, 2 * row + 1));
             let cell = &mut buf[(area.x + col, area.y + row)];
-            if style.color {
-                cell.set_char('▀')
-                    .set_fg(style.heat(top))
-                    .set_bg(style.heat(bottom));
-            } else {
+            if !style.color {
                 cell.set_char(style.shade(0.5 * (top + bottom)));
+                continue;
+            }
+            let (a, b) = (level(top), level(bottom));
+            // one colour code for a cell of one level: fewer bytes to send
+            if a == b {
+                cell.set_char(' ')
+                    .set_style(Style::default().fg(Color::Reset).bg(style.heat(a)));
+            } else {
+                cell.set_char('▀')
+                    .set_style(Style::default().fg(style.heat(a)).bg(style.heat(b)));
             }
         }
     }
+    // the bar: the levels from the top, with ticks of the values
     let bx = area.x + w + 1;
-    if bx + BAR > area.x + area.width {
-        return;
-    }
     for row in 0..h {
         let t = 1.0 - row as f64 / (h - 1).max(1) as f64;
         let cell = &mut buf[(bx, area.y + row)];
         if style.color {
-            cell.set_char('█').set_fg(style.heat(t));
+            let l = level(t).min(LEVELS - 1);
+            cell.set_char(' ')
+                .set_style(Style::default().bg(style.heat(l)));
         } else {
             cell.set_char(style.shade(t));
         }
     }
-    let mut label = |v: f64, y: u16| {
-        let rect = Rect {
-            x: bx + 2,
-            y,
-            width: BAR - 2,
-            height: 1,
-        };
-        Paragraph::new(format_si(v, map.unit)).render(rect, buf);
+    let t = ticks(
+        [lo, hi],
+        Scale::Linear,
+        "p",
+        map.unit,
+        (h as usize / 2).clamp(2, 8),
+    );
+    let mut used = Vec::new();
+    for (v, label) in &t.ticks {
+        let row = ((1.0 - (v - lo) / (hi - lo)) * (h - 1) as f64).round() as u16;
+        if used.contains(&row) {
+            continue;
+        }
+        used.push(row);
+        buf.set_stringn(
+            bx + 1,
+            area.y + row,
+            format!("┤{label}"),
+            (BAR - 1) as usize,
+            Style::default(),
+        );
+    }
+    let title = match fixed {
+        Some(_) => format!("{}, scale fixed while only t changes", t.title),
+        None => t.title.clone(),
     };
-    label(hi, area.y);
-    label(lo, area.y + h - 1);
-    let caption = Rect {
-        x: area.x,
-        y: area.y + h,
-        width: area.width,
-        height: 1,
-    };
-    Paragraph::new(map.caption.as_str()).render(caption, buf);
+    if beside {
+        let x = bx + BAR + 1;
+        let width = (area.x + area.width - x) as usize;
+        let words = format!("{title}. {}", map.caption);
+        let width = width.min(40);
+        for (i, line) in wrap(&words, width).iter().take(h as usize).enumerate() {
+            buf.set_stringn(x, area.y + i as u16, line, width, Style::default());
+        }
+    } else {
+        let words = format!("{title}. {}", map.caption);
+        buf.set_stringn(
+            area.x,
+            area.y + h,
+            words,
+            area.width as usize,
+            Style::default(),
+        );
+    }
 }

@@ -14,7 +14,9 @@
 //! ```
 //!
 //! The form is 30 columns wide below 100 columns, 34 from there; the status takes 8 rows below
-//! 32 rows, 10 from there. Popups (help, picker, choices) are centred over everything.
+//! 32 rows, 10 from there. An expanded chart (`f`) takes the form's columns too, and below 32
+//! rows the status gives it three of its rows. Popups (help, picker, choices) are centred over
+//! everything.
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
@@ -36,8 +38,9 @@ pub struct Areas {
     pub footer: Rect,
 }
 
-/// The regions of a screen, or None when it is smaller than `MIN_SIZE`.
-pub fn areas(area: Rect) -> Option<Areas> {
+/// The regions of a screen (the chart expanded or not), or None when it is smaller than
+/// `MIN_SIZE`.
+pub fn areas(area: Rect, expanded: bool) -> Option<Areas> {
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
         return None;
     }
@@ -47,10 +50,18 @@ pub fn areas(area: Rect) -> Option<Areas> {
         Constraint::Length(1),
     ])
     .areas(area);
-    let form_width = if area.width < 100 { 30 } else { 34 };
+    let form_width = match (expanded, area.width < 100) {
+        (true, _) => 0,
+        (false, true) => 30,
+        (false, false) => 34,
+    };
     let [form, right] =
         Layout::horizontal([Constraint::Length(form_width), Constraint::Min(40)]).areas(main);
-    let status_height = if area.height >= 32 { 10 } else { 8 };
+    let status_height = match (area.height >= 32, expanded) {
+        (true, _) => 10,
+        (false, false) => 8,
+        (false, true) => 5,
+    };
     let [chart, status] =
         Layout::vertical([Constraint::Min(8), Constraint::Length(status_height)]).areas(right);
     Some(Areas {

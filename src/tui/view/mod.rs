@@ -84,12 +84,14 @@ pub fn shown(app: &App) -> Shown<'_> {
 /// Draws the whole screen.
 pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     let area = frame.area();
-    let Some(areas) = layout::areas(area) else {
+    let Some(areas) = layout::areas(area, app.ui.expanded) else {
         too_small(frame, area);
         return;
     };
     let shown = shown(app);
-    form::draw(app, style, frame, areas.form);
+    if !app.ui.expanded {
+        form::draw(app, style, frame, areas.form);
+    }
     draw_chart(app, &shown, style, frame, areas.chart);
     status::draw(app, &shown, style, frame, areas.status);
     bars::draw_message(app, style, frame, areas.message);
@@ -170,7 +172,10 @@ fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame,
                 .style(style.error()),
             inner,
         ),
-        Ok(Figure::Map(map)) => heatmap::draw(&map, style, frame.buffer_mut(), inner),
+        Ok(Figure::Map(map)) => {
+            let fixed = app.ui.heat_scale_for(&answer.request.preset);
+            heatmap::draw(&map, fixed, style, frame.buffer_mut(), inner)
+        }
         Ok(Figure::Plots(plots)) => {
             let pins = app.ui.pins_of(chart);
             let pinned: Vec<&[Plot]> = pins.iter().map(|p| p.plots.as_slice()).collect();

@@ -6,6 +6,8 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 
+use crate::tui::charts::range::clip;
+
 /// How a curve is drawn: its character (in character mode, or always for `solid` curves) and
 /// style.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -97,7 +99,7 @@ impl Raster {
             let (a, b) = (self.to_dots(pair[0], ink), self.to_dots(pair[1], ink));
             let (rx, ry) = self.resolution(ink);
             let limits = (self.width as f64 * rx - 1.0, self.height as f64 * ry - 1.0);
-            if let Some((a, b)) = clip(a, b, limits) {
+            if let Some((a, b)) = clip(a, b, [0.0, limits.0], [0.0, limits.1]) {
                 self.segment(a, b, ink);
             }
         }
@@ -171,29 +173,4 @@ impl Raster {
             }
         }
     }
-}
-
-/// Liang-Barsky: the part of segment a-b inside [0, w] x [0, h], if any.
-fn clip(a: (f64, f64), b: (f64, f64), (w, h): (f64, f64)) -> Option<((f64, f64), (f64, f64))> {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [(-dx, a.0), (dx, w - a.0), (-dy, a.1), (dy, h - a.1)] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return None;
-            }
-        } else {
-            let r = q / p;
-            if p < 0.0 {
-                t0 = t0.max(r);
-            } else {
-                t1 = t1.min(r);
-            }
-        }
-    }
-    let finite = [a.0, a.1, b.0, b.1].iter().all(|v| v.is_finite());
-    (t0 <= t1 && finite).then_some((
-        (a.0 + t0 * dx, a.1 + t0 * dy),
-        (a.0 + t1 * dx, a.1 + t1 * dy),
-    ))
 }

@@ -6,11 +6,14 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
-use wearlab::engine::{Output, SpatialOutput};
+use wearlab::engine::{Answer, Output, SpatialOutput};
 use wearlab::physics::plane::OperatingPoint;
 use wearlab::units::format_si;
 
 use crate::tui::app::App;
+use crate::tui::charts::range::frames;
+use crate::tui::charts::readout::readout;
+use crate::tui::charts::{Figure, Plot};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::{Shown, note, wrap};
 
@@ -45,7 +48,15 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
         return;
     };
     let width = inner.width as usize;
-    let lines = match &answer.output {
+    // the cursor readout first, each value whole
+    let mut lines: Vec<Line> = cursor_readout(app, answer)
+        .map(|items| pack(&items, width, "  "))
+        .unwrap_or_default()
+        .into_iter()
+        .map(|l| Line::styled(l, style.cursor()))
+        .collect();
+    let height = (inner.height as usize).saturating_sub(lines.len());
+    lines.extend(match &answer.output {
         Output::Plane(out) => match &out.point {
             Ok(p) => plane(p, style, width),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
@@ -53,13 +64,28 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
         Output::Spatial(Ok(out)) => {
             let selected = app.row().harmonic_index();
-            spatial(out, selected, style, width, inner.height as usize)
+            spatial(out, selected, style, width, height)
         }
-    };
+    });
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
     }
+}
+
+/// The cursor readout of the visible chart, when the cursor is on and the chart has curves.
+fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
+    let cursor = app.ui.cursor?;
+    let chart = app.ui.chart;
+    let Ok(Figure::Plots(plots)) = chart.build(answer) else {
+        return None;
+    };
+    let pins = app.ui.pins_of(chart);
+    let pinned: Vec<&[Plot]> = pins.iter().map(|p| p.plots.as_slice()).collect();
+    let frames = frames(&plots, &pinned, app.ui.log_y.contains(&chart));
+    let mut items = readout(&frames, cursor);
+    items[0] = format!("cursor {}:", items[0]);
+    Some(items)
 }
 
 /// A sentence wrapped to the panel, in one style.
@@ -148,7 +174,7 @@ fn spatial(
     let h = s.inputs.material.thickness;
     let k_label = if h.is_finite() { "kh" } else { "k [rad/m]" };
     let header = format!(
-        "{:>3} {k_label:<8}{:<10}{:<12}{}",
+        "{:>3} {k_label:<10}{:<10}{:<12}{}",
         "n", "1/beta", "c", "phi"
     );
     let blocks: Vec<Vec<String>> = s
@@ -166,7 +192,7 @@ fn spatial(
             };
             let c = format_si(e.drift_velocity, "m/s");
             vec![format!(
-                "{:>3} {kh:<8}{decay:<10}{c:<12}{:+.2}",
+                "{:>3} {kh:<10}{decay:<10}{c:<12}{:+.2}",
                 n + 1,
                 e.phase_lead
             )]

@@ -2,6 +2,7 @@
 
 use ratatui::style::{Color, Modifier, Style};
 
+use crate::tui::charts::palette;
 use crate::tui::view::raster::Ink;
 
 /// How to draw.
@@ -11,6 +12,8 @@ pub struct RenderOptions {
     pub ascii: bool,
     /// Colours allowed (NO_COLOR unset).
     pub color: bool,
+    /// 24-bit colour announced (COLORTERM=truecolor or 24bit); else the 256-colour palette.
+    pub truecolor: bool,
 }
 
 const SERIES: [Color; 6] = [
@@ -27,6 +30,9 @@ const GLYPHS: [char; 8] = ['*', '+', 'x', 'o', '#', '%', '&', '$'];
 
 /// The shades of the heatmap without colour, lightest first.
 pub const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
+
+/// The shades with `--ascii`, lightest first.
+pub const ASCII_SHADES: [char; 10] = [' ', '.', ':', '-', '=', '+', '*', '#', '%', '@'];
 
 impl RenderOptions {
     /// Errors and warnings: red, or bold without colour.
@@ -165,22 +171,24 @@ impl RenderOptions {
         if self.ascii { '|' } else { '│' }
     }
 
-    /// The heatmap colour of t in [0, 1]: blue (low) through green to red (high).
-    pub fn heat(self, t: f64) -> Color {
-        let t = t.clamp(0.0, 1.0);
-        let (r, g, b) = if t < 0.5 {
-            let s = t / 0.5;
-            (0.0, s, 1.0 - s)
+    /// The heatmap colour of a level of the quantised viridis map: 24-bit, or the nearest of
+    /// the 256-colour palette.
+    pub fn heat(self, level: usize) -> Color {
+        if self.truecolor {
+            let (r, g, b) = palette::level_colour(level);
+            Color::Rgb(r, g, b)
         } else {
-            let s = (t - 0.5) / 0.5;
-            (s, 1.0 - s, 0.0)
-        };
-        let level = |v: f64| (40.0 + 215.0 * v) as u8;
-        Color::Rgb(level(r), level(g), level(b))
+            Color::Indexed(palette::level_256(level))
+        }
     }
 
     /// The shade of t in [0, 1] without colour.
     pub fn shade(self, t: f64) -> char {
-        SHADES[(t.clamp(0.0, 1.0) * 4.0).round() as usize]
+        let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+        if self.ascii {
+            ASCII_SHADES[(t * 9.0).round() as usize]
+        } else {
+            SHADES[(t * 4.0).round() as usize]
+        }
     }
 }

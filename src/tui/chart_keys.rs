@@ -1,0 +1,194 @@
+//! What the chart keys do to the model (part of `update`: pure): the cursor readout, pins, the
+//! expanded chart and the log y axis.
+
+use wearlab::engine::Output;
+
+use crate::tui::app::{App, Command, HeatScale, Pin};
+use crate::tui::charts::range::{frames, plotted};
+use crate::tui::charts::{Figure, Plot, Scale};
+use crate::tui::keys::Action;
+use crate::tui::view::shown;
+
+/// Pins a chart keeps at most.
+pub const MAX_PINS: usize = 3;
+
+/// Carries out a chart key.
+pub fn act(app: &mut App, action: Action) -> Vec<Command> {
+    match action {
+        Action::Cursor => {
+            app.ui.cursor = match app.ui.cursor {
+                Some(_) => {
+                    app.say("cursor off");
+                    None
+                }
+                None => {
+                    app.say("cursor: [ ] move it a data point, { } ten; the status reads the curves there");
+                    Some(0.5)
+                }
+            };
+        }
+        Action::MoveCursor(points) => match app.ui.cursor {
+            Some(at) => app.ui.cursor = Some(moved(&plots(app), at, points)),
+            None => app.say("x shows the cursor first"),
+        },
+        Action::Pin => pin(app),
+        Action::ClearPins => {
+            let chart = app.ui.chart;
+            let before = app.ui.pins.len();
+            app.ui.pins.retain(|p| p.chart != chart);
+            match before - app.ui.pins.len() {
+                0 => app.say("this chart has no pins"),
+                1 => app.say("cleared the pin"),
+                n => app.say(format!("cleared {n} pins")),
+            }
+        }
+        Action::Expand => {
+            app.ui.expanded = !app.ui.expanded;
+            app.say(if app.ui.expanded {
+                "chart expanded (f gives the form back)"
+            } else {
+                "form back"
+            });
+        }
+        Action::LogY => log_y(app),
+        _ => {}
+    }
+    Vec::new()
+}
+
+/// The plots of the shown answer on the visible chart (none for a map or while solving).
+fn plots(app: &App) -> Vec<Plot> {
+    let Some((answer, _)) = shown(app).answer() else {
+        return Vec::new();
+    };
+    match app.ui.chart.build(answer) {
+        Ok(Figure::Plots(plots)) => plots,
+        _ => Vec::new(),
+    }
+}
+
+/// The cursor `points` data points of the first curve away from `at` (a fraction of the x
+/// range), or `points` hundredths of the range where there is no curve.
+pub fn moved(plots: &[Plot], at: f64, points: i32) -> f64 {
+    let Some(f) = frames(plots, &[], false).into_iter().next() else {
+        return (at + points as f64 / 100.0).clamp(0.0, 1.0);
+    };
+    let [lo, hi] = f.x;
+    let mut xs: Vec<f64> = f
+        .plot
+        .series
+        .first()
+        .map(|s| plotted(&s.points, f.plot.x.scale, Scale::Linear))
+        .unwrap_or_default()
+        .iter()
+        .map(|p| (p.0 - lo) / (hi - lo))
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    if xs.is_empty() {
+        return (at + points as f64 / 100.0).clamp(0.0, 1.0);
+    }
+    let eps = 1e-9;
+    let i = if points > 0 {
+        // the first point right of the cursor is one step
+        let next = xs.iter().position(|&x| x > at + eps).unwrap_or(xs.len());
+        next + points as usize - 1
+    } else {
+        let prev = xs.iter().rposition(|&x| x < at - eps);
+        match prev {
+            Some(p) => p.saturating_sub((-points) as usize - 1),
+            None => 0,
+        }
+    };
+    xs[i.min(xs.len() - 1)]
+}
+
+fn pin(app: &mut App) {
+    let Some((answer, _)) = shown(app).answer() else {
+        app.say("nothing to pin yet (solving…)");
+        return;
+    };
+    let chart = app.ui.chart;
+    match chart.build(answer) {
+        Ok(Figure::Plots(plots)) => {
+            let preset = answer.request.preset.clone();
+            let mut dropped = false;
+            if app.ui.pins_of(chart).len() >= MAX_PINS {
+                let oldest = app.ui.pins.iter().position(|p| p.chart == chart);
+                oldest.map(|i| app.ui.pins.remove(i));
+                dropped = true;
+            }
+            app.ui.pins.push(Pin {
+                chart,
+                preset,
+                plots,
+            });
+            let n = app.ui.pins_of(chart).len();
+            app.say(if dropped {
+                format!("pinned as {n} (the oldest of {MAX_PINS} pins dropped); C clears")
+            } else {
+                format!("pinned as {n}: edit a value to compare; C clears")
+            });
+        }
+        Ok(Figure::Map(_)) => {
+            app.complain("pins compare curves: the map has none (Tab to a chart with curves)")
+        }
+        Err(_) => app.say("nothing to pin yet (solving…)"),
+    }
+}
+
+fn log_y(app: &mut App) {
+    let chart = app.ui.chart;
+    let plots = plots(app);
+    if plots.is_empty() {
+        app.complain("y toggles the y axis of a chart with curves");
+        return;
+    }
+    match app.ui.log_y.iter().position(|c| *c == chart) {
+        Some(i) => {
+            app.ui.log_y.remove(i);
+        }
+        None => app.ui.log_y.push(chart),
+    }
+    let toggled = app.ui.log_y.contains(&chart);
+    let scales: Vec<String> = frames(&plots, &[], toggled)
+        .iter()
+        .map(|f| match f.y_scale {
+            Scale::Linear => format!("{} linear", f.plot.y.label),
+            Scale::Log => format!("{} logarithmic", f.plot.y.label),
+            Scale::SymLog(c) => format!(
+                "{} symmetric log (linear within ±{})",
+                f.plot.y.label,
+                wearlab::units::format_si(c, f.plot.y.unit)
+            ),
+        })
+        .collect();
+    app.say(format!("y axis of {}", scales.join("; ")));
+}
+
+/// Keeps the pressure map's colour scale over the times seen of the same inputs (widened by each
+/// new one), so that playing or stepping time shows a decay as fading colours; other inputs start
+/// a scale of their own.
+pub fn keep_heat_scale(app: &mut App) {
+    let Some(answer) = &app.solve.shown else {
+        return;
+    };
+    let Output::Spatial(Ok(out)) = &answer.output else {
+        return;
+    };
+    if !out.state.contact.complete {
+        return;
+    }
+    let [lo, hi] = crate::tui::charts::range::bounds(out.state.field.pressure.iter().copied());
+    let mut inputs = answer.request.preset.clone();
+    inputs.spatial.time = 0.0;
+    app.ui.heat_scale = Some(match app.ui.heat_scale.take() {
+        Some(s) if s.inputs == inputs => HeatScale {
+            range: [s.range[0].min(lo), s.range[1].max(hi)],
+            inputs,
+        },
+        _ => HeatScale {
+            inputs,
+            range: [lo, hi],
+        },
+    });
+}

@@ -1,0 +1,84 @@
+//! The cursor readout: the x under the cursor and every curve's value there, with units.
+
+use wearlab::units::{format_si, prefixable};
+
+use crate::tui::charts::range::{Frame, plotted};
+use crate::tui::charts::{Scale, Series, ticks};
+
+/// A value as the readout writes it: three significant digits with an SI prefix where the unit
+/// takes one, else six significant digits (mu* differs from mu in the fifth).
+pub fn value(v: f64, unit: &str) -> String {
+    if prefixable(unit) || !v.is_finite() {
+        return format_si(v, unit);
+    }
+    let text = if v == 0.0 {
+        "0".to_string()
+    } else {
+        let e = v.abs().log10().floor() as i32;
+        if (-4..6).contains(&e) {
+            let f = 10f64.powi(5 - e);
+            ticks::plain((v * f).round() / f)
+        } else {
+            format!("{v:.5e}")
+        }
+    };
+    match unit {
+        "" => text,
+        u => format!("{text} {u}"),
+    }
+}
+
+/// A curve's value at plot coordinate `x` (linear between its points in plot coordinates), or
+/// None outside its points.
+pub fn at(series: &Series, x: f64, xs: Scale, ys: Scale) -> Option<f64> {
+    let p = plotted(&series.points, xs, ys);
+    p.windows(2).find_map(|w| {
+        let (a, b) = (w[0], w[1]);
+        let (lo, hi) = (a.0.min(b.0), a.0.max(b.0));
+        if !(lo..=hi).contains(&x) {
+            return None;
+        }
+        let t = if b.0 == a.0 {
+            0.0
+        } else {
+            (x - a.0) / (b.0 - a.0)
+        };
+        Some(ys.value_at(a.1 + t * (b.1 - a.1)))
+    })
+}
+
+/// The readout at `cursor` (a fraction of the x range): "x = ...", then "name = value" for every
+/// curve of every plot, and for the pins' curves "[n] name = value".
+pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
+    let Some(first) = frames.first() else {
+        return Vec::new();
+    };
+    let [lo, hi] = first.x;
+    let xp = lo + cursor.clamp(0.0, 1.0) * (hi - lo);
+    let x_axis = &first.plot.x;
+    let mut items = vec![format!(
+        "{} = {}",
+        x_axis.label,
+        value(x_axis.scale.value_at(xp), x_axis.unit)
+    )];
+    for f in frames {
+        let unit = f.plot.y.unit;
+        let read = |s: &Series| {
+            at(s, xp, f.plot.x.scale, f.y_scale).map_or("-".to_string(), |v| value(v, unit))
+        };
+        items.extend(
+            f.plot
+                .series
+                .iter()
+                .map(|s| format!("{} = {}", s.name, read(s))),
+        );
+        for (n, pin) in f.pins.iter().enumerate() {
+            items.extend(
+                pin.series
+                    .iter()
+                    .map(|s| format!("[{}] {} = {}", n + 1, s.name, read(s))),
+            );
+        }
+    }
+    items
+}

@@ -1,0 +1,346 @@
+//! The figure export (`E`): the visible chart as SVG, drawn with plotters' SVG backend from the
+//! same figure, ranges, scales and ticks as the terminal, its pins included, the legend beside
+//! the plot, and the preset's name and parameters in a caption.
+
+mod map;
+
+use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use wearlab::units::format_si;
+
+use crate::tui::charts::range::{Frame, bounds, clip, frames, plotted};
+use crate::tui::charts::ticks::{Ticks, ticks};
+use crate::tui::charts::{Figure, Plot, Scale};
+
+/// Width of the figure [px].
+const WIDTH: u32 = 960;
+/// Height of one plot [px].
+const PLOT: u32 = 340;
+/// Columns of the legend right of the plot [px].
+const LEGEND: u32 = 250;
+/// Rows of the caption [px each].
+const LINE: u32 = 18;
+
+/// Colours of the curves: Okabe and Ito's colour-blind-safe set (Color Universal Design, 2008).
+const COLOURS: [RGBColor; 7] = [
+    RGBColor(0, 114, 178),
+    RGBColor(230, 159, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(213, 94, 0),
+    RGBColor(204, 121, 167),
+    RGBColor(86, 180, 233),
+    RGBColor(0, 0, 0),
+];
+
+pub(super) const GREY: RGBColor = RGBColor(120, 120, 120);
+
+fn colour(i: usize) -> RGBColor {
+    COLOURS[i % COLOURS.len()]
+}
+
+pub(super) fn font(size: u32) -> TextStyle<'static> {
+    TextStyle::from(("sans-serif", size).into_font())
+}
+
+pub(super) fn err(e: impl std::fmt::Display) -> String {
+    format!("cannot draw the figure: {e}")
+}
+
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+pub(super) type Chart2d<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// What the SVG shows besides the figure.
+pub struct Page<'a> {
+    /// The chart's title.
+    pub title: &'a str,
+    /// The caption: the preset's name and its parameters, one line each.
+    pub caption: Vec<String>,
+    /// The pins' plots and legend names.
+    pub pins: Vec<(&'a [Plot], String)>,
+    /// The y axes toggled (`y`).
+    pub toggled: bool,
+    /// The colour scale of a map (None: its own range).
+    pub scale: Option<[f64; 2]>,
+}
+
+/// The SVG text of a figure.
+pub fn svg(figure: &Figure, page: &Page) -> Result<String, String> {
+    let caption_height = LINE * page.caption.len() as u32 + 16;
+    let body = match figure {
+        Figure::Plots(plots) => PLOT * plots.len() as u32,
+        Figure::Map(_) => 520,
+    };
+    let height = 40 + body + caption_height;
+    let mut text = String::new();
+    {
+        let root = SVGBackend::with_string(&mut text, (WIDTH, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let (title, rest) = root.split_vertically(40);
+        let (main, caption) = rest.split_vertically(body);
+        title
+            .draw(&Text::new(
+                page.title.to_string(),
+                (WIDTH as i32 / 2, 12),
+                font(20).pos(Pos::new(HPos::Center, VPos::Top)),
+            ))
+            .map_err(err)?;
+        for (i, line) in page.caption.iter().enumerate() {
+            caption
+                .draw(&Text::new(
+                    line.clone(),
+                    (16, 8 + (LINE * i as u32) as i32),
+                    font(13),
+                ))
+                .map_err(err)?;
+        }
+        match figure {
+            Figure::Plots(plots) => {
+                let pinned: Vec<&[Plot]> = page.pins.iter().map(|p| p.0).collect();
+                let names: Vec<String> = page.pins.iter().map(|p| p.1.clone()).collect();
+                let fs = frames(plots, &pinned, page.toggled);
+                let areas = main.split_evenly((fs.len(), 1));
+                for (f, area) in fs.iter().zip(&areas) {
+                    plot(&root, area, f, &names)?;
+                }
+            }
+            Figure::Map(m) => map::map(&root, &main, m, page.scale)?,
+        }
+        root.present().map_err(err)?;
+    }
+    Ok(text)
+}
+
+/// A plot area over ranges x, y with its axis lines and titles (the ticks are drawn by
+/// `axes`), `right` pixels kept free right of it.
+pub(super) fn cartesian<'a, 'b>(
+    area: &'a Area<'b>,
+    [x, y]: [[f64; 2]; 2],
+    [x_title, y_title]: [&str; 2],
+    right: u32,
+) -> Result<Chart2d<'a, 'b>, String> {
+    let mut chart = ChartBuilder::on(area)
+        .margin(14)
+        .margin_right(right)
+        .x_label_area_size(48)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x[0]..x[1], y[0]..y[1])
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_labels(0)
+        .y_labels(0)
+        .x_desc(x_title)
+        .y_desc(y_title)
+        .axis_desc_style(font(14))
+        .draw()
+        .map_err(err)?;
+    Ok(chart)
+}
+
+/// The pieces of a curve inside the frame (plot coordinates).
+fn pieces(points: &[(f64, f64)], f: &Frame, ys: Scale) -> Vec<Vec<(f64, f64)>> {
+    let p = plotted(points, f.plot.x.scale, ys);
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    for w in p.windows(2) {
+        let Some((a, b)) = clip(w[0], w[1], f.x, f.y) else {
+            out.push(Vec::new());
+            continue;
+        };
+        match out.last_mut() {
+            Some(last) if last.last() == Some(&a) => last.push(b),
+            _ => out.push(vec![a, b]),
+        }
+    }
+    out.retain(|piece| piece.len() >= 2);
+    out
+}
+
+/// One legend line right of the plot: a sample drawn by `sample` at (x, y), then the text.
+fn entry(
+    root: &Area,
+    x: i32,
+    y: i32,
+    text: &str,
+    sample: impl FnOnce(i32, i32) -> Result<(), String>,
+) -> Result<(), String> {
+    sample(x, y)?;
+    root.draw(&Text::new(
+        text.to_string(),
+        (x + 30, y),
+        font(13).pos(Pos::new(HPos::Left, VPos::Center)),
+    ))
+    .map_err(err)
+}
+
+/// Tick marks and labels on both axes, at the pixels of the chart's coordinates.
+pub(super) fn axes(
+    root: &Area,
+    chart: &Chart2d,
+    f: &Frame,
+    x: &Ticks,
+    y: &Ticks,
+) -> Result<(), String> {
+    for (pos, label) in &x.ticks {
+        let (px, py) = chart.backend_coord(&(*pos, f.y[0]));
+        root.draw(&PathElement::new(vec![(px, py), (px, py + 6)], BLACK))
+            .map_err(err)?;
+        root.draw(&Text::new(
+            label.clone(),
+            (px, py + 9),
+            font(13).pos(Pos::new(HPos::Center, VPos::Top)),
+        ))
+        .map_err(err)?;
+    }
+    for (pos, label) in &y.ticks {
+        let (px, py) = chart.backend_coord(&(f.x[0], *pos));
+        root.draw(&PathElement::new(vec![(px - 6, py), (px, py)], BLACK))
+            .map_err(err)?;
+        root.draw(&Text::new(
+            label.clone(),
+            (px - 9, py),
+            font(13).pos(Pos::new(HPos::Right, VPos::Center)),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
+}
+
+fn plot(root: &Area, area: &Area, f: &Frame, pin_names: &[String]) -> Result<(), String> {
+    let p = f.plot;
+    let x = ticks(f.x, p.x.scale, &p.x.label, p.x.unit, 9);
+    let y = ticks(f.y, f.y_scale, &p.y.label, p.y.unit, 7);
+    let mut chart = cartesian(area, [f.x, f.y], [&x.title, &y.title], LEGEND)?;
+    let xs = p.x.scale;
+    for s in &p.shaded {
+        if let (Some(a), Some(b)) = (xs.to_plot(s.from), xs.to_plot(s.to)) {
+            let shade = Rectangle::new([(a, f.y[0]), (b, f.y[1])], GREY.mix(0.15).filled());
+            chart.draw_series(std::iter::once(shade)).map_err(err)?;
+        }
+    }
+    for m in &p.x_marks {
+        if let Some(v) = xs.to_plot(m.at) {
+            let line = DashedLineSeries::new(vec![(v, f.y[0]), (v, f.y[1])], 3, 3, GREY.into());
+            chart.draw_series(line).map_err(err)?;
+            let (px, py) = chart.backend_coord(&(v, f.y[1]));
+            root.draw(&Text::new(
+                m.label.clone(),
+                (px, py - 2),
+                font(12).pos(Pos::new(HPos::Center, VPos::Bottom)),
+            ))
+            .map_err(err)?;
+        }
+    }
+    for m in &p.y_marks {
+        if let Some(v) = f.y_scale.to_plot(m.at) {
+            let line = DashedLineSeries::new(vec![(f.x[0], v), (f.x[1], v)], 6, 4, GREY.into());
+            chart.draw_series(line).map_err(err)?;
+        }
+    }
+    for (n, pin) in f.pins.iter().enumerate() {
+        for (i, s) in pin.series.iter().enumerate() {
+            for piece in pieces(&s.points, f, f.y_scale) {
+                let style = colour(i).mix(0.5).stroke_width(1);
+                let dash = 2 + 3 * n as u32;
+                let line = DashedLineSeries::new(piece, dash, 3, style);
+                chart.draw_series(line).map_err(err)?;
+            }
+        }
+    }
+    for (i, s) in p.series.iter().enumerate().rev() {
+        for piece in pieces(&s.points, f, f.y_scale) {
+            chart
+                .draw_series(LineSeries::new(piece, colour(i).stroke_width(2)))
+                .map_err(err)?;
+        }
+    }
+    if let Some(m) = &p.markers {
+        let dots = plotted(&m.points, xs, f.y_scale)
+            .into_iter()
+            .filter(|q| (f.x[0]..=f.x[1]).contains(&q.0) && (f.y[0]..=f.y[1]).contains(&q.1))
+            .map(|q| Circle::new(q, 4, BLACK.filled()));
+        chart.draw_series(dots).map_err(err)?;
+    }
+    axes(root, &chart, f, &x, &y)?;
+    legend(root, &chart, f, pin_names)
+}
+
+/// The legend right of the plot: curves (those off the y range with their range), markers,
+/// reference lines, shaded ranges, pins.
+fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> Result<(), String> {
+    let p = f.plot;
+    let (right, top) = chart.backend_coord(&(f.x[1], f.y[1]));
+    let x = right + 16;
+    let mut y = top + 8;
+    let mut next = || {
+        y += 18;
+        y - 18
+    };
+    let line = |i: usize| {
+        move |x: i32, y: i32| {
+            root.draw(&PathElement::new(
+                vec![(x, y), (x + 22, y)],
+                colour(i).stroke_width(2),
+            ))
+            .map_err(err)
+        }
+    };
+    for (i, s) in p.series.iter().enumerate() {
+        let drawn = plotted(&s.points, p.x.scale, f.y_scale);
+        let text = if drawn.is_empty() {
+            format!("{}: no values to draw", s.name)
+        } else if !drawn.iter().any(|q| (f.y[0]..=f.y[1]).contains(&q.1)) {
+            let [lo, hi] = bounds(s.points.iter().map(|q| q.1));
+            let unit = p.y.unit;
+            format!(
+                "{}: off scale, {}..{}",
+                s.name,
+                format_si(lo, unit),
+                format_si(hi, unit)
+            )
+        } else {
+            s.name.clone()
+        };
+        entry(root, x, next(), &text, line(i))?;
+    }
+    if let Some(m) = &p.markers {
+        entry(root, x, next(), &m.name, |x, y| {
+            root.draw(&Circle::new((x + 11, y), 4, BLACK.filled()))
+                .map_err(err)
+        })?;
+    }
+    let grey_line = |x: i32, y: i32| {
+        root.draw(&PathElement::new(vec![(x, y), (x + 22, y)], GREY))
+            .map_err(err)
+    };
+    for m in &p.y_marks {
+        entry(root, x, next(), &m.label, grey_line)?;
+    }
+    for s in &p.shaded {
+        entry(root, x, next(), &s.label, |x, y| {
+            root.draw(&Rectangle::new(
+                [(x, y - 6), (x + 22, y + 6)],
+                GREY.mix(0.15).filled(),
+            ))
+            .map_err(err)
+        })?;
+    }
+    for (n, name) in pin_names.iter().enumerate().take(f.pins.len()) {
+        let dash = 2 + 3 * n as u32;
+        entry(root, x, next(), name, |x, y| {
+            // the pin's dashes: dash pixels on, 3 off
+            let style = colour(0).mix(0.5).stroke_width(1);
+            (0..22)
+                .step_by(dash as usize + 3)
+                .try_for_each(|d| {
+                    let end = (d + dash as i32).min(22);
+                    root.draw(&PathElement::new(vec![(x + d, y), (x + end, y)], style))
+                })
+                .map_err(err)
+        })?;
+    }
+    Ok(())
+}

@@ -1,0 +1,115 @@
+//! What the explorer writes to the terminal (issue 10, over SSH): bytes of a full redraw, of each
+//! frame while time plays, and of a redraw with nothing changed, counted through ratatui's
+//! crossterm backend (the escape codes a terminal would receive), not timed.
+
+use std::cell::Cell;
+use std::io::Write;
+use std::rc::Rc;
+
+use ratatui::backend::CrosstermBackend;
+use ratatui::layout::Rect;
+use ratatui::{Terminal, TerminalOptions, Viewport};
+
+use super::*;
+use crate::tui::event_loop::FRAME;
+
+/// A writer that counts what goes through it.
+#[derive(Clone, Default)]
+struct Counter(Rc<Cell<usize>>);
+
+impl Write for Counter {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.set(self.0.get() + buf.len());
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// A terminal of w x h cells whose output is counted.
+fn terminal(w: u16, h: u16) -> (Terminal<CrosstermBackend<Counter>>, Counter) {
+    let counter = Counter::default();
+    let options = TerminalOptions {
+        viewport: Viewport::Fixed(Rect::new(0, 0, w, h)),
+    };
+    let t = Terminal::with_options(CrosstermBackend::new(counter.clone()), options).unwrap();
+    (t, counter)
+}
+
+/// Bytes written by one draw of the app.
+fn draw(
+    t: &mut Terminal<CrosstermBackend<Counter>>,
+    c: &Counter,
+    app: &App,
+    s: RenderOptions,
+) -> usize {
+    let before = c.0.get();
+    t.draw(|f| view(app, s, f)).unwrap();
+    c.0.get() - before
+}
+
+const COLOUR_256: RenderOptions = RenderOptions {
+    ascii: false,
+    color: true,
+    truecolor: false,
+};
+
+/// Bytes of a full redraw and of each frame while time plays, at 120x40 in 256 colours.
+fn playing(file: &str, frames: usize) -> (usize, Vec<usize>) {
+    let mut app = solved(file);
+    let (mut t, c) = terminal(120, 40);
+    let full = draw(&mut t, &c, &app, COLOUR_256);
+    app.ui.playing = true;
+    let each = (0..frames)
+        .map(|_| {
+            let cmds = update(&mut app, Msg::Tick);
+            settle(&mut app, cmds);
+            draw(&mut t, &c, &app, COLOUR_256)
+        })
+        .collect();
+    (full, each)
+}
+
+#[test]
+fn playing_the_pressure_map_writes_under_60_kb_a_second() {
+    let per_second = 1000 / FRAME.as_millis() as usize;
+    // measured over 20 frames (README): dispersion 2.7-8.1 kB a frame, wave-thick-layer
+    // 0.1-4.5 kB, jgh-egg-box 2.6-8.6 kB: at most 43 kB/s at five frames a second
+    for file in [
+        "dispersion.toml",
+        "wave-thick-layer.toml",
+        "jgh-egg-box.toml",
+    ] {
+        let (full, frames) = playing(file, 20);
+        let worst = frames.iter().max().unwrap();
+        assert!(
+            worst * per_second < 60_000,
+            "{file}: {frames:?} at {per_second}/s"
+        );
+        // a full redraw of the map screen (13.3-20.3 kB): 3.3 kB of frame, form and footer,
+        // the status, and a 50 x 25 map with a colour code at each change of level
+        assert!(full < 21_000, "{file}: {full}");
+    }
+}
+
+#[test]
+fn a_full_redraw_of_a_chart_screen_is_under_8_kb_and_nothing_changed_writes_nothing() {
+    for (file, chart) in [
+        ("polymer-coating.toml", 0),
+        ("polymer-coating.toml", 2),
+        ("wave-thick-layer.toml", 2),
+        ("dispersion.toml", 4),
+    ] {
+        let mut app = solved(file);
+        app.ui.chart = crate::tui::charts::Chart::all(app.doc.preset.problem)[chart];
+        let cmds = app.start();
+        settle(&mut app, cmds);
+        let (mut t, c) = terminal(120, 40);
+        let full = draw(&mut t, &c, &app, COLOUR_256);
+        assert!(full < 8_000, "{file} chart {chart}: {full} bytes");
+        // the same screen again: the colour and attribute resets and the hidden cursor only
+        let again = draw(&mut t, &c, &app, COLOUR_256);
+        assert!(again <= 32, "{file}: {again}");
+    }
+}
