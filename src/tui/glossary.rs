@@ -25,7 +25,7 @@ pub const SPATIAL: [Entry; 10] = [
     ("t", "s", "the instant shown (space plays time)"),
     ("mu*", "-", "total friction coefficient mu + (1 + mu^2) psi/P at time t"),
     ("psi", "Pa", "deformation component of friction per unit area, psi = -<p dg/dx>; > 0 adds to friction"),
-    ("p_min", "Pa", "smallest contact pressure in the cell: certified minimum, or the lower bound pbar - sum A_n/M_n when the wavenumbers do not share a period"),
+    ("p_min", "Pa", "smallest contact pressure in the cell: the certified minimum (with the lower bound pbar - sum A_n/M_n beside it), or only the bound when the wavenumbers do not share a period"),
     ("n", "", "one row per harmonic, numbered as in the form; '+N more' counts those that do not fit (select a harmonic's row in the form to see it)"),
     ("kh", "-", "wavenumber k = |(wx, wy)| times the layer thickness (k [rad/m] itself for a half-space)"),
     ("1/beta", "s", "decay time of the harmonic's amplitude by wear, A(t) = A(0) exp(-beta t); inf without wear"),

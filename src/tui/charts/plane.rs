@@ -115,6 +115,8 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
     let model = preset.plane.model;
     let series = std::iter::once((model, own))
         .chain(out.overlays.iter().map(|(m, s)| (*m, &**s)))
+        // a model that needs a finite thickness has no curve on a half-plane
+        .filter(|(m, _)| !(m.needs_finite_thickness() && preset.material.is_half_space()))
         .map(|(m, s)| of_load(format!("mu* {}", m.name()), s, &s.mu_star))
         .collect();
     let (x, y) = against_load(preset, "mu*", "");

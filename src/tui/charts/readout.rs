@@ -59,7 +59,7 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     let mut items = vec![format!(
         "{} = {}",
         x_axis.label,
-        value(x_axis.scale.value_at(xp), x_axis.unit)
+        format_si(x_axis.scale.value_at(xp), x_axis.unit)
     )];
     for f in frames {
         let unit = f.plot.y.unit;

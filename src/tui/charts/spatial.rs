@@ -61,21 +61,27 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
     let along = |v: &[f64]| zip(&f.x, &v[row * f.n..(row + 1) * f.n]);
     let y = format_si(f.y[row], "m");
     let x = || axis("x", "m", Scale::Linear);
+    let (p, u) = (along(&f.pressure), along(&f.shape));
+    let crest = |points: &[(f64, f64)]| {
+        crest(points).map_or(String::new(), |c| {
+            format!(", crest x = {}", format_si(c, "m"))
+        })
+    };
     Ok(Figure::Plots(vec![
         Plot::new(
             x(),
             axis("p", "Pa", Scale::Linear),
             vec![Series {
-                name: format!("pressure along y = {y}"),
-                points: along(&f.pressure),
+                name: format!("p along y = {y}{}", crest(&p)),
+                points: p,
             }],
         ),
         Plot::new(
             x(),
             axis("U", "m", Scale::Linear),
             vec![Series {
-                name: "shape U".into(),
-                points: along(&f.shape),
+                name: format!("shape U{}", crest(&u)),
+                points: u,
             }],
         ),
     ]))
@@ -149,6 +155,19 @@ pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
     Ok(Figure::Plots(vec![plot]))
 }
 
+/// Where a sampled curve peaks, between its grid points: the vertex of the parabola through the
+/// highest point and its neighbours (exact to O(h^2) for a smooth crest), so that a phase lead
+/// smaller than the grid spacing can be read. None at the ends of the samples or for a flat
+/// curve.
+fn crest(points: &[(f64, f64)]) -> Option<f64> {
+    let i =
+        (1..points.len().saturating_sub(1)).max_by(|&a, &b| points[a].1.total_cmp(&points[b].1))?;
+    let (a, b, c) = (points[i - 1], points[i], points[i + 1]);
+    let curvature = a.1 - 2.0 * b.1 + c.1;
+    (curvature < 0.0 && b.1 >= a.1 && b.1 >= c.1)
+        .then(|| b.0 + 0.5 * (c.0 - b.0) * (a.1 - c.1) / curvature)
+}
+
 /// The x ranges where a sweep has no value, each from the last point with a value before it to
 /// the first after it (or the sweep's end).
 fn gaps(x: &[f64], values: &[Option<f64>], label: &str) -> Vec<Shade> {
@@ -204,9 +223,11 @@ pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFi
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max)
     };
+    // against the range drawn, which holds the line c = 0
+    let drawn = hi.max(0.0) - lo.min(0.0);
     let coincide = d.drift_velocity[1..]
         .iter()
-        .all(|c| apart(c) < COINCIDE * (hi - lo).max(f64::MIN_POSITIVE));
+        .all(|c| apart(c) < COINCIDE * drawn.max(f64::MIN_POSITIVE));
     let degrees: Vec<String> = d
         .angles
         .iter()
@@ -214,10 +235,7 @@ pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFi
         .collect();
     let series = if coincide {
         vec![Series {
-            name: format!(
-                "c at {} deg: one line (they differ by less than a line width, see below)",
-                degrees.join(", ")
-            ),
+            name: format!("c at {} deg, one line (see below)", degrees.join("/")),
             points: zip(&d.k, first),
         }]
     } else {
@@ -252,7 +270,8 @@ pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFi
     if !coincide {
         return Ok(Figure::Plots(vec![plot]));
     }
-    // the direction dependence, too small to see above, as differences from the 0 deg line
+    // the direction dependence, less than a line width above, as differences from the 0 deg
+    // line
     let diff = Plot::new(
         x(),
         axis(&format!("c - c({} deg)", degrees[0]), "m/s", Scale::Linear),

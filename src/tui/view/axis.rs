@@ -125,8 +125,8 @@ fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(u16, Stri
 }
 
 /// The x ticks of the shared axis: as many labels as fit on the label row with the axis title
-/// (at least three when they can be had by leaving "(log)" out of the title: the labels show
-/// it).
+/// (a label under the title is left out; "(log)" is left out of the title when that shows more
+/// labels: the labels show it).
 pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
     let x = &frame.plot.x;
     let width = plot_width + left;
@@ -147,15 +147,12 @@ pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
     };
     let shown = |t: &Ticks| place_x(t, frame.x, left, width).0.len();
     let all = |t: &Ticks| shown(t) == t.ticks.len();
-    let every = || candidates(false).chain(candidates(true));
-    every()
-        .find(|t| all(t) && t.ticks.len() >= 3)
-        .or_else(|| {
-            // the most labels, the first of equals
-            every().fold(None, |best: Option<Ticks>, t| match best {
-                Some(b) if shown(&b) >= shown(&t) => Some(b),
-                _ => Some(t),
-            })
+    // the most labels; of equals, all of them shown, then the full title
+    candidates(false)
+        .chain(candidates(true))
+        .fold(None, |best: Option<Ticks>, t| match best {
+            Some(b) if (shown(&b), all(&b)) >= (shown(&t), all(&t)) => Some(b),
+            _ => Some(t),
         })
         .unwrap_or_else(|| ticks(frame.x, x.scale, &x.label, x.unit, 2))
 }

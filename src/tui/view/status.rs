@@ -155,10 +155,17 @@ fn spatial(
     let c = &st.contact;
     let kind = if c.exact { "certified" } else { "bound" };
     let p_min = format!("p_min = {} ({kind})", format_si(c.min_pressure, "Pa"));
+    // beside a certified minimum, the bound where it differs, so that the gap can be read
+    let bound = format_si(c.lower_bound, "Pa");
+    let bound = (c.exact && bound != format_si(c.min_pressure, "Pa"))
+        .then(|| format!("lower bound {bound}"));
     let (items, verdict) = if c.complete {
-        (vec![format!("complete contact, {p_min}")], style.ok())
+        let mut items = vec![format!("complete contact, {p_min}")];
+        items.extend(bound);
+        (items, style.ok())
     } else {
         let mut items = vec![format!("contact lost: {p_min}")];
+        items.extend(bound);
         items.extend(
             c.complete_after
                 .map(|t| format!("complete after t = {}", format_si(t, "s"))),
