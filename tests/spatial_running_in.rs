@@ -316,3 +316,60 @@ fn thinned_snapshots_replay_the_same_states() {
         assert_eq!(a.pressure, b.pressure);
     }
 }
+
+#[test]
+fn a_running_in_extended_in_parts_takes_the_same_steps() {
+    // the explorer steps the running-in in parts (stopped by newer requests, resumed later): the
+    // same samples, time to complete contact and states as one call, to the bit
+    let input = westergaard_wave(0.3, 0.0);
+    let setup = Setup::new(&input, 128).unwrap();
+    let whole = go(&setup);
+    let stepping = whole.stepping.unwrap();
+    let mut parts = RunningIn::start(&setup, Some(stepping)).unwrap();
+    assert!(!parts.finished());
+    // stopped after every third step, then asked up to a time, then to the end
+    let mut calls = 0;
+    let mut stop_every_third = |_: &RunningIn| {
+        calls += 1;
+        if calls % 3 == 0 {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    };
+    for _ in 0..4 {
+        parts.extend(f64::INFINITY, &mut stop_every_third).unwrap();
+    }
+    assert_eq!(parts.samples.len(), 13);
+    let t = 20.5 * stepping.dt;
+    parts.extend(t, &mut |_| ControlFlow::Continue(())).unwrap();
+    assert_eq!(
+        parts.samples.len(),
+        22,
+        "stepped to the first step at or after t"
+    );
+    // the last stepped state without the replay: state_at interpolates by t/dt - 21, which is
+    // round-off, so the two agree to round-off
+    let (end, replayed) = (
+        parts.end_state().unwrap(),
+        whole.state_at(parts.end_time()).unwrap(),
+    );
+    let p_max = end.outputs.max_pressure;
+    let apart = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    };
+    assert!(apart(&end.pressure, &replayed.pressure) < 1e-12 * p_max);
+    assert_eq!(end.contact(), replayed.contact());
+    parts
+        .extend(f64::INFINITY, &mut |_| ControlFlow::Continue(()))
+        .unwrap();
+    assert!(parts.finished());
+    assert_eq!(parts.samples, whole.samples);
+    assert_eq!(parts.time_to_complete, whole.time_to_complete);
+    for t in [0.0, t, 0.5 * whole.time_to_complete.unwrap(), 1e3] {
+        assert_eq!(parts.state_at(t).unwrap(), whole.state_at(t).unwrap());
+    }
+}

@@ -9,6 +9,8 @@
 //! between steps; from the first complete step on, every Fourier mode of the worn shape follows
 //! the closed form U^(t) = U^(t1) exp(-k_w (t - t1)/(A - i mu sx B)).
 
+mod extend;
+
 use std::ops::ControlFlow;
 
 use serde::Serialize;
@@ -19,7 +21,7 @@ use crate::physics::spatial::harmonic::evolution;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::active_set::{ContactProblem, ContactSolution, solve};
 use crate::physics::spatial::partial::operator::Operator;
-use crate::physics::spatial::partial::state::{Outputs, State, evaluate};
+use crate::physics::spatial::partial::state::{Outputs, State};
 
 /// Steps per decay time 1/beta_max of the fastest harmonic: dt = 0.02/beta_max (section 5: BDF2
 /// with beta dt <= 0.02 gives the time to complete contact to about 5e-4).
@@ -206,7 +208,12 @@ pub struct RunningIn {
     /// The time [s] from which the closed form holds (the first complete state); None while
     /// partial at the end.
     pub complete_from: Option<f64>,
+    /// U_k [m] of the last stepped state.
     end_shape: Vec<f64>,
+    /// U_{k-1} [m] and the contact set of the last stepped state (where [`RunningIn::extend`]
+    /// goes on from).
+    end_previous: Option<Vec<f64>>,
+    end_contact: Vec<bool>,
     snapshots: Vec<Snapshot>,
     stride: usize,
 }
@@ -227,66 +234,22 @@ pub fn run_in_with(
     stepping: Option<Stepping>,
     progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
 ) -> Result<RunningIn, Stopped> {
-    let mut op = setup.operator();
-    let first = setup.state(&mut op, setup.initial_shape.clone(), 0.0, None)?;
-    let mut run = RunningIn {
-        setup: setup.clone(),
-        stepping,
-        samples: vec![Sample {
-            time: 0.0,
-            outputs: first.outputs,
-        }],
-        time_to_complete: None,
-        complete_from: first.outputs.complete.then_some(0.0),
-        end_shape: setup.initial_shape.clone(),
-        snapshots: vec![Snapshot {
-            step: 0,
-            previous: None,
-            shape: setup.initial_shape.clone(),
-            contact: first.contact(),
-        }],
-        stride: 1,
-    };
-    let Some(stepping) = stepping.filter(|_| !first.outputs.complete) else {
-        return Ok(run);
-    };
-    let m0 = first.outputs.min_pressure_complete;
-    let pbar = setup.inputs.mean_pressure;
-    let friction = setup.inputs.friction;
-    let mut stepper = Stepper::new(
-        setup,
-        stepping.dt,
-        0,
-        None,
-        setup.initial_shape.clone(),
-        first.contact(),
-    );
-    while stepper.step < stepping.max_steps {
-        let (sol, mean_gap) = stepper.advance()?;
-        let (outputs, _) = evaluate(
-            &mut stepper.op,
-            &stepper.current,
-            pbar,
-            &friction,
-            &sol,
-            mean_gap,
-        );
-        let time = stepper.step as f64 * stepping.dt;
-        let before = run.samples.last().expect("t = 0 is sampled").outputs;
-        run.samples.push(Sample { time, outputs });
-        if outputs.complete {
-            let (m1, m2) = (before.min_pressure_complete, outputs.min_pressure_complete);
-            run.time_to_complete = Some(time - stepping.dt * m2 / (m2 - m1));
-            run.complete_from = Some(time);
-            break;
+    let mut run = RunningIn::start(setup, stepping)?;
+    let m0 = run.samples[0].outputs.min_pressure_complete;
+    let mut cancelled = false;
+    run.extend(f64::INFINITY, &mut |run: &RunningIn| {
+        let m = run.samples.last().expect("t = 0 is sampled").outputs;
+        let done = (1.0 - m.min_pressure_complete / m0).clamp(0.0, 1.0);
+        cancelled = progress(done).is_break();
+        if cancelled {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
         }
-        run.keep(&stepper, stepping.memory);
-        let done = (1.0 - outputs.min_pressure_complete / m0).clamp(0.0, 1.0);
-        if progress(done).is_break() {
-            return Err(Stopped::Cancelled);
-        }
+    })?;
+    if cancelled {
+        return Err(Stopped::Cancelled);
     }
-    run.end_shape = stepper.current;
     Ok(run)
 }
 
