@@ -1,35 +1,50 @@
 //! The incremental engine behind the explorer: the library's pipeline stages
 //! (`plane::operating_point`, `sweep`, `spatial::evolutions`, `spatial::state_at`, `history`,
-//! `dispersion`), each cached by the typed inputs it depends on, so an edit recomputes only what it
-//! touches; and a background worker that always works on the newest request and answers in
-//! stages, the operating point (what the status shows) first.
+//! `dispersion`, and on the period cell the running-in and mu*(pbar) of `spatial::partial`), each
+//! cached by the typed inputs it depends on, so an edit recomputes only what it touches; and a
+//! background worker that always works on the newest request and answers in stages, what the
+//! status shows first. Long work (the running-in) reports progress and stops when a newer request
+//! arrives.
 
-use std::collections::VecDeque;
+mod cache;
+mod cell;
+
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread;
+use std::time::Duration;
 
 use crate::physics::plane::sweep::{Sweep, sweep};
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History, dispersion, history};
+use crate::physics::spatial::partial::history::History as RunHistory;
+use crate::physics::spatial::partial::state::State;
+use crate::physics::spatial::partial::sweep::LoadCurve;
 use crate::physics::spatial::{self, SpatialInputs, SpatialState, StateAt, state_at};
 use crate::physics::{Friction, Material, SolveError, SweepRange};
 use crate::preset::{Preset, Problem};
+use cache::Cache;
+use cell::{Ask, CellKey, Run};
+
+pub use cell::{CellOutput, Progress};
 
 /// Points of the plane profile drawn by the explorer.
 pub const PROFILE_POINTS: usize = 201;
 /// Points of the dispersion curves.
 pub const DISPERSION_POINTS: usize = 120;
-/// Points of the spatial time history.
+/// Points of the spatial time history (and of the closed-form part of a running-in's).
 pub const HISTORY_POINTS: usize = 200;
+/// Progress of long work is delivered at most this often.
+pub const PROGRESS_EVERY: Duration = Duration::from_millis(100);
 
 /// What the explorer asks the engine for.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Request {
     /// The preset to solve; its `problem` says which.
     pub preset: Preset,
-    /// Also sweep the plane models other than the preset's (the overlays of mu*(P)); asked only
-    /// while a chart that draws them is visible.
+    /// Also compute what only one chart draws, asked only while it is visible: the plane models
+    /// other than the preset's (the overlays of mu*(P)); the spatial mu*(pbar) on the period
+    /// cell.
     pub overlays: bool,
 }
 
@@ -53,6 +68,9 @@ pub struct SpatialOutput {
     pub history: Option<Arc<History>>,
     /// Drift velocity against wavenumber and direction.
     pub dispersion: Arc<Dispersion>,
+    /// The contact solved on the period cell (partial contact, the running-in); Err: why it is
+    /// not (no period cell, a grid too coarse), and the closed form alone is known.
+    pub cell: Result<CellOutput, SolveError>,
 }
 
 /// The engine's answer to one request, at one stage.
@@ -91,41 +109,16 @@ pub struct StageCounts {
     pub history: usize,
     /// Spatial states at time t (with field, contact check and mean-pressure sweep).
     pub state: usize,
-}
-
-/// A cache of the latest `capacity` values by key: a hit moves its entry to the front, a new
-/// entry pushes out the least recently used one.
-struct Cache<K, V> {
-    entries: VecDeque<(K, V)>,
-    capacity: usize,
-}
-
-impl<K: PartialEq, V: Clone> Cache<K, V> {
-    fn new(capacity: usize) -> Self {
-        Cache {
-            entries: VecDeque::with_capacity(capacity + 1),
-            capacity,
-        }
-    }
-
-    fn get(&mut self, key: &K) -> Option<V> {
-        let i = self.entries.iter().position(|(k, _)| k == key)?;
-        let entry = self.entries.remove(i)?;
-        let value = entry.1.clone();
-        self.entries.push_front(entry);
-        Some(value)
-    }
-
-    fn get_or(&mut self, key: K, counter: &mut usize, compute: impl FnOnce() -> V) -> V {
-        if let Some(v) = self.get(&key) {
-            return v;
-        }
-        *counter += 1;
-        let v = compute();
-        self.entries.push_front((key, v.clone()));
-        self.entries.truncate(self.capacity);
-        v
-    }
+    /// Running-ins started on the period cell (each one contact solve at t = 0).
+    pub running_in: usize,
+    /// Wear steps of the running-ins.
+    pub wear_steps: usize,
+    /// Contact states at time t on the period cell (replayed from a running-in).
+    pub contact_state: usize,
+    /// Running-in histories over the duration, once the stepping is over.
+    pub cell_history: usize,
+    /// mu*(pbar) curves on the period cell.
+    pub load_curve: usize,
 }
 
 /// What the harmonic responses and the dispersion curves depend on.
@@ -162,8 +155,14 @@ pub struct Engine {
     responses: Cache<ResponseKey, Responses>,
     histories: Cache<(SpatialInputs, f64), Arc<History>>,
     states: Cache<(SpatialInputs, StateAt), Result<Arc<SpatialState>, SolveError>>,
+    runs: Cache<CellKey, Result<Run, SolveError>>,
+    contact_states: Cache<(CellKey, f64), Result<Arc<State>, SolveError>>,
+    run_histories: Cache<(CellKey, f64), Result<Arc<RunHistory>, SolveError>>,
+    load_curves: Cache<(CellKey, f64, SweepRange), Result<Arc<LoadCurve>, SolveError>>,
     /// Stage evaluation counts.
     pub counts: StageCounts,
+    /// Progress of long work is delivered at most this often (`PROGRESS_EVERY`).
+    pub progress_every: Duration,
 }
 
 impl Default for Engine {
@@ -178,7 +177,8 @@ pub type Proceed = bool;
 impl Engine {
     /// An engine with empty caches: 8 operating points, 6 sweeps (two settings of three models),
     /// 4 sets of harmonic responses, 4 histories and 2 spatial states (a 512-point grid holds
-    /// 6 MB).
+    /// 6 MB); on the period cell 2 running-ins (each keeps at most 32 MiB of snapshots), 4
+    /// contact states, 4 running-in histories and 4 mu*(pbar) curves.
     pub fn new() -> Engine {
         Engine {
             points: Cache::new(8),
@@ -186,7 +186,12 @@ impl Engine {
             responses: Cache::new(4),
             histories: Cache::new(4),
             states: Cache::new(2),
+            runs: Cache::new(2),
+            contact_states: Cache::new(4),
+            run_histories: Cache::new(4),
+            load_curves: Cache::new(4),
             counts: StageCounts::default(),
+            progress_every: PROGRESS_EVERY,
         }
     }
 
@@ -201,12 +206,23 @@ impl Engine {
     }
 
     /// Solves a request stage by stage: `deliver(output, complete)` gets what is known after the
-    /// stage the status needs (the operating point, the state at t) and again when the rest is
-    /// done; when it returns false, the remaining stages are skipped.
+    /// stage the status needs (the operating point, the state at t), the progress of long work,
+    /// and again when the rest is done; when it returns false, the remaining stages are skipped.
     pub fn run_staged(&mut self, request: &Request, deliver: impl FnMut(Output, bool) -> Proceed) {
+        self.run_cancellable(request, &|| false, deliver);
+    }
+
+    /// As [`Engine::run_staged`], and long work also stops between two of its steps when
+    /// `cancelled()` (a newer request waits); what it did is kept for the next request.
+    pub fn run_cancellable(
+        &mut self,
+        request: &Request,
+        cancelled: &dyn Fn() -> bool,
+        deliver: impl FnMut(Output, bool) -> Proceed,
+    ) {
         match request.preset.problem {
             Problem::Plane => self.plane(request, deliver),
-            Problem::Spatial => self.spatial(&request.preset, deliver),
+            Problem::Spatial => self.spatial(request, cancelled, deliver),
         }
     }
 
@@ -254,7 +270,13 @@ impl Engine {
         deliver(Output::Plane(out), true);
     }
 
-    fn spatial(&mut self, preset: &Preset, mut deliver: impl FnMut(Output, bool) -> Proceed) {
+    fn spatial(
+        &mut self,
+        request: &Request,
+        cancelled: &dyn Fn() -> bool,
+        mut deliver: impl FnMut(Output, bool) -> Proceed,
+    ) {
+        let preset = &request.preset;
         let inputs = preset.spatial_inputs();
         if let Err(e) = inputs.validate() {
             deliver(Output::Spatial(Err(e)), true);
@@ -280,12 +302,30 @@ impl Engine {
             }
         };
         let duration = preset.spatial.duration;
+        let key = CellKey {
+            inputs: inputs.clone(),
+            grid: at.grid,
+        };
+        let sweep = &at.sweep;
+        let pressures = state.sweep.mean_pressure.clone();
+        let ask = Ask {
+            key: &key,
+            time: at.time,
+            duration,
+            curve: request.overlays.then_some((sweep, pressures.as_slice())),
+        };
         let mut out = SpatialOutput {
-            state,
             history: self.histories.get(&(inputs.clone(), duration)),
             dispersion: Arc::clone(&responses.1),
+            cell: self.cell_now(&ask),
+            state,
         };
-        if out.history.is_some() {
+        let cell_done = |out: &SpatialOutput| {
+            out.cell
+                .as_ref()
+                .map_or(true, |c| c.done(ask.curve.is_some()))
+        };
+        if out.history.is_some() && cell_done(&out) {
             deliver(Output::Spatial(Ok(out)), true);
             return;
         }
@@ -298,15 +338,22 @@ impl Engine {
             &mut self.counts.history,
             || Arc::new(history(&inputs, evolutions, duration, HISTORY_POINTS)),
         ));
-        deliver(Output::Spatial(Ok(out)), true);
+        if cell_done(&out) {
+            deliver(Output::Spatial(Ok(out)), true);
+            return;
+        }
+        self.cell_rest(&ask, cancelled, &mut |cell, complete| {
+            out.cell = Ok(cell);
+            deliver(Output::Spatial(Ok(out.clone())), complete)
+        });
     }
 }
 
 type Slot = Arc<(Mutex<Option<(u64, Arc<Request>)>>, Condvar)>;
 
 /// A background thread running the engine: one job at a time, one pending slot that a newer
-/// request overwrites (older pending work is dropped unseen). A job stops after its first
-/// delivery when a newer request is waiting.
+/// request overwrites (older pending work is dropped unseen). A job stops after a delivery, or
+/// between two steps of long work, when a newer request is waiting.
 pub struct Worker {
     slot: Slot,
 }
@@ -332,7 +379,7 @@ impl Worker {
                     pending.take().expect("checked above")
                 };
                 let mut listening = true;
-                engine.run_staged(&request, |output, complete| {
+                engine.run_cancellable(&request, &newer_waits, |output, complete| {
                     listening = deliver(Answer {
                         generation,
                         request: Arc::clone(&request),

@@ -179,3 +179,181 @@ fn the_cache_keeps_the_latest_eight_operating_points() {
     engine.run(&full(&preset));
     assert_eq!(engine.counts.operating_point, 10);
 }
+
+// --- the period cell: partial contact and the running-in (issue 14) ---
+
+use std::cell::Cell;
+
+use wearlab::engine::{CellOutput, Progress};
+
+/// The cell output of a spatial answer.
+fn cell(output: &Output) -> &CellOutput {
+    let Output::Spatial(Ok(out)) = output else {
+        panic!("a spatial answer")
+    };
+    out.cell.as_ref().expect("solved on the period cell")
+}
+
+#[test]
+fn a_time_step_replays_the_cached_running_in() {
+    let mut engine = Engine::new();
+    let mut preset = bundled("contact-lost.toml");
+    let out = engine.run(&full(&preset));
+    let c = cell(&out);
+    let state = c.state.as_ref().unwrap();
+    // the preset's premise: half the cell touches at t = 0 (its description)
+    assert!(!state.outputs.complete && (0.4..0.6).contains(&state.outputs.contact_fraction));
+    assert_eq!(c.progress, Progress::Done);
+    let t_cc = c.history.as_ref().unwrap().time_to_complete.unwrap();
+    let steps = engine.counts.wear_steps;
+    assert_eq!(
+        (engine.counts.running_in, engine.counts.contact_state),
+        (1, 1)
+    );
+    assert!(steps > 10, "{steps} wear steps");
+    // the time only replays the running-in: no new running-in, no new wear step
+    for t in [10.0, 0.5 * t_cc, t_cc + 1.0, 90.0] {
+        preset.spatial.time = t;
+        let out = engine.run(&full(&preset));
+        let state = cell(&out).state.as_ref().unwrap();
+        assert_eq!(state.time, t);
+        assert_eq!(state.outputs.complete, t > t_cc, "t = {t}");
+    }
+    assert_eq!(
+        (
+            engine.counts.running_in,
+            engine.counts.wear_steps,
+            engine.counts.contact_state
+        ),
+        (1, steps, 5)
+    );
+    // the physics starts another
+    preset.spatial.mean_pressure *= 1.1;
+    engine.run(&full(&preset));
+    assert_eq!(engine.counts.running_in, 2);
+}
+
+#[test]
+fn an_input_change_cancels_the_running_in_and_a_time_change_resumes_it() {
+    let mut engine = Engine::new();
+    let mut preset = bundled("contact-lost.toml");
+    preset.spatial.time = 30.0;
+    // a newer request arrives during the fourth wear step: the request stops after it,
+    // unanswered to the end
+    let calls = Cell::new(0);
+    let after_three = || {
+        calls.set(calls.get() + 1);
+        calls.get() > 3
+    };
+    let mut last = None;
+    engine.run_cancellable(&full(&preset), &after_three, |output, complete| {
+        last = Some((cell(&output).progress, complete));
+        true
+    });
+    assert_eq!(engine.counts.wear_steps, 4);
+    let Some((Progress::Running { towards, .. }, false)) = last else {
+        panic!("{last:?}")
+    };
+    assert_eq!(towards, Some(30.0), "still on the way to t");
+    // the newer request changes only the time: it goes on from the fourth step, to the same end
+    preset.spatial.time = 40.0;
+    let out = engine.run(&full(&preset));
+    assert_eq!(cell(&out).state.as_ref().unwrap().time, 40.0);
+    let resumed = engine.counts.wear_steps;
+    let mut fresh = Engine::new();
+    fresh.run(&full(&preset));
+    assert_eq!(engine.counts.running_in, 1);
+    assert_eq!(resumed, fresh.counts.wear_steps, "no step done twice");
+    // a request that changes the physics starts afresh and leaves the other kept
+    preset.friction.coefficient = 0.5;
+    calls.set(0);
+    engine.run_cancellable(&full(&preset), &after_three, |_, _| true);
+    assert_eq!(
+        (engine.counts.running_in, engine.counts.wear_steps),
+        (2, resumed + 4)
+    );
+}
+
+#[test]
+fn the_running_in_reports_its_progress() {
+    let mut engine = Engine::new();
+    engine.progress_every = Duration::ZERO;
+    let mut preset = bundled("contact-lost.toml");
+    preset.spatial.time = 30.0;
+    let mut seen = Vec::new();
+    engine.run_staged(&full(&preset), |output, complete| {
+        let c = cell(&output);
+        let time = c.state.as_ref().unwrap().time;
+        seen.push((c.progress, time, complete));
+        true
+    });
+    // first the state at t = 0 (t not reached yet), then every step towards t with the last
+    // stepped state, then the state at t while the stepping goes on to complete contact
+    assert_eq!(
+        seen[0],
+        (
+            Progress::Running {
+                reached: 0.0,
+                towards: Some(30.0)
+            },
+            0.0,
+            false
+        )
+    );
+    let (mut before, mut at_t) = (0.0, false);
+    for (progress, time, complete) in &seen[1..seen.len() - 1] {
+        assert!(!complete);
+        match progress {
+            Progress::Running {
+                reached,
+                towards: Some(t),
+            } => {
+                assert!(!at_t && *t == 30.0 && *reached > before && *time == *reached);
+                before = *reached;
+            }
+            Progress::Running {
+                reached,
+                towards: None,
+            } => {
+                at_t = true;
+                assert!(*reached >= 30.0 && *time == 30.0, "{seen:?}");
+            }
+            Progress::Done => assert_eq!(*time, 30.0),
+        }
+    }
+    assert!(at_t, "{seen:?}");
+    assert_eq!(*seen.last().unwrap(), (Progress::Done, 30.0, true));
+    // one delivery per step but the two that end a part (t reached, contact complete), one
+    // after each part, the first, and the last with mu*(pbar)
+    assert_eq!(seen.len(), engine.counts.wear_steps + 2, "{seen:?}");
+}
+
+#[test]
+fn the_worker_drops_a_running_in_when_a_newer_request_arrives() {
+    // an egg-box at an eighth of its complete-contact load, with friction, on 128 x 128 nodes:
+    // its running-in takes a few hundred wear steps of ~20 ms (README, "Speed")
+    let mut slow = bundled("jgh-egg-box.toml");
+    slow.spatial.mean_pressure = 1.2e7;
+    slow.friction.coefficient = 0.3;
+    slow.material.thickness = 5e-4;
+    slow.spatial.grid = 128;
+    let (tx, rx) = channel::<Answer>();
+    let worker = Worker::spawn(move |a| tx.send(a).is_ok());
+    worker.submit(1, full(&slow));
+    let first = rx.recv_timeout(Duration::from_secs(20)).unwrap();
+    assert_eq!((first.generation, first.complete), (1, false));
+    assert!(!cell(&first.output).state.as_ref().unwrap().outputs.complete);
+    // the newer request, while the first one is stepping its wear
+    worker.submit(2, full(&bundled("contact-lost.toml")));
+    loop {
+        let answer = rx.recv_timeout(Duration::from_secs(20)).unwrap();
+        assert!(
+            answer.generation == 2 || !answer.complete,
+            "the first request is dropped before its end"
+        );
+        if answer.generation == 2 && answer.complete {
+            assert_eq!(cell(&answer.output).progress, Progress::Done);
+            break;
+        }
+    }
+}

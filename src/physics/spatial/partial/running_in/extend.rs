@@ -49,7 +49,7 @@ impl RunningIn {
         self.complete_from.is_some()
             || self
                 .stepping
-                .is_none_or(|s| self.samples.len() - 1 >= s.max_steps)
+                .is_none_or(|s| self.samples.len() > s.max_steps)
     }
 
     /// Steps the wear on until the last stepped state is at time `until` [s] or later, or the
@@ -101,6 +101,10 @@ impl RunningIn {
                 break;
             }
             self.keep(&stepper, stepping.memory);
+            // the callback sees the running-in as it stands
+            self.end_shape.clone_from(&stepper.current);
+            self.end_previous.clone_from(&stepper.previous);
+            self.end_contact.clone_from(&stepper.contact);
             if progress(self).is_break() {
                 break;
             }
