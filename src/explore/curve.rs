@@ -1,0 +1,191 @@
+//! A curve for the explorer's sweep chart: one quantity against one parameter, for the preset's
+//! plane model and the other models as overlays (the spatial problem has one series), with the
+//! model's verdict at every point and the parameter values where it changes, located by
+//! bisection. Points run in parallel; a cancel flag is checked before each solve.
+//!
+//! The verdict is the library's own: `validity::check`'s `ok` for a plane model, the contact's
+//! `complete` for the spatial problem (where it is not, the contact is partial and solved through
+//! the running-in).
+
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use rayon::prelude::*;
+
+use crate::explore::axis::Axis;
+use crate::explore::locate::{between, bisect};
+use crate::explore::point::{self, Point};
+use crate::explore::quantity::QuantityKey;
+use crate::explore::sweep::preset_at;
+use crate::physics::plane::Model;
+use crate::preset::{Preset, Problem};
+
+/// What to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveSpec {
+    /// The parameter on the x axis and its range.
+    pub axis: Axis,
+    /// The quantity on the y axis.
+    pub quantity: QuantityKey,
+    /// Plane: the models to draw, the main one first (usually the preset's, then the overlays).
+    /// Spatial: ignored (one series).
+    pub models: Vec<Model>,
+}
+
+/// Where a series' verdict changes between two points of the curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Change {
+    /// The parameter's value at the change (the axis's unit), to 2^-steps of the interval.
+    pub at: f64,
+    /// The verdict beyond it, in the direction of increasing x.
+    pub holds_after: bool,
+}
+
+/// One model's curve.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The plane model (None for the spatial problem).
+    pub model: Option<Model>,
+    /// The quantity at each x, or why there is none.
+    pub y: Vec<Result<f64, String>>,
+    /// The verdict at each x (None where there is no solution).
+    pub holds: Vec<Option<bool>>,
+    /// Where the verdict changes, in increasing x.
+    pub changes: Vec<Change>,
+}
+
+/// A computed curve.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Curve {
+    /// The parameter's values.
+    pub x: Vec<f64>,
+    /// The parameter's value in the preset (the marker).
+    pub current: f64,
+    /// One series per model, in the order of the spec.
+    pub series: Vec<Series>,
+}
+
+/// The verdict at a point: the model holds (plane), the contact is complete (spatial).
+pub fn holds(point: &Point) -> bool {
+    match point {
+        Point::Plane(p) => p.validity.ok,
+        Point::Spatial(s) => s.report.contact.complete,
+    }
+}
+
+/// Bisection steps: 2^-30 of an interval for the cheap solves, fewer for the strip model and the
+/// spatial running-in (each step a full solve).
+fn steps(preset: &Preset, model: Option<Model>) -> usize {
+    match (preset.problem, model) {
+        (Problem::Plane, Some(Model::Strip)) => 12,
+        (Problem::Plane, _) => 30,
+        (Problem::Spatial, _) => 16,
+    }
+}
+
+/// The preset at `values` of `axes`, with `model` for the plane problem, solved.
+pub fn solve_at(
+    base: &Preset,
+    axes: &[Axis],
+    values: &[f64],
+    model: Option<Model>,
+) -> Result<Point, String> {
+    let mut base = base.clone();
+    if let Some(m) = model {
+        base.plane.model = m;
+    }
+    let preset = preset_at(&base, axes, values)?;
+    point::solve(&preset).map_err(|e| e.to_string())
+}
+
+/// The quantity at a point and the verdict there.
+type Answer = (Result<f64, String>, Option<bool>);
+
+/// Computes the curve; None when `cancel` was set before it finished.
+pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<Curve> {
+    let models: Vec<Option<Model>> = match preset.problem {
+        Problem::Plane => spec.models.iter().copied().map(Some).collect(),
+        Problem::Spatial => vec![None],
+    };
+    let x = spec.axis.values();
+    let axes = [spec.axis];
+    let jobs: Vec<(usize, f64)> = (0..models.len())
+        .flat_map(|m| x.iter().map(move |v| (m, *v)))
+        .collect();
+    let answers: Vec<Option<Answer>> = jobs
+        .into_par_iter()
+        .map(|(m, v)| {
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            Some(match solve_at(preset, &axes, &[v], models[m]) {
+                Ok(p) => (spec.quantity.value(&p), Some(holds(&p))),
+                Err(why) => (Err(why), None),
+            })
+        })
+        .collect();
+    let answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
+    let mut series = Vec::new();
+    for (m, model) in models.iter().enumerate() {
+        let own = &answers[m * x.len()..(m + 1) * x.len()];
+        let holds: Vec<Option<bool>> = own.iter().map(|a| a.1).collect();
+        let changes = changes(preset, &spec.axis, &x, &holds, *model, cancel)?;
+        series.push(Series {
+            model: *model,
+            y: own.iter().map(|a| a.0.clone()).collect(),
+            holds,
+            changes,
+        });
+    }
+    Some(Curve {
+        current: preset.get(spec.axis.key).ok()?,
+        x,
+        series,
+    })
+}
+
+fn changes(
+    preset: &Preset,
+    axis: &Axis,
+    x: &[f64],
+    verdicts: &[Option<bool>],
+    model: Option<Model>,
+    cancel: &AtomicBool,
+) -> Option<Vec<Change>> {
+    let steps = steps(preset, model);
+    let found: Vec<Option<Option<Change>>> = (1..x.len())
+        .into_par_iter()
+        .map(|i| {
+            let (Some(a), Some(b)) = (verdicts[i - 1], verdicts[i]) else {
+                return Some(None);
+            };
+            if a == b {
+                return Some(None);
+            }
+            let value = |u: f64| between(axis.range.spacing, x[i - 1], x[i], u);
+            let side = |u: f64| {
+                if cancel.load(Ordering::Relaxed) {
+                    return None;
+                }
+                solve_at(preset, &[*axis], &[value(u)], model)
+                    .ok()
+                    .map(|p| holds(&p))
+            };
+            let u = bisect(steps, a, side);
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            Some(u.map(|u| Change {
+                at: value(u),
+                holds_after: b,
+            }))
+        })
+        .collect();
+    Some(
+        found
+            .into_iter()
+            .collect::<Option<Vec<_>>>()?
+            .into_iter()
+            .flatten()
+            .collect(),
+    )
+}

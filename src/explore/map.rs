@@ -1,0 +1,302 @@
+//! A regime map for the explorer: one quantity over two parameters, with the lines that matter
+//! drawn from the library's own verdicts:
+//! - theta = 0, between friction-dominated (theta > 0) and wear-dominated (theta < 0) contacts:
+//!   the sign of the wide model's theta (4.5) at the point (the preset model's when the wide model
+//!   has no solution there);
+//! - the validity boundaries of the wide and the narrow models: `validity::check`'s `ok` of each
+//!   model solved at the point (whatever the preset's model);
+//! - complete contact (spatial): the report's `contact.complete`.
+//!
+//! Each crossing between two computed points is located on its edge: in the final pass by
+//! bisection on the verdict for the plane lines (each step a wide or narrow solve, cheap), by
+//! linear interpolation of the smallest complete-contact pressure (0 on the line) for the spatial
+//! one; in the coarse passes at the middle of the edge (plane) or by the same interpolation.
+//!
+//! The map is computed coarse first and refined: the first pass takes every `stride`-th point of
+//! each axis (about three per side, both ends always included), each later pass halves the
+//! stride, keeping what is computed. `on_pass` receives the map after each pass; a cancel flag is checked
+//! before every solve.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use rayon::prelude::*;
+
+use crate::explore::axis::Axis;
+use crate::explore::curve::{holds, solve_at};
+use crate::explore::locate::{Node, Segment, between, bisect, contour};
+use crate::explore::point::Point;
+use crate::explore::quantity::QuantityKey;
+use crate::physics::plane::Model;
+use crate::preset::{Preset, Problem};
+
+/// What to map.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapSpec {
+    /// The parameter along x and its range.
+    pub x: Axis,
+    /// The parameter along y and its range.
+    pub y: Axis,
+    /// The quantity shown.
+    pub quantity: QuantityKey,
+}
+
+/// What is known at one point of the map.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sample {
+    /// The quantity (the preset's model), or why there is none.
+    pub value: Result<f64, String>,
+    /// Plane: theta (4.5), > 0 friction dominates, < 0 wear dominates.
+    pub theta: Option<f64>,
+    /// Plane: whether the wide model holds here (None: no wide solution).
+    pub wide_holds: Option<bool>,
+    /// Plane: whether the narrow model holds here (None: no narrow solution, e.g. h = inf).
+    pub narrow_holds: Option<bool>,
+    /// Spatial: whether the contact is complete.
+    pub complete: Option<bool>,
+    /// Spatial: the smallest complete-contact pressure p_cc [Pa] (negative where partial).
+    pub min_pressure: Option<f64>,
+}
+
+/// Which line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LineKind {
+    /// theta = 0.
+    ThetaZero,
+    /// Where the model's validity check changes.
+    Validity(Model),
+    /// Where complete contact is lost (spatial).
+    CompleteContact,
+}
+
+/// A line on the map: segments in the parameters' units (x, y).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Line {
+    /// Which line.
+    pub kind: LineKind,
+    /// Its pieces.
+    pub segments: Vec<Segment>,
+}
+
+/// A map, possibly still coarse.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Map {
+    /// The x parameter's values (all, computed or not).
+    pub x: Vec<f64>,
+    /// The y parameter's values.
+    pub y: Vec<f64>,
+    /// Row-major samples (x fastest), None where not computed yet.
+    pub samples: Vec<Option<Sample>>,
+    /// Grid steps between computed points (1 once complete).
+    pub stride: usize,
+    /// The lines, from the computed points.
+    pub lines: Vec<Line>,
+    /// The preset's own (x, y) (the marker).
+    pub current: [f64; 2],
+}
+
+impl Map {
+    /// The sample at grid point (i, j), or the nearest computed one while the map is coarse.
+    pub fn sample(&self, i: usize, j: usize) -> Option<&Sample> {
+        let near = |k: usize, n: usize| {
+            let idx = indices(n, self.stride);
+            idx.iter()
+                .copied()
+                .min_by_key(|m| m.abs_diff(k))
+                .unwrap_or(0)
+        };
+        let (i, j) = (near(i, self.x.len()), near(j, self.y.len()));
+        self.samples.get(j * self.x.len() + i)?.as_ref()
+    }
+}
+
+/// The grid indices computed at `stride`: every stride-th, and the last.
+fn indices(n: usize, stride: usize) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..n).step_by(stride.max(1)).collect();
+    if idx.last() != Some(&(n - 1)) {
+        idx.push(n - 1);
+    }
+    idx
+}
+
+/// The first stride: a power of two leaving about three points per side (so that a first screen
+/// of the strip model, each point a collocation solve, comes within 100 ms).
+fn first_stride(n: usize) -> usize {
+    let mut s = 1;
+    while (n - 1) / (2 * s) >= 2 {
+        s *= 2;
+    }
+    s
+}
+
+fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2]) -> Sample {
+    let axes = [spec.x, spec.y];
+    let solve = |model| solve_at(base, &axes, &at, model);
+    let main = match base.problem {
+        Problem::Plane => solve(Some(base.plane.model)),
+        Problem::Spatial => solve(None),
+    };
+    let value = main
+        .as_ref()
+        .map_err(Clone::clone)
+        .and_then(|p| spec.quantity.value(p));
+    if let Ok(Point::Spatial(s)) = &main {
+        return Sample {
+            value,
+            theta: None,
+            wide_holds: None,
+            narrow_holds: None,
+            complete: Some(s.report.contact.complete),
+            min_pressure: Some(s.report.contact.min_pressure),
+        };
+    }
+    // the wide and narrow models' own solutions, the preset's reused when it is one of them
+    let solved = |model: Model| match &main {
+        Ok(_) if base.plane.model == model => None,
+        _ => Some(solve(Some(model))),
+    };
+    let (wide, narrow) = (solved(Model::Wide), solved(Model::Narrow));
+    fn own<'a>(
+        other: &'a Option<Result<Point, String>>,
+        main: &'a Result<Point, String>,
+    ) -> Option<&'a Point> {
+        match other {
+            Some(r) => r.as_ref().ok(),
+            None => main.as_ref().ok(),
+        }
+    }
+    let main_theta = || main.as_ref().ok().and_then(theta_of);
+    Sample {
+        value,
+        theta: own(&wide, &main).and_then(theta_of).or_else(main_theta),
+        wide_holds: own(&wide, &main).map(holds),
+        narrow_holds: own(&narrow, &main).map(holds),
+        complete: None,
+        min_pressure: None,
+    }
+}
+
+fn theta_of(p: &Point) -> Option<f64> {
+    match p {
+        Point::Plane(p) => p.solution.theta,
+        Point::Spatial(_) => None,
+    }
+}
+
+/// Computes the map pass by pass; None when `cancel` was set before it finished.
+pub fn regime_map(
+    preset: &Preset,
+    spec: &MapSpec,
+    cancel: &AtomicBool,
+    on_pass: &mut dyn FnMut(&Map),
+) -> Option<Map> {
+    let (x, y) = (spec.x.values(), spec.y.values());
+    let (nx, ny) = (x.len(), y.len());
+    let mut map = Map {
+        current: [preset.get(spec.x.key).ok()?, preset.get(spec.y.key).ok()?],
+        samples: vec![None; nx * ny],
+        stride: first_stride(nx.max(ny)),
+        lines: Vec::new(),
+        x,
+        y,
+    };
+    loop {
+        let todo: Vec<usize> = indices(ny, map.stride)
+            .iter()
+            .flat_map(|&j| indices(nx, map.stride).into_iter().map(move |i| j * nx + i))
+            .filter(|&k| map.samples[k].is_none())
+            .collect();
+        let found: Vec<Option<(usize, Sample)>> = todo
+            .into_par_iter()
+            .map(|k| {
+                if cancel.load(Ordering::Relaxed) {
+                    return None;
+                }
+                Some((k, sample(preset, spec, [map.x[k % nx], map.y[k / nx]])))
+            })
+            .collect();
+        for (k, s) in found.into_iter().collect::<Option<Vec<_>>>()? {
+            map.samples[k] = Some(s);
+        }
+        map.lines = lines(preset, spec, &map, cancel)?;
+        on_pass(&map);
+        if map.stride == 1 {
+            return Some(map);
+        }
+        map.stride /= 2;
+    }
+}
+
+/// Bisection steps locating a line on an edge of the final pass: 2^-20 of the edge.
+const BISECTIONS: usize = 20;
+
+/// A verdict at a sample.
+type Verdict = fn(&Sample) -> Option<bool>;
+
+fn lines(preset: &Preset, spec: &MapSpec, map: &Map, cancel: &AtomicBool) -> Option<Vec<Line>> {
+    let kinds: Vec<(LineKind, Verdict)> = match preset.problem {
+        Problem::Plane => vec![
+            (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
+            (LineKind::Validity(Model::Wide), |s| s.wide_holds),
+            (LineKind::Validity(Model::Narrow), |s| s.narrow_holds),
+        ],
+        Problem::Spatial => vec![(LineKind::CompleteContact, |s| s.complete)],
+    };
+    let (xs, ys) = (
+        indices(map.x.len(), map.stride),
+        indices(map.y.len(), map.stride),
+    );
+    let at = |n: Node| -> Option<&Sample> { map.samples[ys[n.1] * map.x.len() + xs[n.0]].as_ref() };
+    let point = |a: Node, b: Node, u: f64| {
+        [
+            between(spec.x.range.spacing, map.x[xs[a.0]], map.x[xs[b.0]], u),
+            between(spec.y.range.spacing, map.y[ys[a.1]], map.y[ys[b.1]], u),
+        ]
+    };
+    let mut out = Vec::new();
+    for (kind, verdict) in kinds {
+        let side = |n: Node| at(n).and_then(verdict);
+        let locate = |a: Node, b: Node| -> Option<[f64; 2]> {
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            let u = match kind {
+                LineKind::CompleteContact => {
+                    let (pa, pb) = (at(a)?.min_pressure?, at(b)?.min_pressure?);
+                    (pa / (pa - pb)).clamp(0.0, 1.0)
+                }
+                // a coarse pass is replaced soon: the middle of the edge is enough
+                _ if map.stride > 1 => 0.5,
+                _ => bisect(BISECTIONS, side(a)?, |u| {
+                    if cancel.load(Ordering::Relaxed) {
+                        return None;
+                    }
+                    verdict_at(preset, spec, point(a, b, u), kind)
+                })?,
+            };
+            Some(point(a, b, u))
+        };
+        let segments = contour(xs.len(), ys.len(), &side, &locate);
+        if cancel.load(Ordering::Relaxed) {
+            return None;
+        }
+        out.push(Line { kind, segments });
+    }
+    Some(out)
+}
+
+/// A plane line's verdict at a point between samples: the sign of theta (the wide model's, else
+/// the preset model's), or whether the model holds.
+fn verdict_at(base: &Preset, spec: &MapSpec, at: [f64; 2], kind: LineKind) -> Option<bool> {
+    let axes = [spec.x, spec.y];
+    let solve = |model: Model| solve_at(base, &axes, &at, Some(model)).ok();
+    match kind {
+        LineKind::ThetaZero => {
+            let theta = |model: Model| solve(model).and_then(|p| theta_of(&p));
+            theta(Model::Wide)
+                .or_else(|| theta(base.plane.model))
+                .map(|t| t > 0.0)
+        }
+        LineKind::Validity(model) => solve(model).map(|p| holds(&p)),
+        LineKind::CompleteContact => None,
+    }
+}
