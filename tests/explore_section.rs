@@ -175,3 +175,44 @@ fn sweep_without_vary_runs_the_section() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("has no [explore] section"));
 }
+
+#[test]
+fn the_section_opens_a_curve_or_a_map_and_the_groups_are_the_problems() {
+    use wearlab::explore::{Opening, opening, quantity};
+    let sweep = bundled("coating-thickness-sweep.toml").unwrap().unwrap();
+    let Some(Ok(Opening::Curve(spec))) = opening(&sweep) else {
+        panic!("a curve")
+    };
+    // the preset's strip model first, then the overlays
+    let names: Vec<&str> = spec.models.iter().map(|m| m.name()).collect();
+    assert_eq!(names, ["strip", "wide", "narrow"]);
+    let map = bundled("friction-or-wear-map.toml").unwrap().unwrap();
+    assert!(matches!(opening(&map), Some(Ok(Opening::Map(_)))));
+    // an edit that removes the quantity: the opening says why
+    let narrow = sweep.with_settings(&["plane.model=narrow"]).unwrap();
+    let mut broken = narrow.clone();
+    broken.explore.as_mut().unwrap().quantity =
+        wearlab::explore::QuantityKey::parse("theta", &sweep).unwrap();
+    assert!(
+        opening(&broken)
+            .unwrap()
+            .unwrap_err()
+            .contains("the narrow model has no theta")
+    );
+    assert!(opening(&bundled("hertz-check.toml").unwrap().unwrap()).is_none());
+    // the plane groups of issue 12: (a+b)/h, (a+b)/R, k m, mu chi, theta, P/(m R)
+    let symbols: Vec<&str> = quantity::groups(&sweep)
+        .iter()
+        .map(|q| q.quantity().symbol)
+        .collect();
+    assert_eq!(
+        symbols,
+        ["theta", "(a+b)/h", "(a+b)/R", "k m", "mu chi", "P/(m R)"]
+    );
+    let spatial = bundled("dispersion.toml").unwrap().unwrap();
+    let names: Vec<String> = quantity::groups(&spatial)
+        .iter()
+        .map(|q| q.to_string())
+        .collect();
+    assert!(names.contains(&"harmonics.3.kh".to_string()) && names.len() == 4 * 4);
+}

@@ -17,3 +17,51 @@ pub mod sweep;
 
 pub use axis::Axis;
 pub use quantity::{Quantity, QuantityKey};
+
+use crate::explore::curve::CurveSpec;
+use crate::explore::map::MapSpec;
+use crate::physics::plane::Model;
+use crate::preset::Preset;
+
+/// What a preset's `[explore]` section opens on.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Opening {
+    /// A sweep: the curve of the section's quantity, the preset's model first, then the other
+    /// plane models that apply (narrow and strip need a finite thickness).
+    Curve(CurveSpec),
+    /// A map over the section's two parameters.
+    Map(MapSpec),
+}
+
+/// The sweep or map of the preset's `[explore]` section, checked against the preset as it is now
+/// (None without the section; Err when an edit since broke it, e.g. the model changed to one
+/// without the quantity).
+pub fn opening(preset: &Preset) -> Option<Result<Opening, String>> {
+    let e = preset.explore.as_ref()?;
+    Some(e.check(preset).map(|()| match e.axes.as_slice() {
+        [x, y] => Opening::Map(MapSpec {
+            x: *x,
+            y: *y,
+            quantity: e.quantity,
+        }),
+        _ => Opening::Curve(CurveSpec {
+            axis: e.axes[0],
+            quantity: e.quantity,
+            models: models(preset, &e.axes[0]),
+        }),
+    }))
+}
+
+/// The preset's plane model, then the others that apply along `axis`: those needing a finite
+/// thickness (all but the wide one) only when the thickness is finite or is what varies.
+pub fn models(preset: &Preset, axis: &Axis) -> Vec<Model> {
+    let own = preset.plane.model;
+    let finite = !preset.material.is_half_space() || axis.key.param().key == "material.thickness";
+    std::iter::once(own)
+        .chain(
+            Model::ALL
+                .into_iter()
+                .filter(|m| *m != own && (finite || !m.needs_finite_thickness())),
+        )
+        .collect()
+}

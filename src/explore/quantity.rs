@@ -218,3 +218,12 @@ pub fn defaults(preset: &Preset) -> Vec<QuantityKey> {
         .filter(|k| DEFAULTS.contains(&k.quantity().name))
         .collect()
 }
+
+/// The dimensionless groups of the preset's problem (the explorer's dimensionless view); each
+/// quantity's `description` defines it in words.
+pub fn groups(preset: &Preset) -> Vec<QuantityKey> {
+    QuantityKey::all(preset)
+        .into_iter()
+        .filter(|k| k.quantity().group)
+        .collect()
+}
