@@ -238,3 +238,27 @@ fn the_strip_sweep_meets_the_wide_model_and_winkler() {
     }
     assert_eq!(checked, [2, 2]);
 }
+
+#[test]
+fn every_number_has_a_default_range_around_its_value() {
+    for file in [
+        "polymer-coating.toml",
+        "hertz-check.toml",
+        "dispersion.toml",
+    ] {
+        let p = preset(file);
+        for key in wearlab::preset::Key::all(&p) {
+            let param = key.param();
+            let axis = Axis::default_for(&p, key);
+            if param.choices().is_some() || param.is_whole() {
+                assert!(axis.is_err(), "{file} {key}");
+                continue;
+            }
+            let r = axis.unwrap_or_else(|e| panic!("{file} {key}: {e}")).range;
+            let v = p.get(key).unwrap();
+            if v.is_finite() && v > 0.0 {
+                assert!(r.min <= v && v <= r.max, "{file} {key}: {v} in {r:?}");
+            }
+        }
+    }
+}
