@@ -7,6 +7,7 @@
 //! q1 shear on the strip, positive in +x.
 
 pub mod collocation;
+pub mod criteria;
 pub mod energy;
 pub mod kernels;
 pub mod narrow;
