@@ -1,17 +1,21 @@
 //! The explorer's speed: drawing the full screen at 120x40; a keystroke that re-solves (update,
 //! the engine's stages, draw), each iteration at a load never solved before; and a load nudge on
 //! the wide model through the real loop (key into the channel, the worker thread, the answer back,
-//! the draw) until the new operating point is on screen.
+//! the draw) until the new operating point is on screen; in partial contact (issue 14), an edit of
+//! the mean pressure through the same loop until the first partial-contact state is on screen
+//! (closed form, the start of a running-in: one contact solve, the state at t), the previous
+//! running-in dropped by the key. Target: under 100 ms.
 
 use std::hint::black_box;
 use std::sync::mpsc::channel;
+use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::{Answer, Engine};
-use wearlab::preset::bundled;
+use wearlab::engine::{Answer, Engine, Output};
+use wearlab::preset::{Preset, bundled};
 
 // The explorer lives in the binary; the bench compiles the same modules (not the terminal set-up
 // and not the tests). Parts it does not call are allowed to be unused here.
@@ -144,5 +148,71 @@ fn bench(c: &mut Criterion) {
     });
 }
 
+/// True when the answer on screen is the newest request's and holds its partial-contact state.
+fn partial_on_screen(app: &App) -> bool {
+    let Some(shown) = &app.solve.shown else {
+        return false;
+    };
+    let Output::Spatial(Ok(out)) = &shown.output else {
+        return false;
+    };
+    shown.generation == app.solve.generation
+        && out
+            .cell
+            .as_ref()
+            .is_ok_and(|c| c.state.as_ref().is_ok_and(|s| !s.outputs.complete))
+}
+
+/// Each iteration starts from a mean pressure never solved before, so nothing is cached.
+fn edit_to_first_partial_state(c: &mut Criterion, name: &str, preset: Preset) {
+    let (tx, rx) = channel();
+    let keys = tx.clone();
+    let terminal = Terminal::new(TestBackend::new(120, 40)).unwrap();
+    let base = preset.spatial.mean_pressure;
+    let app = App::new(preset, None, Places::default());
+    let mut l = Loop::new(terminal, app, OPTIONS, tx, rx).unwrap();
+    while !partial_on_screen(&l.app) {
+        l.step().unwrap();
+    }
+    l.app.ui.selected = l
+        .app
+        .rows()
+        .iter()
+        .position(|r| r.param().key == "spatial.mean_pressure")
+        .unwrap();
+    let mut i = 0u64;
+    c.bench_function(name, |b| {
+        b.iter(|| {
+            i += 1;
+            l.app.doc.preset.spatial.mean_pressure = base * (1.0 + 1e-9 * i as f64);
+            let before = l.app.solve.generation;
+            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            while l.app.solve.generation == before || !partial_on_screen(&l.app) {
+                l.step().unwrap();
+            }
+        })
+    });
+}
+
+fn partial(c: &mut Criterion) {
+    let lost = bundled("contact-lost.toml").unwrap().unwrap();
+    edit_to_first_partial_state(c, "explorer_edit_to_partial/contact_lost_64x1", lost);
+    // the egg-box at a quarter of its complete-contact load, with friction, on a layer
+    let mut egg = bundled("jgh-egg-box.toml").unwrap().unwrap();
+    egg.spatial.mean_pressure = 2.5e7;
+    egg.friction.coefficient = 0.3;
+    egg.material.thickness = 5e-4;
+    for grid in [64, 128] {
+        egg.spatial.grid = grid;
+        let name = format!("explorer_edit_to_partial/egg_box_{grid}x{grid}");
+        edit_to_first_partial_state(c, &name, egg.clone());
+    }
+}
+
 criterion_group!(benches, bench);
-criterion_main!(benches);
+criterion_group! {
+    name = partial_contact;
+    config = Criterion::default().sample_size(20).measurement_time(Duration::from_secs(4));
+    targets = partial
+}
+criterion_main!(benches, partial_contact);

@@ -203,7 +203,7 @@ fn a_time_step_replays_the_cached_running_in() {
     let state = c.state.as_ref().unwrap();
     // the preset's premise: half the cell touches at t = 0 (its description)
     assert!(!state.outputs.complete && (0.4..0.6).contains(&state.outputs.contact_fraction));
-    assert_eq!(c.progress, Progress::Done);
+    assert!(matches!(c.progress, Progress::Done { .. }));
     let t_cc = c.history.as_ref().unwrap().time_to_complete.unwrap();
     let steps = engine.counts.wear_steps;
     assert_eq!(
@@ -318,11 +318,12 @@ fn the_running_in_reports_its_progress() {
                 at_t = true;
                 assert!(*reached >= 30.0 && *time == 30.0, "{seen:?}");
             }
-            Progress::Done => assert_eq!(*time, 30.0),
+            Progress::Done { .. } => assert_eq!(*time, 30.0),
         }
     }
     assert!(at_t, "{seen:?}");
-    assert_eq!(*seen.last().unwrap(), (Progress::Done, 30.0, true));
+    let (progress, time, complete) = *seen.last().unwrap();
+    assert!(matches!(progress, Progress::Done { .. }) && time == 30.0 && complete);
     // one delivery per step but the two that end a part (t reached, contact complete), one
     // after each part, the first, and the last with mu*(pbar)
     assert_eq!(seen.len(), engine.counts.wear_steps + 2, "{seen:?}");
@@ -352,8 +353,70 @@ fn the_worker_drops_a_running_in_when_a_newer_request_arrives() {
             "the first request is dropped before its end"
         );
         if answer.generation == 2 && answer.complete {
-            assert_eq!(cell(&answer.output).progress, Progress::Done);
+            assert!(matches!(
+                cell(&answer.output).progress,
+                Progress::Done { .. }
+            ));
             break;
         }
     }
+}
+
+/// Where a sampled curve peaks: the x [m] of its largest value.
+fn crest(x: &[f64], v: &[f64]) -> f64 {
+    let i = (0..v.len()).max_by(|&a, &b| v[a].total_cmp(&v[b])).unwrap();
+    x[i]
+}
+
+#[test]
+fn the_running_in_lessons_say_what_the_solver_finds() {
+    // the numbers each description quotes (presets/contact-lost.toml, rubber-running-in.toml)
+    let mut engine = Engine::new();
+    let close = |a: f64, b: f64, tol: f64| (a - b).abs() <= tol * b.abs();
+    let lost = bundled("contact-lost.toml");
+    let out = engine.run(&full(&lost));
+    let Output::Spatial(Ok(sp)) = &out else {
+        panic!()
+    };
+    let c = cell(&out);
+    let o = c.state.as_ref().unwrap().outputs;
+    let curve = c.load_curve.as_ref().unwrap().as_ref().unwrap();
+    let t_cc = c.history.as_ref().unwrap().time_to_complete.unwrap();
+    assert_eq!(o.contact_fraction, 0.5, "half the cell");
+    assert!(close(t_cc, 62.6, 1e-3), "{t_cc}");
+    let formal = sp.state.contact.complete_after.unwrap();
+    assert!(close(formal, 35.0, 0.01), "{formal}");
+    assert!(close(curve.complete_mean_pressure, 10.3e6, 3e-3));
+    // the thin rubber: reversed coupling, a crest drifting backwards while the contact spreads
+    let mut rubber = bundled("rubber-running-in.toml");
+    let out = engine.run(&full(&rubber));
+    let Output::Spatial(Ok(sp)) = &out else {
+        panic!()
+    };
+    let c = cell(&out);
+    let s0 = c.state.as_ref().unwrap().clone();
+    let t_cc = c.history.as_ref().unwrap().time_to_complete.unwrap();
+    assert_eq!((s0.outputs.contact_fraction * 100.0).floor(), 37.0);
+    assert!(s0.outputs.psi > 0.0 && s0.outputs.mu_star > 1.0);
+    assert!(close(t_cc, 4.31e3, 1e-3), "{t_cc}");
+    let formal = sp.state.contact.complete_after.unwrap();
+    assert!(close(formal, 2.1e3, 0.01), "{formal}");
+    let h = rubber.material.thickness;
+    let kh = rubber.spatial.harmonics[0].wavenumber_x * h;
+    assert!(close(kh, 1.26, 3e-3), "{kh}");
+    let curve = c.load_curve.as_ref().unwrap().as_ref().unwrap();
+    assert!(close(curve.complete_mean_pressure, 180e3, 3e-3));
+    let x = s0.grid.xs();
+    assert_eq!(crest(&x, &s0.shape), 1.25e-3);
+    assert!(
+        crest(&x, &s0.pressure) > 1.25e-3,
+        "the pressure crest is ahead"
+    );
+    rubber.spatial.time = 3000.0;
+    let out = engine.run(&full(&rubber));
+    let s = cell(&out).state.as_ref().unwrap().clone();
+    // the legend's crest is the parabola's vertex (334 um), the node's within half a spacing
+    let moved = crest(&x, &s.shape);
+    assert!((moved - 334e-6).abs() <= 0.5 * x[1], "{moved}");
+    assert!(crest(&x, &s.pressure) > moved && !s.outputs.complete);
 }

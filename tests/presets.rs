@@ -41,10 +41,10 @@ fn every_bundled_preset_loads_and_solves() {
                 let sol = spatial::solve(&inputs, p.spatial.time)
                     .unwrap_or_else(|e| panic!("{}: {e}", b.file));
                 let contact = check(&sol, &Cell::of(&inputs.harmonics));
-                // every spatial preset but the one that shows the failure is in complete contact
+                // every spatial preset but the two running-in lessons is in complete contact
                 assert_eq!(
                     contact.complete,
-                    b.file != "contact-lost.toml",
+                    !["contact-lost.toml", "rubber-running-in.toml"].contains(&b.file),
                     "{}: {contact:?}",
                     b.file
                 );

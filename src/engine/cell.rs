@@ -32,7 +32,10 @@ pub enum Progress {
     },
     /// Nothing more is stepped: contact is complete, there is no wear, or the step bound of the
     /// running-in is reached (`History::time_to_complete` says which).
-    Done,
+    Done {
+        /// The time of the last stepped state [s].
+        reached: f64,
+    },
 }
 
 /// The contact solved on the nodes of the period cell.
@@ -56,7 +59,7 @@ pub struct CellOutput {
 impl CellOutput {
     /// True when nothing more comes: the running-in is over and the load curve is there if asked.
     pub fn done(&self, curve: bool) -> bool {
-        self.progress == Progress::Done && (!curve || self.load_curve.is_some())
+        matches!(self.progress, Progress::Done { .. }) && (!curve || self.load_curve.is_some())
     }
 }
 
@@ -83,10 +86,10 @@ impl Run {
     }
 
     fn progress(&self, time: f64) -> Progress {
-        if self.over() {
-            return Progress::Done;
-        }
         let reached = self.running_in.end_time();
+        if self.over() {
+            return Progress::Done { reached };
+        }
         Progress::Running {
             reached,
             towards: (reached < time).then_some(time),

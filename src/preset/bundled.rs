@@ -32,6 +32,7 @@ pub const BUNDLED: &[Bundled] = bundled![
     "rubber-backward-drift.toml",
     "dispersion.toml",
     "contact-lost.toml",
+    "rubber-running-in.toml",
     "coating-thickness-sweep.toml",
     "friction-or-wear-map.toml",
 ];

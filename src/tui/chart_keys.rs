@@ -4,6 +4,7 @@
 use wearlab::engine::Output;
 
 use crate::tui::app::{App, Command, HeatScale, Pin};
+use crate::tui::charts::contact::Fields;
 use crate::tui::charts::range::{frames, plotted};
 use crate::tui::charts::{Figure, Plot, Scale};
 use crate::tui::keys::Action;
@@ -175,10 +176,13 @@ pub fn keep_heat_scale(app: &mut App) {
     let Output::Spatial(Ok(out)) = &answer.output else {
         return;
     };
-    if !out.state.contact.complete {
-        return;
-    }
-    let [lo, hi] = crate::tui::charts::range::bounds(out.state.field.pressure.iter().copied());
+    // the pressures the map draws: the closed form's, or the nodes' of the period cell
+    let pressure = match crate::tui::charts::contact::fields(out) {
+        Ok(Fields::Closed) => &out.state.field.pressure,
+        Ok(Fields::Nodes(state)) => &state.pressure,
+        Err(_) => return,
+    };
+    let [lo, hi] = crate::tui::charts::range::bounds(pressure.iter().copied());
     let mut inputs = answer.request.preset.clone();
     inputs.spatial.time = 0.0;
     app.ui.heat_scale = Some(match app.ui.heat_scale.take() {

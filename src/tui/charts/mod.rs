@@ -3,6 +3,7 @@
 //! figure and `e` exports it, so what is exported is by construction what is drawn. A new chart
 //! is one variant and one arm of its problem's `def` (title, help, builder).
 
+pub mod contact;
 pub mod export;
 pub mod palette;
 mod plane;
@@ -111,6 +112,9 @@ pub struct Map {
     pub unit: &'static str,
     /// The line under the map.
     pub caption: String,
+    /// Values exactly 0 are drawn apart from the colour scale and named so in its legend ("no
+    /// contact"); None: 0 is a value like any other.
+    pub empty: Option<&'static str>,
 }
 
 /// What a chart draws.
@@ -215,7 +219,7 @@ impl SpatialChart {
         match self {
             Self::PressureMap => Def {
                 title: "pressure map",
-                help: "Contact pressure over one period cell (colour bar: Pa). The layer slides towards -x; friction on it points to +x.",
+                help: "Contact pressure over one period cell (colour bar: Pa); in partial contact the zones out of contact (p = 0) are drawn apart, in grey (without colour, · or ~), named beside the bar. The layer slides towards -x; friction on it points to +x.",
                 overlays: false,
                 build: spatial::pressure_map,
             },
@@ -226,15 +230,15 @@ impl SpatialChart {
                 build: spatial::line,
             },
             Self::History => Def {
-                title: "amplitudes and mu* in time",
-                help: "Harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. The blocks mark the current time.",
+                title: "time history",
+                help: "Complete contact: the harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. Partial contact at t = 0: the running-in simulated by wear on the period cell, the contact fraction and mu*(t), with the time at which contact becomes complete marked. The blocks mark the current time; the time slider (Left/Right on t) and space play it.",
                 overlays: false,
                 build: spatial::history,
             },
             Self::MuStar => Def {
                 title: "mu* against mean pressure",
-                help: "mu* against the mean pressure, drawn only where contact is complete (p > 0 everywhere).",
-                overlays: false,
+                help: "mu* against the mean pressure pbar for the punch as it is at time t, one curve: partial contact below the complete-contact load (marked 'complete'), complete contact above. The block marks the preset's pbar. Solved on the period cell while this chart is visible (without a period cell: only where contact is complete).",
+                overlays: true,
                 build: spatial::mu_star,
             },
             Self::Dispersion => Def {

@@ -22,6 +22,13 @@ const VIRIDIS: [(u8, u8, u8); 11] = [
     (253, 231, 37),
 ];
 
+/// The colour of an empty value (no contact on the pressure map): a light grey, which viridis
+/// never is.
+pub const EMPTY: (u8, u8, u8) = (190, 190, 190);
+
+/// Its nearest colour in the 256-colour palette (grey 250: 188, 188, 188).
+pub const EMPTY_256: u8 = 250;
+
 /// The colour of t in [0, 1] (clamped; NaN is the lowest).
 pub fn viridis(t: f64) -> (u8, u8, u8) {
     let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };

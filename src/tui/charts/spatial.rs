@@ -2,10 +2,10 @@
 
 use wearlab::engine::SpatialOutput;
 use wearlab::physics::Spacing;
-use wearlab::physics::spatial::state::SpatialState;
 use wearlab::preset::Preset;
 use wearlab::units::format_si;
 
+use crate::tui::charts::contact::{self, Fields};
 use crate::tui::charts::{
     Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, mu_line, zip,
 };
@@ -14,54 +14,42 @@ use crate::tui::charts::{
 /// draw as one line (a Braille dot is a fortieth of a ten-row chart).
 const COINCIDE: f64 = 0.02;
 
-/// The fields of complete contact only: where contact is lost they would need a negative
-/// pressure, so nothing is drawn and the chart says why.
-fn complete(st: &SpatialState) -> Result<(), NoFigure> {
-    let c = &st.contact;
-    if c.complete {
-        return Ok(());
-    }
-    let after = c.complete_after.map_or(String::new(), |t| {
-        format!(
-            " The bound says contact is complete again after t = {}: step t past it (or play).",
-            format_si(t, "s")
-        )
-    });
-    Err(NoFigure::Error(format!(
-        "Complete contact is lost at t = {}: the complete-contact solution would need a negative \
-         pressure (p_min = {}), so no field is drawn; partial contact is not solved here.{after}",
-        format_si(st.solution.time, "s"),
-        format_si(c.min_pressure, "Pa"),
-    )))
-}
-
 pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
     let st = &out.state;
-    complete(st)?;
-    let f = &st.field;
     let cell = &st.cell;
-    Ok(Figure::Map(Map {
-        name: "pressure",
-        x: f.x.clone(),
-        y: f.y.clone(),
-        values: f.pressure.clone(),
-        unit: "Pa",
-        caption: format!(
-            "One period cell, {} (x, to the right) by {} (y); the layer slides to -x.",
-            format_si(cell.lx, "m"),
-            format_si(cell.ly, "m")
-        ),
+    let caption = format!(
+        "One period cell, {} (x, to the right) by {} (y); the layer slides to -x.",
+        format_si(cell.lx, "m"),
+        format_si(cell.ly, "m")
+    );
+    let f = &st.field;
+    Ok(Figure::Map(match contact::fields(out)? {
+        Fields::Nodes(state) => contact::map(out, state, caption),
+        Fields::Closed => Map {
+            name: "pressure",
+            x: f.x.clone(),
+            y: f.y.clone(),
+            values: f.pressure.clone(),
+            unit: "Pa",
+            caption,
+            empty: None,
+        },
     }))
 }
 
 pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
-    complete(&out.state)?;
-    let f = &out.state.field;
-    let row = f.n / 2;
-    let along = |v: &[f64]| zip(&f.x, &v[row * f.n..(row + 1) * f.n]);
-    let y = format_si(f.y[row], "m");
-    let x = || axis("x", "m", Scale::Linear);
-    let (p, u) = (along(&f.pressure), along(&f.shape));
+    let (x, p, u, y) = match contact::fields(out)? {
+        Fields::Nodes(state) => contact::row(state),
+        Fields::Closed => {
+            let f = &out.state.field;
+            let row = f.n / 2;
+            let along = |v: &[f64]| v[row * f.n..(row + 1) * f.n].to_vec();
+            (f.x.clone(), along(&f.pressure), along(&f.shape), f.y[row])
+        }
+    };
+    let y = format_si(y, "m");
+    let x_axis = || axis("x", "m", Scale::Linear);
+    let (p, u) = (zip(&x, &p), zip(&x, &u));
     let crest = |points: &[(f64, f64)]| {
         crest(points).map_or(String::new(), |c| {
             format!(", crest x = {}", format_si(c, "m"))
@@ -69,7 +57,7 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
     };
     Ok(Figure::Plots(vec![
         Plot::new(
-            x(),
+            x_axis(),
             axis("p", "Pa", Scale::Linear),
             vec![Series {
                 name: format!("p along y = {y}{}", crest(&p)),
@@ -77,7 +65,7 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
             }],
         ),
         Plot::new(
-            x(),
+            x_axis(),
             axis("U", "m", Scale::Linear),
             vec![Series {
                 name: format!("shape U{}", crest(&u)),
@@ -88,6 +76,9 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
 }
 
 pub(super) fn history(preset: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
+    if let Some(c) = contact::stepped(out) {
+        return contact::running_in(preset, c);
+    }
     let h = out.history.as_deref().ok_or(NoFigure::Solving)?;
     let s = &out.state.solution;
     let t = || axis("t", "s", Scale::Linear);
@@ -126,15 +117,27 @@ pub(super) fn history(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
 }
 
 pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
+    let x = || {
+        let scale = if preset.spatial.sweep.spacing == Spacing::Log {
+            Scale::Log
+        } else {
+            Scale::Linear
+        };
+        axis("pbar", "Pa", scale)
+    };
+    if let Ok(c) = &out.cell {
+        match &c.load_curve {
+            Some(Ok(curve)) => return contact::load_curve(preset, c, curve, x()),
+            Some(Err(why)) => return Err(NoFigure::Error(why.to_string())),
+            // the closed form below holds for the shape at t only while it is the harmonics'
+            None if !c.complete_from_start => return Err(NoFigure::Solving),
+            None => {}
+        }
+    }
     let st = &out.state;
     let sw = &st.sweep;
-    let scale = if preset.spatial.sweep.spacing == Spacing::Log {
-        Scale::Log
-    } else {
-        Scale::Linear
-    };
     let mut plot = Plot::new(
-        axis("pbar", "Pa", scale),
+        x(),
         axis("mu*", "", Scale::Linear),
         vec![Series {
             name: "mu*".into(),
@@ -170,7 +173,7 @@ fn crest(points: &[(f64, f64)]) -> Option<f64> {
 
 /// The x ranges where a sweep has no value, each from the last point with a value before it to
 /// the first after it (or the sweep's end).
-fn gaps(x: &[f64], values: &[Option<f64>], label: &str) -> Vec<Shade> {
+pub(super) fn gaps(x: &[f64], values: &[Option<f64>], label: &str) -> Vec<Shade> {
     let mut out = Vec::new();
     let mut i = 0;
     while i < values.len() {

@@ -7,6 +7,7 @@ mod charts;
 mod files;
 mod keys;
 mod legend;
+mod partial;
 mod screens;
 mod stale;
 mod ticks;

@@ -32,8 +32,7 @@ fn spatial_screens() {
     insta::assert_snapshot!("spatial_120x40", screen(&app, 120, 40, PLAIN));
     app.ui.chart = Chart::Spatial(SpatialChart::History);
     insta::assert_snapshot!("spatial_history_120x40", screen(&app, 120, 40, PLAIN));
-    let lost = solved("contact-lost.toml");
-    insta::assert_snapshot!("spatial_contact_lost_80x24", screen(&lost, 80, 24, PLAIN));
+    // contact-lost.toml: tests/partial.rs
     let mut drift = solved("rubber-backward-drift.toml");
     drift.ui.chart = Chart::Spatial(SpatialChart::Dispersion);
     insta::assert_snapshot!("spatial_dispersion_120x40", screen(&drift, 120, 40, PLAIN));

@@ -52,28 +52,37 @@ pub fn draw(
     } else {
         fit(aspect, area.width - BAR - 1, area.height - 1)
     };
-    let sample = |col: u16, half_row: u16| -> f64 {
+    // None: an empty value (no contact), drawn apart from the scale
+    let sample = |col: u16, half_row: u16| -> Option<f64> {
         let i = ((col as usize * nx) / w as usize).min(nx - 1);
         // row 0 at the top is the largest y
         let j = ny - 1 - ((half_row as usize * ny) / (2 * h as usize)).min(ny - 1);
-        (map.values[j * nx + i] - lo) / (hi - lo)
+        let v = map.values[j * nx + i];
+        (map.empty.is_none() || v != 0.0).then(|| (v - lo) / (hi - lo))
     };
+    let empty = style.empty();
     for row in 0..h {
         for col in 0..w {
             let (top, bottom) = (sample(col, 2 * row), sample(col, 2 * row + 1));
             let cell = &mut buf[(area.x + col, area.y + row)];
             if !style.color {
-                cell.set_char(style.shade(0.5 * (top + bottom)));
+                // a text cell holds two rows: the shade of those with a value
+                let shade = match (top, bottom) {
+                    (Some(a), Some(b)) => style.shade(0.5 * (a + b)),
+                    (Some(a), None) | (None, Some(a)) => style.shade(a),
+                    (None, None) => empty.0,
+                };
+                cell.set_char(shade);
                 continue;
             }
-            let (a, b) = (level(top), level(bottom));
+            let colour = |t: Option<f64>| t.map_or(empty.1, |t| style.heat(level(t)));
+            let (a, b) = (colour(top), colour(bottom));
             // one colour code for a cell of one level: fewer bytes to send
             if a == b {
                 cell.set_char(' ')
-                    .set_style(Style::default().fg(Color::Reset).bg(style.heat(a)));
+                    .set_style(Style::default().fg(Color::Reset).bg(a));
             } else {
-                cell.set_char('▀')
-                    .set_style(Style::default().fg(style.heat(a)).bg(style.heat(b)));
+                cell.set_char('▀').set_style(Style::default().fg(a).bg(b));
             }
         }
     }
@@ -116,22 +125,38 @@ pub fn draw(
         Some(_) => format!("{}, scale fixed while only t changes", t.title),
         None => t.title.clone(),
     };
+    // the empty values' sample and name first, then the words
+    let (x, y) = if beside {
+        (bx + BAR + 1, area.y)
+    } else {
+        (area.x, area.y + h)
+    };
+    let mut x_words = x;
+    if let Some(label) = map.empty {
+        let swatch = if style.color {
+            (' ', Style::default().bg(empty.1))
+        } else {
+            (empty.0, Style::default())
+        };
+        buf[(x, y)].set_char(swatch.0).set_style(swatch.1);
+        let (end, _) = buf.set_stringn(x + 1, y, format!(" {label}. "), 40, Style::default());
+        x_words = end;
+    }
     if beside {
-        let x = bx + BAR + 1;
-        let width = (area.x + area.width - x) as usize;
+        let width = ((area.x + area.width - x) as usize).min(40);
+        let rows = if map.empty.is_some() { 1 } else { 0 };
         let words = format!("{title}. {}", map.caption);
-        let width = width.min(40);
-        for (i, line) in wrap(&words, width).iter().take(h as usize).enumerate() {
-            buf.set_stringn(x, area.y + i as u16, line, width, Style::default());
+        for (i, line) in wrap(&words, width)
+            .iter()
+            .take(h as usize - rows)
+            .enumerate()
+        {
+            let row = y + (i + rows) as u16;
+            buf.set_stringn(x, row, line, width, Style::default());
         }
     } else {
         let words = format!("{title}. {}", map.caption);
-        buf.set_stringn(
-            area.x,
-            area.y + h,
-            words,
-            area.width as usize,
-            Style::default(),
-        );
+        let width = (area.x + area.width).saturating_sub(x_words) as usize;
+        buf.set_stringn(x_words, y, words, width, Style::default());
     }
 }

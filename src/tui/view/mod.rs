@@ -5,6 +5,7 @@
 pub mod axis;
 pub mod bars;
 pub mod chart;
+pub mod contact_status;
 pub mod form;
 pub mod heatmap;
 pub mod layout;

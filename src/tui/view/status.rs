@@ -11,9 +11,11 @@ use wearlab::physics::plane::OperatingPoint;
 use wearlab::units::format_si;
 
 use crate::tui::app::App;
+use crate::tui::charts::contact;
 use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot};
+use crate::tui::view::contact_status;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::{Shown, note, wrap};
 
@@ -140,6 +142,81 @@ fn spatial(
 ) -> Vec<Line<'static>> {
     let st = &out.state;
     let s = &st.solution;
+    // one row per harmonic under a header: n, kh (k for a half-space), 1/beta, c, phi
+    let h = s.inputs.material.thickness;
+    let k_label = if h.is_finite() { "kh" } else { "k [rad/m]" };
+    let header = format!(
+        "{:>3} {k_label:<10}{:<10}{:<12}{}",
+        "n", "1/beta", "c", "phi"
+    );
+    // while partial, the closed-form rates are what each harmonic does once contact is complete:
+    // said after the header ("  +NN more" and the words), else by the line of the time of
+    // complete contact (", then:"), else above the header
+    let after = "after complete contact:";
+    let narrow = header.chars().count() + 11 + 2 + after.len() > width;
+    // the state on the period cell, unless the closed form holds from t = 0
+    let (mut lines, partial, said) = match contact::stepped(out) {
+        Some(c) => contact_status::head(c, s, style, width, narrow),
+        None => (closed(out, style, width), false, false),
+    };
+    let own_line = partial && narrow && !said;
+    let blocks: Vec<Vec<String>> = s
+        .harmonics
+        .iter()
+        .enumerate()
+        .map(|(n, hs)| {
+            let e = &hs.evolution;
+            let k = hs.initial.wavenumber();
+            let kh = format_si(if h.is_finite() { k * h } else { k }, "");
+            let decay = if e.decay_rate > 0.0 {
+                format_si(1.0 / e.decay_rate, "s")
+            } else {
+                "inf".into()
+            };
+            let c = format_si(e.drift_velocity, "m/s");
+            vec![format!(
+                "{:>3} {kh:<10}{decay:<10}{c:<12}{:+.2}",
+                n + 1,
+                e.phase_lead
+            )]
+        })
+        .collect();
+    // the header says how many rows do not fit
+    let room = height.saturating_sub(lines.len() + 1 + usize::from(own_line));
+    if partial && room == 0 {
+        // no row fits: the rates of a later state are left out rather than headed alone
+        return lines;
+    }
+    let (first, count) = visible(&blocks, selected, room);
+    let hidden = blocks.len() - count;
+    let more = if hidden > 0 {
+        format!("  +{hidden} more")
+    } else {
+        String::new()
+    };
+    if own_line {
+        lines.push(Line::styled(after, style.heading()));
+    }
+    let after = if partial && !narrow {
+        format!("  {after}")
+    } else {
+        String::new()
+    };
+    lines.push(Line::styled(
+        format!("{header}{more}{after}"),
+        style.heading(),
+    ));
+    for block in &blocks[first..first + count] {
+        lines.extend(block.iter().cloned().map(Line::from));
+    }
+    lines
+}
+
+/// The head of the status from the closed form of the harmonics: t, mu*, psi and the
+/// complete-contact check (with, when it fails, why partial contact is not solved).
+fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
+    let st = &out.state;
+    let s = &st.solution;
     let items = [
         format!("t = {}", format_si(s.time, "s")),
         format!(
@@ -166,9 +243,10 @@ fn spatial(
     } else {
         let mut items = vec![format!("contact lost: {p_min}")];
         items.extend(bound);
+        // the closed-form bound, not the running-in (docs/physics/spatial-partial.md sec. 4)
         items.extend(
             c.complete_after
-                .map(|t| format!("complete after t = {}", format_si(t, "s"))),
+                .map(|t| format!("complete after t = {} (formal bound)", format_si(t, "s"))),
         );
         (items, style.error())
     };
@@ -177,46 +255,13 @@ fn spatial(
             .into_iter()
             .map(|l| Line::styled(l, verdict)),
     );
-    // one row per harmonic under a header: n, kh (k for a half-space), 1/beta, c, phi
-    let h = s.inputs.material.thickness;
-    let k_label = if h.is_finite() { "kh" } else { "k [rad/m]" };
-    let header = format!(
-        "{:>3} {k_label:<10}{:<10}{:<12}{}",
-        "n", "1/beta", "c", "phi"
-    );
-    let blocks: Vec<Vec<String>> = s
-        .harmonics
-        .iter()
-        .enumerate()
-        .map(|(n, hs)| {
-            let e = &hs.evolution;
-            let k = hs.initial.wavenumber();
-            let kh = format_si(if h.is_finite() { k * h } else { k }, "");
-            let decay = if e.decay_rate > 0.0 {
-                format_si(1.0 / e.decay_rate, "s")
-            } else {
-                "inf".into()
-            };
-            let c = format_si(e.drift_velocity, "m/s");
-            vec![format!(
-                "{:>3} {kh:<10}{decay:<10}{c:<12}{:+.2}",
-                n + 1,
-                e.phase_lead
-            )]
-        })
-        .collect();
-    // the header says how many rows do not fit
-    let room = height.saturating_sub(lines.len() + 1);
-    let (first, count) = visible(&blocks, selected, room);
-    let hidden = blocks.len() - count;
-    let more = if hidden > 0 {
-        format!("  +{hidden} more")
-    } else {
-        String::new()
-    };
-    lines.push(Line::styled(format!("{header}{more}"), style.heading()));
-    for block in &blocks[first..first + count] {
-        lines.extend(block.iter().cloned().map(Line::from));
+    if let (Err(why), false) = (&out.cell, c.complete) {
+        let why = format!("partial contact is not solved: {why}");
+        lines.extend(
+            wrap(&why, width)
+                .into_iter()
+                .map(|l| Line::styled(l, style.error())),
+        );
     }
     lines
 }

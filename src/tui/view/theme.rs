@@ -182,6 +182,19 @@ impl RenderOptions {
         }
     }
 
+    /// How the heatmap draws an empty value (no contact), apart from every level and shade: its
+    /// character without colour (`·`, or `~` with `--ascii`) and its colour (`palette::EMPTY`).
+    pub fn empty(self) -> (char, Color) {
+        let glyph = if self.ascii { '~' } else { '·' };
+        let grey = if self.truecolor {
+            let (r, g, b) = palette::EMPTY;
+            Color::Rgb(r, g, b)
+        } else {
+            Color::Indexed(palette::EMPTY_256)
+        };
+        (glyph, grey)
+    }
+
     /// The shade of t in [0, 1] without colour.
     pub fn shade(self, t: f64) -> char {
         let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };

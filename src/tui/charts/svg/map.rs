@@ -5,7 +5,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::{Area, axes, cartesian, err, font};
-use crate::tui::charts::palette::viridis;
+use crate::tui::charts::palette::{EMPTY, viridis};
 use crate::tui::charts::range::{Frame, bounds};
 use crate::tui::charts::ticks::ticks;
 use crate::tui::charts::{Map, Plot, Scale};
@@ -29,8 +29,10 @@ pub(super) fn map(
     let (dx, dy) = ((x1 - x0) / nx as f64, (y1 - y0) / ny as f64);
     let cells = (0..ny).step_by(step).flat_map(|j| {
         (0..nx).step_by(step).map(move |i| {
-            let t = (m.values[j * nx + i] - lo) / (hi - lo);
-            let (r, g, b) = viridis(t);
+            let v = m.values[j * nx + i];
+            let t = (v - lo) / (hi - lo);
+            let empty = m.empty.is_some() && v == 0.0;
+            let (r, g, b) = if empty { EMPTY } else { viridis(t) };
             let (x, y) = (m.x[i], m.y[j]);
             let w = step as f64;
             Rectangle::new(
@@ -89,8 +91,12 @@ pub(super) fn map(
     ))
     .map_err(err)?;
     let (px, py) = chart.backend_coord(&(x0, y0));
+    let caption = match m.empty {
+        Some(label) => format!("{} Light grey: {label}.", m.caption),
+        None => m.caption.clone(),
+    };
     root.draw(&Text::new(
-        m.caption.clone(),
+        caption,
         (px, py + 30),
         font(13).pos(Pos::new(HPos::Left, VPos::Top)),
     ))

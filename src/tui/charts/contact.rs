@@ -1,0 +1,180 @@
+//! The spatial charts drawn from the contact solved on the period cell (issue 14): the nodal
+//! pressure with the zones out of contact, the running-in in time, mu* against the mean pressure
+//! over the whole range. `fields` decides, for every chart, whether the closed form of the
+//! harmonics holds at t or the nodes of the cell are drawn.
+
+use wearlab::engine::{CellOutput, SpatialOutput};
+use wearlab::physics::SolveError;
+use wearlab::physics::spatial::partial::state::State;
+use wearlab::physics::spatial::partial::sweep::LoadCurve;
+use wearlab::preset::Preset;
+use wearlab::units::format_si;
+
+use crate::tui::charts::{Axis, Figure, Map, Mark, NoFigure, Plot, Scale, Series, axis, mu_line};
+
+/// What the map and the line draw at t.
+pub enum Fields<'a> {
+    /// The closed form of the harmonics (`SpatialState::field`): the contact is complete at t and
+    /// has been since t = 0, so the closed form holds exactly.
+    Closed,
+    /// The contact state on the nodes of the period cell.
+    Nodes(&'a State),
+}
+
+/// Where the fields at t come from, or why there are none.
+pub fn fields(out: &SpatialOutput) -> Result<Fields<'_>, NoFigure> {
+    let complete = out.state.contact.complete;
+    match &out.cell {
+        Ok(c) if c.complete_from_start && complete => Ok(Fields::Closed),
+        Ok(c) => c.state.as_deref().map(Fields::Nodes).map_err(error),
+        Err(_) if complete => Ok(Fields::Closed),
+        Err(why) => Err(NoFigure::Error(format!(
+            "Complete contact is lost at t = {}: the complete-contact solution would need a \
+             negative pressure (p_min = {}), and partial contact is solved only on a period cell: \
+             {why}",
+            format_si(out.state.solution.time, "s"),
+            format_si(out.state.contact.min_pressure, "Pa"),
+        ))),
+    }
+}
+
+fn error(why: &SolveError) -> NoFigure {
+    NoFigure::Error(why.to_string())
+}
+
+/// The nodal cell output whenever the closed form does not hold from t = 0.
+pub fn stepped(out: &SpatialOutput) -> Option<&CellOutput> {
+    out.cell.as_ref().ok().filter(|c| !c.complete_from_start)
+}
+
+/// The pressure on the nodes, zero pressure (no contact) drawn apart. A 1-D shape (one node
+/// along y) is drawn over the cell's extent in y, as the closed form is.
+pub fn map(out: &SpatialOutput, state: &State, caption: String) -> Map {
+    let g = state.grid;
+    let (y, values) = if g.ny == 1 {
+        let y = out.state.field.y.clone();
+        let values = y
+            .iter()
+            .flat_map(|_| state.pressure.iter().copied())
+            .collect();
+        (y, values)
+    } else {
+        (g.ys(), state.pressure.clone())
+    };
+    let t = out.state.solution.time;
+    let when = if state.time == t {
+        String::new()
+    } else {
+        format!(
+            " The state at t = {}: the running-in has not reached t = {} yet.",
+            format_si(state.time, "s"),
+            format_si(t, "s")
+        )
+    };
+    Map {
+        name: "pressure",
+        x: g.xs(),
+        y,
+        values,
+        unit: "Pa",
+        caption: format!("{caption}{when}"),
+        empty: Some("no contact"),
+    }
+}
+
+/// x, p, U along the middle row of the nodes, and that row's y [m].
+pub fn row(state: &State) -> (Vec<f64>, Vec<f64>, Vec<f64>, f64) {
+    let g = state.grid;
+    let j = g.ny / 2;
+    let along = |v: &[f64]| v[j * g.nx..(j + 1) * g.nx].to_vec();
+    (g.xs(), along(&state.pressure), along(&state.shape), g.y(j))
+}
+
+/// The running-in in time: the contact fraction and mu*, the time of complete contact marked.
+pub fn running_in(preset: &Preset, c: &CellOutput) -> Result<Figure, NoFigure> {
+    let h = c.history.as_deref().map_err(error)?;
+    let t = || axis("t", "s", Scale::Linear);
+    // the time of complete contact marked where it is on the chart (a mark stretches the axis)
+    let mark: Vec<Mark> = h
+        .time_to_complete
+        .filter(|tc| *tc <= preset.spatial.duration)
+        .map(|at| Mark {
+            at,
+            label: "complete".into(),
+        })
+        .into_iter()
+        .collect();
+    let now = |y: fn(&State) -> f64| {
+        c.state.as_deref().ok().map(|s| Series {
+            name: "now".into(),
+            points: vec![(s.time, y(s))],
+        })
+    };
+    let mut fraction = Plot::new(
+        t(),
+        axis("contact", "", Scale::Linear),
+        vec![Series {
+            name: "contact fraction".into(),
+            points: super::zip(&h.time, &h.contact_fraction),
+        }],
+    );
+    fraction.markers = now(|s| s.outputs.contact_fraction);
+    fraction.x_marks = mark.clone();
+    let mut mu = Plot::new(
+        t(),
+        axis("mu*", "", Scale::Linear),
+        vec![Series {
+            name: "mu*(t)".into(),
+            points: super::zip(&h.time, &h.mu_star),
+        }],
+    );
+    mu.markers = now(|s| s.outputs.mu_star);
+    mu.x_marks = mark;
+    mu.y_marks = vec![mu_line(preset.friction.coefficient)];
+    Ok(Figure::Plots(vec![fraction, mu]))
+}
+
+/// mu* against pbar over the whole range, one curve: partial contact below the complete-contact
+/// load (marked), complete above.
+pub fn load_curve(
+    preset: &Preset,
+    c: &CellOutput,
+    curve: &LoadCurve,
+    x: Axis,
+) -> Result<Figure, NoFigure> {
+    let complete = curve.complete_mean_pressure;
+    let p = &curve.mean_pressure;
+    let mut plot = Plot::new(
+        x,
+        axis("mu*", "", Scale::Linear),
+        vec![Series {
+            name: format!(
+                "mu*, contact complete from pbar = {}",
+                format_si(complete, "Pa")
+            ),
+            points: curve
+                .mean_pressure
+                .iter()
+                .zip(&curve.mu_star)
+                .filter_map(|(p, m)| Some((*p, (*m)?)))
+                .collect(),
+        }],
+    );
+    // marked where it is on the chart (a mark stretches the axis to reach it)
+    if p.first()
+        .zip(p.last())
+        .is_some_and(|(lo, hi)| (*lo..=*hi).contains(&complete))
+    {
+        plot.x_marks = vec![Mark {
+            at: complete,
+            label: "complete".into(),
+        }];
+    }
+    plot.markers = c.state.as_deref().ok().map(|s| Series {
+        name: "now".into(),
+        points: vec![(preset.spatial.mean_pressure, s.outputs.mu_star)],
+    });
+    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    plot.shaded = super::spatial::gaps(&curve.mean_pressure, &curve.mu_star, "P <= 0");
+    Ok(Figure::Plots(vec![plot]))
+}

@@ -1,0 +1,209 @@
+//! Partial contact and its running-in in the explorer (issue 14): the screens, read as a student
+//! would before they were accepted; time replaying the cached running-in; progress while it is
+//! stepped; the zones out of contact drawn apart, with and without colour.
+
+use ratatui::crossterm::event::KeyCode;
+use ratatui::style::Color;
+use wearlab::engine::{Engine, Output, Progress};
+
+use super::*;
+use crate::tui::charts::{Chart, Figure, SpatialChart};
+use crate::tui::view::popups::help_lines;
+
+const ASCII: RenderOptions = RenderOptions {
+    ascii: true,
+    color: false,
+    truecolor: false,
+};
+
+const COLOUR: RenderOptions = RenderOptions {
+    ascii: false,
+    color: true,
+    truecolor: false,
+};
+
+fn on(app: &App, chart: SpatialChart) -> App {
+    let mut app = app.clone();
+    app.ui.chart = Chart::Spatial(chart);
+    // the mu*(pbar) chart asks for its curve
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    app
+}
+
+#[test]
+fn partial_contact_screens() {
+    let lost = solved("contact-lost.toml");
+    for (name, style) in [("plain", PLAIN), ("ascii", ASCII)] {
+        insta::assert_snapshot!(
+            format!("lost_map_{name}_80x24"),
+            screen(&lost, 80, 24, style)
+        );
+        insta::assert_snapshot!(
+            format!("lost_map_{name}_120x40"),
+            screen(&lost, 120, 40, style)
+        );
+    }
+    let history = on(&lost, SpatialChart::History);
+    insta::assert_snapshot!("lost_history_80x24", screen(&history, 80, 24, PLAIN));
+    insta::assert_snapshot!("lost_history_120x40", screen(&history, 120, 40, PLAIN));
+    let mu = on(&lost, SpatialChart::MuStar);
+    insta::assert_snapshot!("lost_mu_star_120x40", screen(&mu, 120, 40, PLAIN));
+    // the rubber lesson at t = 0 and at 3 ks: the crests of p and U in the legend move back
+    let mut rubber = on(&solved("rubber-running-in.toml"), SpatialChart::Line);
+    insta::assert_snapshot!("rubber_line_80x24", screen(&rubber, 80, 24, PLAIN));
+    rubber.doc.preset.spatial.time = 3000.0;
+    let cmds = rubber.start();
+    settle(&mut rubber, cmds);
+    insta::assert_snapshot!("rubber_line_3ks_120x40", screen(&rubber, 120, 40, PLAIN));
+}
+
+#[test]
+fn the_zones_out_of_contact_are_grey_and_named_beside_the_bar() {
+    let lost = solved("contact-lost.toml");
+    let grey = COLOUR.empty().1;
+    for (w, h) in [(80, 24), (120, 40)] {
+        let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+        terminal.draw(|f| view(&lost, COLOUR, f)).unwrap();
+        let buf = terminal.backend().buffer();
+        // the map's top row: half the cell is out of contact, drawn grey; the rest in viridis
+        let row: Vec<_> = (0..w).map(|x| &buf[(x, 1)]).collect();
+        let greys = row.iter().filter(|c| c.bg == grey).count();
+        let viridis = row
+            .iter()
+            .filter(|c| matches!(c.bg, Color::Indexed(_)) && c.bg != grey)
+            .count();
+        assert!(
+            greys > 10 && viridis > 10,
+            "{w}x{h}: {greys} grey, {viridis}"
+        );
+        // grey is no level of the colour scale
+        for level in 0..crate::tui::charts::palette::LEVELS {
+            assert_ne!(COLOUR.heat(level), grey);
+        }
+        // its swatch, then its name, at the top of the words beside the bar
+        let text = screen(&lost, w, h, COLOUR);
+        let line = text.lines().nth(1).unwrap();
+        assert!(line.contains("  no contact. "), "{line}");
+        let swatch = line.find(" no contact.").unwrap();
+        // the line is quoted: one column for the quote, one for the swatch
+        let x = line[..swatch].chars().count() as u16 - 2;
+        assert_eq!(buf[(x, 1)].bg, grey, "{line}");
+    }
+    // without colour: dots, `~` with --ascii, never a shade
+    for (style, glyph) in [(PLAIN, '·'), (ASCII, '~')] {
+        let text = screen(&lost, 80, 24, style);
+        let line = text.lines().nth(1).unwrap();
+        assert!(line.contains(&format!("{glyph} no contact.")), "{line}");
+        assert!(line.matches(glyph).count() > 10, "{line}");
+    }
+}
+
+#[test]
+fn a_time_step_replays_the_cached_running_in() {
+    let mut engine = Engine::new();
+    let mut app = app("contact-lost.toml");
+    let cmds = app.start();
+    for a in answers(&mut engine, &cmds) {
+        update(&mut app, Msg::Answer(Box::new(a)));
+    }
+    let steps = engine.counts.wear_steps;
+    assert_eq!(engine.counts.running_in, 1);
+    select(&mut app, "t", None);
+    for _ in 0..3 {
+        let cmds = press(&mut app, KeyCode::Right);
+        for a in answers(&mut engine, &cmds) {
+            update(&mut app, Msg::Answer(Box::new(a)));
+        }
+    }
+    // a hundredth of the duration per step; the state replayed, nothing stepped again
+    assert_eq!(
+        (engine.counts.running_in, engine.counts.wear_steps),
+        (1, steps)
+    );
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("partial contact (53%)  t = 3.00 s"), "{s}");
+    // playing does the same
+    press(&mut app, KeyCode::Char(' '));
+    let cmds = update(&mut app, Msg::Tick);
+    for a in answers(&mut engine, &cmds) {
+        update(&mut app, Msg::Answer(Box::new(a)));
+    }
+    assert_eq!(
+        (engine.counts.running_in, engine.counts.wear_steps),
+        (1, steps)
+    );
+    assert!(screen(&app, 80, 24, PLAIN).contains("t = 4.00 s"));
+}
+
+#[test]
+fn the_running_in_shows_its_progress_and_the_state_it_has_reached() {
+    let mut engine = Engine::new();
+    engine.progress_every = std::time::Duration::ZERO;
+    let mut preset = bundled("contact-lost.toml");
+    preset.spatial.time = 40.0;
+    let mut app = App::new(preset, None, Places::default());
+    let cmds = app.start();
+    let all = answers(&mut engine, &cmds);
+    // an answer on the way to t = 40 s: the last stepped state, said to be so
+    let early = all
+        .iter()
+        .find(|a| {
+            let Output::Spatial(Ok(out)) = &a.output else {
+                return false;
+            };
+            let c = out.cell.as_ref().unwrap();
+            matches!(c.progress, Progress::Running { reached, towards: Some(_) } if reached > 10.0)
+        })
+        .unwrap();
+    update(&mut app, Msg::Answer(Box::new(early.clone())));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("running in: t = 10.7 s of 40.0 s"), "{s}");
+    assert!(s.contains("t = 10.7 s") && s.contains("solving…"), "{s}");
+    let Ok(Figure::Map(map)) = app.ui.chart.build(early) else {
+        panic!("a map")
+    };
+    assert!(
+        map.caption
+            .ends_with("The state at t = 10.7 s: the running-in has not reached t = 40.0 s yet."),
+        "{}",
+        map.caption
+    );
+    // past t, on to complete contact: the state at t stays
+    let past = all
+        .iter()
+        .find(|a| {
+            let Output::Spatial(Ok(out)) = &a.output else {
+                return false;
+            };
+            let c = out.cell.as_ref().unwrap();
+            matches!(c.progress, Progress::Running { towards: None, .. })
+        })
+        .unwrap();
+    update(&mut app, Msg::Answer(Box::new(past.clone())));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("running in to complete contact: t = "), "{s}");
+    assert!(s.contains("t = 40.0 s"), "{s}");
+    update(&mut app, Msg::Answer(Box::new(all.last().unwrap().clone())));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("complete after t = 62.6 s (simulated)"), "{s}");
+    assert!(!s.contains("solving"), "{s}");
+}
+
+#[test]
+fn the_help_explains_the_partial_contact_status() {
+    let app = solved("contact-lost.toml");
+    let help: String = help_lines(&app, PLAIN, 76)
+        .iter()
+        .map(|l| format!("{l}\n"))
+        .collect();
+    for symbol in [
+        "partial contact (N%)",
+        "p_max",
+        "running in",
+        "complete after t (simulated)",
+        "after complete contact",
+    ] {
+        assert!(help.contains(symbol), "{symbol} not in the help:\n{help}");
+    }
+}

@@ -1,0 +1,116 @@
+//! The status of a contact solved on the period cell (issue 14): partial or complete, the
+//! contact fraction, p_max, mu* and psi of the state shown, and where the running-in stands
+//! (stepping, with the simulated time reached, or the simulated time to complete contact).
+
+use ratatui::text::Line;
+use wearlab::engine::{CellOutput, Progress};
+use wearlab::physics::spatial::SpatialSolution;
+use wearlab::units::format_si;
+
+use crate::tui::view::status::pack;
+use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::wrap;
+
+/// The contact fraction as a whole percentage, never rounded up to 100 % nor down to 0 %.
+pub fn percent(fraction: f64) -> String {
+    let p = (100.0 * fraction).floor();
+    if p < 1.0 && fraction > 0.0 {
+        "<1%".into()
+    } else {
+        format!("{p:.0}%")
+    }
+}
+
+/// The head of the status for the state on the cell, and whether the state shown is partial
+/// (the harmonics' closed-form rates then hold only after complete contact) and `then` was said:
+/// with `then`, the time of complete contact ends in ", then:", heading the harmonics' rows.
+pub fn head(
+    c: &CellOutput,
+    closed: &SpatialSolution,
+    style: RenderOptions,
+    width: usize,
+    then: bool,
+) -> (Vec<Line<'static>>, bool, bool) {
+    let state = match &c.state {
+        Ok(state) => state,
+        Err(why) => {
+            let lines = wrap(&why.to_string(), width)
+                .into_iter()
+                .map(|l| Line::styled(l, style.error()))
+                .collect();
+            return (lines, false, false);
+        }
+    };
+    let o = &state.outputs;
+    let mu = closed.inputs.friction.coefficient;
+    let (verdict, verdict_style) = if o.complete {
+        ("complete contact".to_string(), style.ok())
+    } else {
+        let partial = format!("partial contact ({})", percent(o.contact_fraction));
+        (partial, ratatui::style::Style::default())
+    };
+    // the verdict and the time, then the values (packed apart, so that a longer time never
+    // moves a value to another line while time plays)
+    let first = [verdict, format!("t = {}", format_si(state.time, "s"))];
+    let mut values = vec![format!("p_max = {}", format_si(o.max_pressure, "Pa"))];
+    if o.complete {
+        values.push(format!(
+            "p_min = {} (nodes)",
+            format_si(o.min_pressure_complete, "Pa")
+        ));
+    }
+    values.extend([
+        format!("mu* = {:.8} (mu {mu})", o.mu_star),
+        format!("psi = {}", format_si(o.psi, "Pa")),
+    ]);
+    let mut lines: Vec<Line> = pack(&first, width, "")
+        .into_iter()
+        .map(|l| Line::styled(l, verdict_style))
+        .collect();
+    lines.extend(pack(&values, width, "").into_iter().map(Line::from));
+    let running = match c.progress {
+        Progress::Running {
+            reached,
+            towards: Some(t),
+        } => format!(
+            "running in: t = {} of {}",
+            format_si(reached, "s"),
+            format_si(t, "s")
+        ),
+        Progress::Running {
+            reached,
+            towards: None,
+        } => format!(
+            "running in to complete contact: t = {}",
+            format_si(reached, "s")
+        ),
+        Progress::Done { reached } => done(c, closed, reached),
+    };
+    let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
+    let done = matches!(c.progress, Progress::Done { .. });
+    let said = then && !o.complete && done && complete_at.is_some();
+    let running = if said {
+        format!("{running}, then:")
+    } else {
+        running
+    };
+    lines.extend(
+        wrap(&running, width)
+            .into_iter()
+            .map(|l| Line::styled(l, style.heading())),
+    );
+    (lines, !o.complete, said)
+}
+
+/// The end of the running-in (its last stepped state at `reached` [s]), in words.
+fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64) -> String {
+    let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
+    match complete_at {
+        Some(t) => format!("complete after t = {} (simulated)", format_si(t, "s")),
+        None if closed.inputs.wear_rate() == 0.0 => "no wear: the contact stays as it is".into(),
+        None => format!(
+            "still partial at t = {}, where the simulated running-in stops",
+            format_si(reached, "s")
+        ),
+    }
+}
