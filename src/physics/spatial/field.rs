@@ -6,7 +6,7 @@
 //! (4 x 8 grid points in registers while every harmonic adds to them, tables packed so that it
 //! reads them contiguously), with AVX2 and fused multiply-adds where the processor has them.
 
-use crate::physics::spatial::{Cell, HarmonicSolution, SpatialSolution};
+use crate::physics::spatial::{Cell, HarmonicSolution, Period, SpatialSolution};
 
 /// One term c sin(wx x + px) sin(wy y + py) of a separable sum.
 #[derive(Clone, Copy, Debug)]
@@ -213,14 +213,15 @@ pub(crate) fn pressure_terms(sol: &SpatialSolution) -> Vec<Term> {
         .collect()
 }
 
-/// Fields on an n x n grid over the cell (cell-centred points: x_i = (i + 1/2) lx/n).
+/// Fields on a grid over the cell (cell-centred points: x_i = (i + 1/2) lx/n): n x n points, or
+/// n x 1 for a shape constant along y (every wy = 0), whose fields do not vary along y.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Field {
-    /// Points per side.
+    /// Points along x (and along y, unless the shape is constant along y).
     pub n: usize,
     /// Grid x [m].
     pub x: Vec<f64>,
-    /// Grid y [m].
+    /// Grid y [m]: one point, y = ly/2, for a shape constant along y.
     pub y: Vec<f64>,
     /// p [Pa], row-major: index j n + i for (x_i, y_j).
     pub pressure: Vec<f64>,
@@ -230,14 +231,20 @@ pub struct Field {
     pub wear: Vec<f64>,
 }
 
-/// The fields of a solution on an n x n grid over `cell`.
+/// The fields of a solution on the grid over `cell`: n x n, or n x 1 for a shape constant along
+/// y (a 4096-point 1-D grid would otherwise fill 3 x 4096^2 values, 400 MB).
 pub fn field(sol: &SpatialSolution, cell: &Cell, n: usize) -> Field {
-    let centred = |extent: f64| Grid {
-        first: 0.5 * extent / n as f64,
-        step: extent / n as f64,
-        count: n,
+    let centred = |extent: f64, count: usize| Grid {
+        first: 0.5 * extent / count as f64,
+        step: extent / count as f64,
+        count,
     };
-    let (gx, gy) = (centred(cell.lx), centred(cell.ly));
+    let rows = if cell.period_y == Period::Constant {
+        1
+    } else {
+        n
+    };
+    let (gx, gy) = (centred(cell.lx, n), centred(cell.ly, rows));
     let pressure = pressure_terms(sol);
     let x_tables = |c: &dyn Fn(&HarmonicSolution) -> (f64, f64)| {
         Tables::from_rows(sol.harmonics.iter().map(|h| {
@@ -337,6 +344,24 @@ mod tests {
                     assert!((f.wear[k] - sol.wear(x, y)).abs() < 1e-13 * amplitude);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn a_shape_constant_along_y_has_one_row() {
+        // Independent route: the pointwise closed form at any y (every wy = 0: nothing varies
+        // along y), on the longest 1-D grid, which as n x n would hold 3 x 4096^2 values.
+        let mut sol = solution();
+        sol.harmonics.truncate(1);
+        sol.inputs.harmonics.truncate(1);
+        assert_eq!(sol.inputs.harmonics[0].wavenumber_y, 0.0);
+        let cell = Cell::of(&sol.inputs.harmonics);
+        let f = field(&sol, &cell, 4096);
+        assert_eq!((f.x.len(), f.y.len(), f.pressure.len()), (4096, 1, 4096));
+        assert_eq!(f.y[0], 0.5 * cell.ly);
+        for (i, &x) in f.x.iter().enumerate().step_by(97) {
+            let p = sol.pressure(x, 0.3 * cell.ly);
+            assert!((f.pressure[i] - p).abs() < 1e-12 * p.abs(), "{i}");
         }
     }
 

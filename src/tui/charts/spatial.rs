@@ -25,15 +25,18 @@ pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, No
     let f = &st.field;
     Ok(Figure::Map(match contact::fields(out)? {
         Fields::Nodes(state) => contact::map(out, state, caption),
-        Fields::Closed => Map {
-            name: "pressure",
-            x: f.x.clone(),
-            y: f.y.clone(),
-            values: f.pressure.clone(),
-            unit: "Pa",
-            caption,
-            empty: None,
-        },
+        Fields::Closed => {
+            let (y, values) = contact::stretched(&f.pressure, f.n, f.y.clone(), cell.ly);
+            Map {
+                name: "pressure",
+                x: f.x.clone(),
+                y,
+                values,
+                unit: "Pa",
+                caption,
+                empty: None,
+            }
+        }
     }))
 }
 
@@ -42,7 +45,7 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
         Fields::Nodes(state) => contact::row(state),
         Fields::Closed => {
             let f = &out.state.field;
-            let row = f.n / 2;
+            let row = f.y.len() / 2;
             let along = |v: &[f64]| v[row * f.n..(row + 1) * f.n].to_vec();
             (f.x.clone(), along(&f.pressure), along(&f.shape), f.y[row])
         }
