@@ -5,6 +5,7 @@
 use ratatui::text::Line;
 use wearlab::engine::{CellOutput, Progress};
 use wearlab::physics::spatial::SpatialSolution;
+use wearlab::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
 use wearlab::units::format_si;
 
 use crate::tui::view::status::pack;
@@ -109,7 +110,9 @@ fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64) -> String {
         Some(t) => format!("complete after t = {} (simulated)", format_si(t, "s")),
         None if closed.inputs.wear_rate() == 0.0 => "no wear: the contact stays as it is".into(),
         None => format!(
-            "still partial at t = {}, where the simulated running-in stops",
+            "still partial at t = {}: complete contact not reached within the running-in's bound \
+             ({HORIZON_DECAY_TIMES} decay times 1/beta of the slowest harmonic, at most {MAX_STEPS} \
+             steps)",
             format_si(reached, "s")
         ),
     }
