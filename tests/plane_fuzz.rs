@@ -123,3 +123,33 @@ proptest! {
         prop_assert!(result.is_ok(), "{result:?}");
     }
 }
+
+/// Found by `strip_is_finite_or_explained` at PROPTEST_CASES=20000: a tiny load held by a large
+/// adhesion under very strong wear. The collocation's values at its nodes are all positive, but
+/// its interpolant (what the profile draws) dips to -14 % of the peak between the first two nodes:
+/// the contact is not resolved, which the solver must say instead of drawing a tensile pressure.
+#[test]
+fn a_strip_contact_its_nodes_do_not_resolve_is_refused() {
+    let inp = PlaneInputs {
+        material: Material {
+            youngs_modulus: 4_615_675.515_469_881,
+            poisson_ratio: 0.0,
+            thickness: 1000.0,
+        },
+        friction: Friction {
+            coefficient: 0.0,
+            adhesion: 647_341.981_642_277,
+        },
+        wear: 0.1,
+        radius: 1_358.102_410_308_278_9,
+        load: 0.000_195_146_823_636_854_73,
+    };
+    match operating_point(&inp, Model::Strip, 21) {
+        Err(e) => assert!(e.to_string().contains("does not resolve"), "{e}"),
+        Ok(point) => assert!(
+            point.profile.pressure.iter().all(|q| *q >= 0.0),
+            "{:?}",
+            point.profile.pressure
+        ),
+    }
+}
