@@ -28,9 +28,11 @@ mod tui {
     pub mod charts;
     pub mod effects;
     pub mod event_loop;
+    pub mod explore;
     pub mod form;
     pub mod glossary;
     pub mod keys;
+    pub mod sweep_form;
     pub mod update;
     pub mod view;
 }

@@ -8,6 +8,7 @@
 
 mod cache;
 mod cell;
+pub mod explore;
 
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread;

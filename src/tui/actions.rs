@@ -7,8 +7,10 @@ use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
 use crate::tui::chart_keys;
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
+use crate::tui::explore::{self, View};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
+use crate::tui::sweep_form;
 
 /// The most harmonics a punch has (`limits::HARMONICS`).
 pub const MAX_HARMONICS: usize = wearlab::physics::limits::HARMONICS.max as usize;
@@ -44,6 +46,11 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
                     app.say(format!("type {} ({})", row.symbol(), row.param().allowed()));
                 }
             }
+            Vec::new()
+        }
+        Action::NextChart | Action::PrevChart if app.explore.view.is_some() => {
+            app.explore.view = None;
+            app.say("back to the charts (v sweep, M map)");
             Vec::new()
         }
         Action::NextChart | Action::PrevChart => {
@@ -104,8 +111,24 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.say("save as: a name (saved in your preset folder) or a path, e.g. ~/lab.toml");
             Vec::new()
         }
+        Action::Pin | Action::ClearPins | Action::LogY | Action::Export | Action::ExportSvg
+            if app.explore.view.is_some() =>
+        {
+            app.complain(explore::not_here(app));
+            Vec::new()
+        }
         Action::Export => export(app, app.ui.chart, Format::Csv),
         Action::ExportSvg => export(app, app.ui.chart, Format::Svg),
+        Action::Sweep => sweep_form::open(app, View::Sweep),
+        Action::Map => sweep_form::open(app, View::Map),
+        Action::Dimensionless => {
+            explore::toggle_dimensionless(app);
+            Vec::new()
+        }
+        Action::Cursor | Action::MoveCursor(_) if app.explore.view == Some(View::Map) => {
+            explore::move_cell(app, action);
+            Vec::new()
+        }
         Action::Cursor
         | Action::MoveCursor(_)
         | Action::Pin
@@ -186,6 +209,7 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.doc.dirty = false;
     app.ui.selected = 0;
     app.ui.chart = Chart::first(app.doc.preset.problem);
+    explore::reopen(app);
     app.ui.playing = false;
     app.say(format!("opened {}", entry.source));
     vec![app.request()]

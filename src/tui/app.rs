@@ -9,7 +9,10 @@ use wearlab::preset::{Preset, Problem, SaveTarget};
 
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
+use crate::tui::explore::Explore;
 use crate::tui::form::{self, Change, Row};
+use crate::tui::sweep_form::SweepForm;
+use wearlab::engine::explore::{ExploreAnswer, ExploreRequest};
 
 /// The preset being edited and its history.
 #[derive(Clone, Debug)]
@@ -84,6 +87,8 @@ pub enum Mode {
     ConfirmOpen(Box<PickerEntry>),
     /// Unsaved edits: quit anyway? (No goes back to the mode it was asked from.)
     ConfirmQuit(Box<Mode>),
+    /// Choosing the axes and the quantity of a sweep or a map (`v`, `M`).
+    Form(Box<SweepForm>),
 }
 
 /// A preset the picker offers.
@@ -203,6 +208,8 @@ pub enum Msg {
     ExportExists(PathBuf, String),
     /// An export finished: the file, or why not.
     Exported(PathBuf, Result<(), String>),
+    /// The explorer's thread answered (a pass of) a sweep or a map.
+    Explored(Box<ExploreAnswer>),
 }
 
 /// What the loop must do after an update (the I/O and the solving happen there).
@@ -232,6 +239,9 @@ pub enum Command {
         /// Replace an existing file.
         overwrite: bool,
     },
+    /// Compute this sweep or map on the explorer's thread (cancelling older work), answered
+    /// by `Explored`.
+    Explore(u64, Box<ExploreRequest>),
     /// Leave.
     Quit,
 }
@@ -256,6 +266,8 @@ pub struct App {
     pub solve: Solve,
     /// The UI state.
     pub ui: Ui,
+    /// The sweep chart and the regime map.
+    pub explore: Explore,
 }
 
 impl App {
@@ -263,6 +275,7 @@ impl App {
     pub fn new(preset: Preset, path: Option<PathBuf>, places: Places) -> App {
         App {
             places,
+            explore: Explore::opened(&preset),
             ui: Ui {
                 selected: 0,
                 mode: Mode::Normal,
@@ -288,7 +301,9 @@ impl App {
 
     /// The command that asks for the first solve.
     pub fn start(&mut self) -> Vec<Command> {
-        vec![self.request()]
+        let mut commands = vec![self.request()];
+        commands.extend(crate::tui::explore::follow(self));
+        commands
     }
 
     /// A new request for the current preset and chart.

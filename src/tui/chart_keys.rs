@@ -59,6 +59,9 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
 
 /// The plots of the shown answer on the visible chart (none for a map or while solving).
 fn plots(app: &App) -> Vec<Plot> {
+    if app.explore.view.is_some() {
+        return crate::tui::view::explore::sweep_plots(app).unwrap_or_default();
+    }
     let Some((answer, _)) = shown(app).answer() else {
         return Vec::new();
     };

@@ -9,6 +9,7 @@ use std::time::{Duration, Instant};
 use ratatui::Terminal;
 use ratatui::backend::Backend;
 use ratatui::crossterm::event::{Event, KeyEventKind};
+use wearlab::engine::explore::{ExploreAnswer, Explorer};
 use wearlab::engine::{Answer, Worker};
 
 use crate::tui::app::{App, Command, Msg};
@@ -27,6 +28,8 @@ pub enum Wake {
     Input(Event),
     /// An answer from the worker.
     Answer(Box<Answer>),
+    /// An answer from the explorer's thread (a sweep, a pass of a map).
+    Explored(Box<ExploreAnswer>),
 }
 
 /// The event loop over any backend (a real terminal, or a test buffer).
@@ -38,6 +41,7 @@ pub struct Loop<B: Backend> {
     render: RenderOptions,
     wake: Receiver<Wake>,
     worker: Worker,
+    explorer: Explorer,
     next_frame: Instant,
 }
 
@@ -50,6 +54,8 @@ impl<B: Backend> Loop<B> {
         tx: Sender<Wake>,
         rx: Receiver<Wake>,
     ) -> io::Result<Loop<B>> {
+        let explored = tx.clone();
+        let explorer = Explorer::spawn(move |a| explored.send(Wake::Explored(Box::new(a))).is_ok());
         let worker = Worker::spawn(move |a| tx.send(Wake::Answer(Box::new(a))).is_ok());
         let mut l = Loop {
             terminal,
@@ -57,6 +63,7 @@ impl<B: Backend> Loop<B> {
             render,
             wake: rx,
             worker,
+            explorer,
             next_frame: Instant::now() + FRAME,
         };
         let commands = l.app.start();
@@ -122,6 +129,10 @@ impl<B: Backend> Loop<B> {
                         self.worker.submit(generation, *request);
                         continue;
                     }
+                    Command::Explore(generation, request) => {
+                        self.explorer.submit(generation, *request);
+                        continue;
+                    }
                     Command::ListPresets => {
                         effects::list_presets(self.app.places.presets.as_deref())
                     }
@@ -154,5 +165,6 @@ fn message(wake: Wake) -> Option<Msg> {
         Wake::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => Some(Msg::Key(key)),
         Wake::Input(_) => None,
         Wake::Answer(answer) => Some(Msg::Answer(answer)),
+        Wake::Explored(answer) => Some(Msg::Explored(answer)),
     }
 }

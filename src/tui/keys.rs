@@ -50,6 +50,12 @@ pub enum Action {
     Expand,
     /// Toggle the y axis between linear and logarithmic.
     LogY,
+    /// Choose the parameter, range and quantity of the sweep chart, and show it.
+    Sweep,
+    /// Choose the two parameters and the quantity of the regime map, and show it.
+    Map,
+    /// Toggle the dimensionless view (the problem's dimensionless groups).
+    Dimensionless,
     /// Undo the last change.
     Undo,
     /// Show the help.
@@ -151,7 +157,7 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 18] = [
+pub const BINDINGS: [Binding; 21] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
@@ -220,6 +226,21 @@ pub const BINDINGS: [Binding; 18] = [
         ("y", "log", "", 7), None,
     ),
     binding(
+        &[(ch('v'), Action::Sweep)],
+        "v", "sweep chart: a quantity (mu*, mu* - mu, a+b, theta, ...) against any input over a range you type (log or linear); the other models overlaid, dim where a model's validity check fails (spatial: where the contact is partial), the change marked on the x axis",
+        ("v", "sweep", "", 6), None,
+    ),
+    binding(
+        &[(ch('M'), Action::Map)],
+        "M", "regime map: a quantity over two inputs, coarse first then refined, with the lines theta = 0 and validity of the wide and narrow models (spatial: complete contact); x, [ ] { } move a cursor that reads it",
+        ("M", "map", "", 6), None,
+    ),
+    binding(
+        &[(ch('D'), Action::Dimensionless)],
+        "D", "dimensionless view: the problem's dimensionless groups at the current inputs, and sweeps offer only pure numbers (the groups are defined in this help)",
+        ("D", "groups", "", 7), None,
+    ),
+    binding(
         &[(ch('o'), Action::Open)],
         "o", "open a preset: bundled or your folder (asks first when there are unsaved edits)",
         ("o", "open", "", 5), None,
@@ -283,6 +304,10 @@ pub enum PromptAction {
     Yes,
     /// Answer no.
     No,
+    /// The previous choice of a form's row.
+    Left,
+    /// The next choice of a form's row.
+    Right,
 }
 
 /// The kinds of prompt, for their key lists.
@@ -296,11 +321,13 @@ pub enum Prompt {
     Help,
     /// A yes/no question.
     Question,
+    /// A form of several rows (the sweep's and the map's axes).
+    Form,
 }
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 19] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 26] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -320,6 +347,13 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 19] = [
     (Prompt::Question, ch('y'), PromptAction::Yes, "y yes"),
     (Prompt::Question, ch('n'), PromptAction::No, "n no"),
     (Prompt::Question, key(KeyCode::Esc), PromptAction::No, "Esc no"),
+    (Prompt::Form, key(KeyCode::Up), PromptAction::Up, "↑↓ row"),
+    (Prompt::Form, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Form, key(KeyCode::Left), PromptAction::Left, "←→ choose"),
+    (Prompt::Form, key(KeyCode::Right), PromptAction::Right, ""),
+    (Prompt::Form, key(KeyCode::Backspace), PromptAction::Backspace, "type ⌫"),
+    (Prompt::Form, key(KeyCode::Enter), PromptAction::Accept, "⏎ show"),
+    (Prompt::Form, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
 ];
 
 /// What a key does in a prompt, if anything.

@@ -8,9 +8,11 @@ pub mod chart_keys;
 pub mod charts;
 pub mod effects;
 pub mod event_loop;
+pub mod explore;
 pub mod form;
 pub mod glossary;
 pub mod keys;
+pub mod sweep_form;
 pub mod update;
 pub mod view;
 

@@ -13,6 +13,12 @@ use crate::tui::keys::{self, Prompt, PromptAction};
 
 /// Changes the model for one message; returns what the loop must do.
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
+    let mut commands = dispatch(app, msg);
+    commands.extend(crate::tui::explore::follow(app));
+    commands
+}
+
+fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
     match msg {
         Msg::Key(key) => on_key(app, key),
         Msg::Tick => tick(app),
@@ -38,6 +44,10 @@ pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
                 }
                 Err(why) => app.complain(format!("not saved: {why}")),
             }
+            Vec::new()
+        }
+        Msg::Explored(answer) => {
+            crate::tui::explore::on_answer(app, *answer);
             Vec::new()
         }
         Msg::ExportExists(path, text) => {
@@ -215,6 +225,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 Vec::new()
             }
         }
+        Mode::Form(form) => crate::tui::sweep_form::key(app, *form, key),
         Mode::ConfirmQuit(from) => {
             if yes(&key) {
                 return vec![Command::Quit];

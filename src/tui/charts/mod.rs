@@ -11,6 +11,7 @@ pub mod range;
 pub mod readout;
 mod spatial;
 pub mod svg;
+pub mod sweep;
 pub mod ticks;
 
 use wearlab::engine::{Answer, Output, PlaneOutput, SpatialOutput};
@@ -79,6 +80,11 @@ pub struct Plot {
     pub y_marks: Vec<Mark>,
     /// Shaded x ranges.
     pub shaded: Vec<Shade>,
+    /// Parts of curves drawn dim (where the model's own validity check fails), each with the
+    /// index of the curve whose colour it takes; named once in the legend by `dim_label`.
+    pub dim: Vec<(usize, Series)>,
+    /// The legend's name of the dim parts.
+    pub dim_label: String,
 }
 
 impl Plot {
@@ -93,6 +99,8 @@ impl Plot {
             x_marks: Vec::new(),
             y_marks: Vec::new(),
             shaded: Vec::new(),
+            dim: Vec::new(),
+            dim_label: String::new(),
         }
     }
 }

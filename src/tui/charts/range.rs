@@ -52,6 +52,7 @@ fn setting(plot: &Plot, y: bool) -> impl Iterator<Item = &(f64, f64)> {
     plot.series
         .iter()
         .take(take)
+        .chain(plot.dim.iter().filter(move |d| d.0 < take).map(|d| &d.1))
         .chain(&plot.markers)
         .flat_map(|s| &s.points)
 }

@@ -155,25 +155,31 @@ fn footers_fit_and_name_every_key_of_the_problem() {
     // gives the others)
     assert_eq!(
         footer(Problem::Plane, 80),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 80),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x c/C f y o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u ? help q quit"
     );
     assert_eq!(
         footer(Problem::Plane, 120),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log o open s save e/E export u undo ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 120),
-        "↑↓  ←→ nudge  ⏎  Tab chart  p problem  space play  +/-  x cursor  c/C pin  f full  y log  o  s  e/E  u  ? help  q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u ? help q quit"
     );
 }
 
 #[test]
 fn every_prompt_says_how_to_leave_it() {
-    for p in [Prompt::Text, Prompt::List, Prompt::Help, Prompt::Question] {
+    for p in [
+        Prompt::Text,
+        Prompt::List,
+        Prompt::Help,
+        Prompt::Question,
+        Prompt::Form,
+    ] {
         let text = prompt_footer(p);
         assert!(text.contains("Esc"), "{p:?}: {text}");
         assert!(text.ends_with("Ctrl-C quit"), "{p:?}: {text}");

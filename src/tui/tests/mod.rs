@@ -4,6 +4,7 @@
 
 mod bytes;
 mod charts;
+mod explore;
 mod files;
 mod keys;
 mod legend;

@@ -16,6 +16,7 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
         Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
         Mode::Help(_) => Some(Prompt::Help),
+        Mode::Form(_) => Some(Prompt::Form),
         Mode::ConfirmOverwrite(_)
         | Mode::ConfirmExport(_)
         | Mode::ConfirmOpen(_)

@@ -45,9 +45,12 @@ fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
             raster.line(&fit(&s.points), style.pin_ink(p, i));
         }
     }
-    // the first curve last, on top
+    // the first curve last, on top; then its dim parts over it
     for (i, s) in frame.plot.series.iter().enumerate().rev() {
         raster.line(&fit(&s.points), style.series_ink(i));
+    }
+    for (i, s) in frame.plot.dim.iter().rev() {
+        raster.line(&fit(&s.points), style.dim_ink(*i));
     }
     if let Some(m) = &frame.plot.markers {
         for p in fit(&m.points) {
@@ -104,6 +107,14 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
         style: style.mark(),
         text: m.label.clone(),
     }));
+    if let Some((i, _)) = plot.dim.first() {
+        let ink = style.dim_ink(*i);
+        out.push(Entry {
+            sample: style.sample(ink),
+            style: ink.style,
+            text: plot.dim_label.clone(),
+        });
+    }
     let (shade_glyph, shade_style) = style.shaded();
     out.extend(plot.shaded.iter().map(|s| Entry {
         sample: shade_glyph.to_string().repeat(2),

@@ -6,12 +6,14 @@ pub mod axis;
 pub mod bars;
 pub mod chart;
 pub mod contact_status;
+pub mod explore;
 pub mod form;
 pub mod heatmap;
 pub mod layout;
 pub mod legend;
 pub mod popups;
 pub mod raster;
+pub mod regime;
 pub mod status;
 pub mod theme;
 
@@ -103,6 +105,7 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
             popups::picker(entries, *selected, style, frame, area)
         }
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
+        Mode::Form(form) => explore::form(form, style, frame, area),
         _ => {}
     }
 }
@@ -154,6 +157,9 @@ pub fn note(shown: &Shown) -> String {
 }
 
 fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    if app.explore.view.is_some() {
+        return explore::draw(app, style, frame, area);
+    }
     let chart = app.ui.chart;
     let (i, n) = chart.position();
     let block = Block::default()

@@ -51,7 +51,11 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     };
     let width = inner.width as usize;
     // the cursor readout first, each value whole
-    let mut lines: Vec<Line> = cursor_readout(app, answer)
+    let readout = match app.explore.view {
+        Some(_) => crate::tui::view::explore::readout(app),
+        None => cursor_readout(app, answer),
+    };
+    let mut lines: Vec<Line> = readout
         .map(|items| pack(&items, width, "  "))
         .unwrap_or_default()
         .into_iter()

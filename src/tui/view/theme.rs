@@ -123,6 +123,16 @@ impl RenderOptions {
         }
     }
 
+    /// How a dim part of the i-th curve is drawn (where its model fails its validity check):
+    /// the curve's colour, dim; without colour a '.' for every curve.
+    pub fn dim_ink(self, i: usize) -> Ink {
+        Ink {
+            glyph: '.',
+            solid: false,
+            style: self.series(i).add_modifier(Modifier::DIM),
+        }
+    }
+
     /// A legend sample of an ink: a short line in its colour, or its character twice.
     pub fn sample(self, ink: Ink) -> String {
         if self.braille() && !ink.solid {

@@ -1,0 +1,142 @@
+//! The explorer's sweeps and regime maps (issue 12) on a background thread of their own: the
+//! library's `explore::curve` and `explore::map`, the newest request first, a map delivered after
+//! each of its passes (coarse first, then refined), and the work in progress cancelled as soon as
+//! a newer request arrives (an input edited, another axis chosen). Finished results are kept in a
+//! small cache keyed by the request, so going back to an earlier sweep costs nothing.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Condvar, Mutex};
+use std::thread;
+
+use crate::engine::cache::Cache;
+use crate::explore::Opening;
+use crate::explore::curve::{Curve, curve};
+use crate::explore::map::{Map, regime_map};
+use crate::preset::Preset;
+
+/// A sweep or a map of a preset.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExploreRequest {
+    /// The inputs (the varied parameters take their values from the job's axes).
+    pub preset: Preset,
+    /// The curve or the map.
+    pub job: Opening,
+}
+
+/// What is known of a request.
+#[derive(Clone, Debug)]
+pub enum Explored {
+    /// The curve (complete).
+    Curve(Arc<Curve>),
+    /// The map after a pass (`Map::stride` is 1 once complete).
+    Map(Arc<Map>),
+}
+
+/// One delivery of the explorer.
+#[derive(Clone, Debug)]
+pub struct ExploreAnswer {
+    /// The generation number the request was submitted with.
+    pub generation: u64,
+    /// The request answered.
+    pub request: Arc<ExploreRequest>,
+    /// The result so far.
+    pub explored: Explored,
+    /// True when nothing more comes for this request.
+    pub complete: bool,
+}
+
+/// Computes a request: `on_pass` gets each coarse pass of a map; None when `cancel` was set
+/// before the end.
+pub fn explore(
+    request: &ExploreRequest,
+    cancel: &AtomicBool,
+    on_pass: &mut dyn FnMut(&Map),
+) -> Option<Explored> {
+    match &request.job {
+        Opening::Curve(spec) => {
+            curve(&request.preset, spec, cancel).map(|c| Explored::Curve(c.into()))
+        }
+        Opening::Map(spec) => regime_map(&request.preset, spec, cancel, &mut |m: &Map| {
+            if m.stride > 1 {
+                on_pass(m)
+            }
+        })
+        .map(|m| Explored::Map(m.into())),
+    }
+}
+
+type Job = (u64, Arc<ExploreRequest>);
+
+/// The newest request not yet started, and whether the one running must stop.
+struct Shared {
+    pending: Mutex<Option<Job>>,
+    wake: Condvar,
+    cancel: AtomicBool,
+}
+
+/// Finished results kept.
+const KEPT: usize = 4;
+
+/// The explorer's thread: one job at a time; a newer request replaces any pending one and
+/// cancels the running one (its solves stop at the next point).
+pub struct Explorer {
+    shared: Arc<Shared>,
+}
+
+impl Explorer {
+    /// Starts the thread; `deliver` gets every answer and returns false when nobody listens any
+    /// more (the thread then ends).
+    pub fn spawn(mut deliver: impl FnMut(ExploreAnswer) -> bool + Send + 'static) -> Explorer {
+        let shared = Arc::new(Shared {
+            pending: Mutex::new(None),
+            wake: Condvar::new(),
+            cancel: AtomicBool::new(false),
+        });
+        let ours = Arc::clone(&shared);
+        thread::spawn(move || {
+            let mut kept: Cache<ExploreRequest, Explored> = Cache::new(KEPT);
+            loop {
+                let (generation, request) = {
+                    let mut pending = ours.pending.lock().expect("never poisoned");
+                    while pending.is_none() {
+                        pending = ours.wake.wait(pending).expect("never poisoned");
+                    }
+                    ours.cancel.store(false, Ordering::SeqCst);
+                    pending.take().expect("checked above")
+                };
+                let answer = |explored, complete| ExploreAnswer {
+                    generation,
+                    request: Arc::clone(&request),
+                    explored,
+                    complete,
+                };
+                if let Some(done) = kept.get(&request) {
+                    if !deliver(answer(done, true)) {
+                        return;
+                    }
+                    continue;
+                }
+                let mut listening = true;
+                let result = explore(&request, &ours.cancel, &mut |m| {
+                    listening &= deliver(answer(Explored::Map(Arc::new(m.clone())), false));
+                });
+                if let Some(done) = result {
+                    kept.insert((*request).clone(), done.clone());
+                    listening &= deliver(answer(done, true));
+                }
+                if !listening {
+                    return;
+                }
+            }
+        });
+        Explorer { shared }
+    }
+
+    /// Asks for a sweep or a map; replaces any request not yet started and stops the running one.
+    pub fn submit(&self, generation: u64, request: ExploreRequest) {
+        let mut pending = self.shared.pending.lock().expect("never poisoned");
+        *pending = Some((generation, Arc::new(request)));
+        self.shared.cancel.store(true, Ordering::SeqCst);
+        self.shared.wake.notify_one();
+    }
+}

@@ -1,0 +1,100 @@
+//! The sweep chart (`v`): a quantity against any numeric input, from the explorer's curve
+//! (`explore::curve`). One curve per plane model, the preset's first (it sets the y range); where
+//! a model's own validity check fails (the spatial problem: where the contact is not complete)
+//! its curve is drawn dim, and each place where the verdict changes is marked on the x axis. The
+//! current value of the parameter is marked "now".
+
+use wearlab::explore::curve::{Curve, CurveSpec};
+use wearlab::physics::Spacing;
+use wearlab::preset::{Key, Problem};
+
+use crate::tui::charts::{Axis, Figure, Mark, Plot, Scale, Series, mu_line};
+
+/// The x axis of a parameter: its symbol and unit, log or linear as its range.
+pub fn x_axis(key: Key, spacing: Spacing) -> Axis {
+    Axis {
+        label: key.symbol(),
+        unit: key.param().unit,
+        scale: match spacing {
+            Spacing::Log => Scale::Log,
+            Spacing::Linear => Scale::Linear,
+        },
+    }
+}
+
+/// The legend name of the dim parts.
+pub fn dim_label(problem: Problem) -> &'static str {
+    match problem {
+        Problem::Plane => "dim: the model's validity check fails",
+        Problem::Spatial => "dim: partial contact (not complete)",
+    }
+}
+
+/// The figure of a computed curve.
+pub fn figure(problem: Problem, mu: f64, spec: &CurveSpec, curve: &Curve) -> Figure {
+    let q = spec.quantity;
+    let symbol = q.symbol();
+    let mut series = Vec::new();
+    let mut dim = Vec::new();
+    let mut x_marks = vec![Mark {
+        at: curve.current,
+        label: "now".into(),
+    }];
+    for (i, s) in curve.series.iter().enumerate() {
+        let model = s.model.map(|m| m.name());
+        let point = |k: usize| s.y[k].as_ref().ok().map(|y| (curve.x[k], *y));
+        series.push(Series {
+            name: match model {
+                Some(m) => format!("{symbol} {m}"),
+                None => symbol.clone(),
+            },
+            points: (0..curve.x.len()).filter_map(point).collect(),
+        });
+        // each run of points where the verdict fails, as its own dim piece
+        let mut run: Vec<(f64, f64)> = Vec::new();
+        for k in 0..=curve.x.len() {
+            let failing = k < curve.x.len() && s.holds[k] == Some(false);
+            match (failing, point(k.min(curve.x.len() - 1))) {
+                (true, Some(p)) => run.push(p),
+                _ if !run.is_empty() => dim.push((
+                    i,
+                    Series {
+                        name: String::new(),
+                        points: std::mem::take(&mut run),
+                    },
+                )),
+                _ => {}
+            }
+        }
+        x_marks.extend(s.changes.iter().map(|c| Mark {
+            at: c.at,
+            label: format!(
+                "{}{}",
+                model.map(|m| format!("{m} ")).unwrap_or_default(),
+                if c.holds_after { "ok>" } else { "fails>" }
+            ),
+        }));
+    }
+    let quantity = q.quantity();
+    let y = Axis {
+        label: symbol,
+        unit: quantity.unit,
+        scale: Scale::Linear,
+    };
+    let mut plot = Plot::new(x_axis(spec.axis.key, spec.axis.range.spacing), y, series);
+    plot.focus = 1;
+    // in increasing x, so that each label can sit at its own line
+    x_marks.sort_by(|a, b| a.at.total_cmp(&b.at));
+    plot.x_marks = x_marks;
+    plot.dim = dim;
+    plot.dim_label = dim_label(problem).into();
+    plot.y_marks = match quantity.name {
+        "mu_star" => vec![mu_line(mu)],
+        "mu_star_minus_mu" => vec![Mark {
+            at: 0.0,
+            label: "0: mu* = mu".into(),
+        }],
+        _ => Vec::new(),
+    };
+    Figure::Plots(vec![plot])
+}

@@ -1,0 +1,272 @@
+//! The form of `v` and `M` (part of `update`: pure): the parameter of each axis (any numeric
+//! input of the problem), its range (typed with units, "10um", "3 GPa"), its number of points and
+//! scale, and the quantity shown. It opens on what is shown now (or the defaults: a decade either
+//! side of the current value, within the parameter's limits); Enter checks everything through
+//! the library (`explore::Axis::new`) and either shows the sweep or the map, or says what is
+//! wrong and what is allowed, the form staying open for the correction.
+
+use wearlab::explore::{Axis, QuantityKey};
+use wearlab::physics::Spacing;
+use wearlab::physics::limits;
+use wearlab::preset::Key;
+use wearlab::units::parse_si;
+
+use crate::tui::app::{App, Command, Mode};
+use crate::tui::explore::{View, curve_spec, map_spec, parameters, quantities};
+use crate::tui::keys::{self, Prompt, PromptAction};
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use wearlab::explore::curve::CurveSpec;
+use wearlab::explore::map::MapSpec;
+
+/// One axis as typed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Draft {
+    /// The parameter.
+    pub key: Key,
+    /// The first value, as typed (the parameter's unit when none is typed).
+    pub from: String,
+    /// The last value.
+    pub to: String,
+    /// The number of points.
+    pub points: String,
+    /// Log spacing (else linear).
+    pub log: bool,
+}
+
+impl Draft {
+    fn of(axis: &Axis) -> Draft {
+        Draft {
+            key: axis.key,
+            from: limits::show(axis.range.min),
+            to: limits::show(axis.range.max),
+            points: axis.range.points.to_string(),
+            log: axis.range.spacing == Spacing::Log,
+        }
+    }
+}
+
+/// A row of the form.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Field {
+    /// The parameter of axis n (←→ choose).
+    Param(usize),
+    /// Its first value (typed).
+    From(usize),
+    /// Its last value (typed).
+    To(usize),
+    /// Its number of points (typed).
+    Points(usize),
+    /// Log or linear (←→).
+    Scale(usize),
+    /// The quantity shown (←→).
+    Quantity,
+}
+
+/// The form's state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepForm {
+    /// A sweep (one axis) or a map (two).
+    pub view: View,
+    /// The axes.
+    pub axes: Vec<Draft>,
+    /// The quantity.
+    pub quantity: QuantityKey,
+    /// The selected row.
+    pub row: usize,
+}
+
+impl SweepForm {
+    /// The rows, in order.
+    pub fn fields(&self) -> Vec<Field> {
+        (0..self.axes.len())
+            .flat_map(|n| {
+                [
+                    Field::Param(n),
+                    Field::From(n),
+                    Field::To(n),
+                    Field::Points(n),
+                    Field::Scale(n),
+                ]
+            })
+            .chain([Field::Quantity])
+            .collect()
+    }
+
+    /// The selected row.
+    pub fn field(&self) -> Field {
+        let fields = self.fields();
+        fields[self.row.min(fields.len() - 1)]
+    }
+}
+
+/// Opens the form on what the view shows now.
+pub fn open(app: &mut App, view: View) -> Vec<Command> {
+    let form = match view {
+        View::Sweep => curve_spec(app).map(|c| SweepForm {
+            view,
+            axes: vec![Draft::of(&c.axis)],
+            quantity: c.quantity,
+            row: 0,
+        }),
+        View::Map => map_spec(app).map(|m| SweepForm {
+            view,
+            axes: vec![Draft::of(&m.x), Draft::of(&m.y)],
+            quantity: m.quantity,
+            row: 0,
+        }),
+    };
+    match form {
+        Some(form) => {
+            app.ui.mode = Mode::Form(Box::new(form));
+            app.say("↑↓ a row, ←→ a choice, type a value (units allowed: 10um, 3 GPa), ⏎ show");
+        }
+        None => app.complain("this problem has nothing to sweep"),
+    }
+    Vec::new()
+}
+
+fn cycle<T: PartialEq + Copy>(all: &[T], now: T, up: bool) -> T {
+    let n = all.len();
+    let i = all.iter().position(|x| *x == now).unwrap_or(0);
+    all[if up { (i + 1) % n } else { (i + n - 1) % n }]
+}
+
+/// A key in the form.
+pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
+    let preset = &app.doc.preset;
+    let rows = form.fields().len();
+    match keys::prompt_action(Prompt::Form, &key) {
+        Some(PromptAction::Accept) => return accept(app, form),
+        Some(PromptAction::Cancel) => {
+            app.ui.mode = Mode::Normal;
+            app.say("sweep unchanged");
+            return Vec::new();
+        }
+        Some(PromptAction::Up) => form.row = form.row.checked_sub(1).unwrap_or(rows - 1),
+        Some(PromptAction::Down) => form.row = (form.row + 1) % rows,
+        Some(action @ (PromptAction::Left | PromptAction::Right)) => {
+            let up = action == PromptAction::Right;
+            match form.field() {
+                Field::Param(n) => {
+                    let key = cycle(&parameters(preset), form.axes[n].key, up);
+                    if let Ok(axis) = Axis::default_for(preset, key) {
+                        let points = form.axes[n].points.clone();
+                        form.axes[n] = Draft {
+                            points,
+                            ..Draft::of(&axis)
+                        };
+                    }
+                }
+                Field::Scale(n) => form.axes[n].log = !form.axes[n].log,
+                Field::Quantity => {
+                    let all = quantities(preset, app.explore.dimensionless);
+                    if !all.is_empty() {
+                        form.quantity = cycle(&all, form.quantity, up);
+                    }
+                }
+                _ => {}
+            }
+        }
+        Some(PromptAction::Backspace) => {
+            if let Some(text) = text_of(&mut form) {
+                text.pop();
+            }
+        }
+        _ => {
+            let chord = key
+                .modifiers
+                .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT);
+            if let (KeyCode::Char(c), false) = (key.code, chord) {
+                match text_of(&mut form) {
+                    Some(text) => text.push(c),
+                    None => app.complain("this row is a choice: ←→ change it"),
+                }
+            }
+        }
+    }
+    app.ui.mode = Mode::Form(Box::new(form));
+    Vec::new()
+}
+
+fn text_of(form: &mut SweepForm) -> Option<&mut String> {
+    match form.field() {
+        Field::From(n) => Some(&mut form.axes[n].from),
+        Field::To(n) => Some(&mut form.axes[n].to),
+        Field::Points(n) => Some(&mut form.axes[n].points),
+        _ => None,
+    }
+}
+
+/// The axis a draft describes, checked by the library; Err says what is allowed.
+pub fn axis(app: &App, draft: &Draft) -> Result<Axis, String> {
+    let key = draft.key;
+    let param = key.param();
+    let allowed = param.limit().map_or("", |l| l.allowed);
+    let value = |end: &str, text: &str| {
+        parse_si(text, param.unit)
+            .map_err(|why| format!("{}: {end} = {why} (allowed {allowed})", key.symbol()))
+    };
+    let points: usize = draft.points.trim().parse().map_err(|_| {
+        format!(
+            "{}: points = '{}' is not a whole number: allowed {}",
+            key.symbol(),
+            draft.points,
+            limits::SWEEP_POINTS.allowed
+        )
+    })?;
+    let spacing = if draft.log {
+        Spacing::Log
+    } else {
+        Spacing::Linear
+    };
+    let ends = [value("from", &draft.from)?, value("to", &draft.to)?];
+    Axis::new(&app.doc.preset, key, ends, points, spacing)
+}
+
+fn accept(app: &mut App, form: SweepForm) -> Vec<Command> {
+    let axes: Result<Vec<Axis>, String> = form.axes.iter().map(|d| axis(app, d)).collect();
+    let axes = match axes {
+        Ok(a) => a,
+        Err(why) => {
+            // the form stays open with the text, for the correction
+            app.complain(why);
+            app.ui.mode = Mode::Form(Box::new(form));
+            return Vec::new();
+        }
+    };
+    if let [x, y] = axes.as_slice() {
+        if x.key == y.key {
+            app.complain("the map needs two different parameters (←→ on a parameter row)");
+            app.ui.mode = Mode::Form(Box::new(form));
+            return Vec::new();
+        }
+    }
+    app.ui.mode = Mode::Normal;
+    let preset = &app.doc.preset;
+    match form.view {
+        View::Sweep => {
+            app.explore.curve = Some(CurveSpec {
+                axis: axes[0],
+                quantity: form.quantity,
+                models: wearlab::explore::models(preset, &axes[0]),
+            });
+        }
+        View::Map => {
+            app.explore.map = Some(MapSpec {
+                x: axes[0],
+                y: axes[1],
+                quantity: form.quantity,
+            });
+        }
+    }
+    app.explore.view = Some(form.view);
+    app.say(format!(
+        "{} against {} (Tab: back to the charts)",
+        form.quantity.symbol(),
+        axes.iter()
+            .map(|a| a.key.symbol())
+            .collect::<Vec<_>>()
+            .join(" and ")
+    ));
+    Vec::new()
+}

@@ -1,0 +1,178 @@
+//! The sweep chart and the regime map: their keys through `update` (pure), the form refusing
+//! what is not allowed, the requests following the inputs, and their screens.
+
+use std::sync::atomic::AtomicBool;
+
+use ratatui::crossterm::event::KeyCode;
+use wearlab::engine::explore::{ExploreAnswer, Explored, explore};
+
+use super::*;
+use crate::tui::app::Mode;
+use crate::tui::explore::View;
+
+const ASCII: RenderOptions = RenderOptions {
+    ascii: true,
+    color: false,
+    truecolor: false,
+};
+
+const COLOUR: RenderOptions = RenderOptions {
+    ascii: false,
+    color: true,
+    truecolor: false,
+};
+
+/// Computes the explorer's requests among `commands` as its thread would (every map pass, then
+/// the end) and delivers the answers.
+fn explored(app: &mut App, commands: &[Command]) {
+    for c in commands {
+        let Command::Explore(generation, request) = c else {
+            continue;
+        };
+        let request = std::sync::Arc::new((**request).clone());
+        let answer = |explored, complete| ExploreAnswer {
+            generation: *generation,
+            request: request.clone(),
+            explored,
+            complete,
+        };
+        let mut passes = Vec::new();
+        let done = explore(&request, &AtomicBool::new(false), &mut |m| {
+            passes.push(answer(Explored::Map(m.clone().into()), false))
+        })
+        .expect("not cancelled");
+        for a in passes.into_iter().chain([answer(done, true)]) {
+            update(app, Msg::Explored(Box::new(a)));
+        }
+    }
+}
+
+fn explore_commands(cmds: &[Command]) -> usize {
+    cmds.iter()
+        .filter(|c| matches!(c, Command::Explore(..)))
+        .count()
+}
+
+#[test]
+fn a_preset_with_an_explore_section_opens_on_its_sweep() {
+    let mut app = app("coating-thickness-sweep.toml");
+    let cmds = app.start();
+    assert_eq!(app.explore.view, Some(View::Sweep));
+    assert_eq!(explore_commands(&cmds), 1);
+    let map = self::app("friction-or-wear-map.toml");
+    assert_eq!(map.explore.view, Some(View::Map));
+    let plain = self::app("polymer-coating.toml");
+    assert_eq!(plain.explore.view, None);
+}
+
+#[test]
+fn v_opens_a_form_that_refuses_what_is_not_allowed() {
+    let mut app = solved("polymer-coating.toml");
+    assert!(press(&mut app, KeyCode::Char('v')).is_empty());
+    let Mode::Form(form) = &app.ui.mode else {
+        panic!("{:?}", app.ui.mode)
+    };
+    // the default: mu* against the load, a decade either side of it
+    assert_eq!(form.axes[0].key.to_string(), "plane.load");
+    assert_eq!(form.quantity.to_string(), "mu_star");
+    // the parameter row: → takes the next numeric input of the problem
+    press(&mut app, KeyCode::Right);
+    let Mode::Form(form) = &app.ui.mode else {
+        panic!()
+    };
+    assert_ne!(form.axes[0].key.to_string(), "plane.load");
+    // from = -1 Pa for E: refused, saying what is allowed, the form still open
+    press(&mut app, KeyCode::Left);
+    for _ in 0..6 {
+        press(&mut app, KeyCode::Right);
+    }
+    let Mode::Form(form) = &app.ui.mode else {
+        panic!()
+    };
+    let key = form.axes[0].key;
+    press(&mut app, KeyCode::Down);
+    for _ in 0..20 {
+        press(&mut app, KeyCode::Backspace);
+    }
+    type_text(&mut app, "-1");
+    let cmds = press(&mut app, KeyCode::Enter);
+    assert_eq!(explore_commands(&cmds), 0);
+    assert!(matches!(app.ui.mode, Mode::Form(_)));
+    let message = app.ui.message.clone().unwrap();
+    assert!(
+        message.error && message.text.contains("allowed"),
+        "{key}: {}",
+        message.text
+    );
+    // a valid range shows the sweep and asks the explorer for it
+    for _ in 0..2 {
+        press(&mut app, KeyCode::Backspace);
+    }
+    let value = app.doc.preset.get(key).unwrap();
+    type_text(&mut app, &format!("{}", value / 2.0));
+    let cmds = press(&mut app, KeyCode::Enter);
+    assert_eq!(app.ui.mode, Mode::Normal);
+    assert_eq!(app.explore.view, Some(View::Sweep));
+    assert_eq!(explore_commands(&cmds), 1);
+    assert_eq!(app.explore.curve.as_ref().unwrap().axis.key, key);
+    // an edit of an input asks again (the newer request cancels the older one's work)
+    let cmds = press(&mut app, KeyCode::Right);
+    assert_eq!(explore_commands(&cmds), 1);
+    // Tab goes back to the charts; nothing more is asked
+    let cmds = press(&mut app, KeyCode::Tab);
+    assert_eq!(app.explore.view, None);
+    assert_eq!(explore_commands(&cmds), 0);
+}
+
+#[test]
+fn esc_leaves_the_form_and_the_view_unchanged() {
+    let mut app = solved("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('v'));
+    let cmds = press(&mut app, KeyCode::Esc);
+    assert_eq!(app.ui.mode, Mode::Normal);
+    assert_eq!(app.explore.view, None);
+    assert_eq!(explore_commands(&cmds), 0);
+}
+
+#[test]
+fn the_map_cursor_moves_on_the_grid_and_d_toggles_the_groups() {
+    let mut app = solved("friction-or-wear-map.toml");
+    press(&mut app, KeyCode::Char('x'));
+    assert_eq!(app.explore.cell, Some((20, 20)));
+    press(&mut app, KeyCode::Char(']'));
+    press(&mut app, KeyCode::Char('}'));
+    assert_eq!(app.explore.cell, Some((21, 21)));
+    for _ in 0..50 {
+        press(&mut app, KeyCode::Char('{'));
+    }
+    assert_eq!(app.explore.cell, Some((21, 0)));
+    press(&mut app, KeyCode::Char('D'));
+    assert!(app.explore.dimensionless);
+    press(&mut app, KeyCode::Char('D'));
+    assert!(!app.explore.dimensionless);
+}
+
+#[test]
+fn sweep_screens() {
+    let mut app = app("coating-thickness-sweep.toml");
+    let cmds = app.start();
+    settle(&mut app, cmds.clone());
+    explored(&mut app, &cmds);
+    insta::assert_snapshot!("sweep_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("sweep_120x40", screen(&app, 120, 40, COLOUR));
+    insta::assert_snapshot!("sweep_ascii_80x24", screen(&app, 80, 24, ASCII));
+    press(&mut app, KeyCode::Char('x'));
+    insta::assert_snapshot!("sweep_cursor_120x40", screen(&app, 120, 40, PLAIN));
+}
+
+#[test]
+fn map_screens() {
+    let mut app = app("friction-or-wear-map.toml");
+    let cmds = app.start();
+    settle(&mut app, cmds.clone());
+    explored(&mut app, &cmds);
+    insta::assert_snapshot!("map_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("map_120x40", screen(&app, 120, 40, COLOUR));
+    press(&mut app, KeyCode::Char('x'));
+    insta::assert_snapshot!("map_cursor_120x40", screen(&app, 120, 40, ASCII));
+}

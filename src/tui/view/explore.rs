@@ -1,0 +1,261 @@
+//! The chart area while the sweep chart or the regime map is shown: the title says what is
+//! against what and whether it is still being computed, the figure (the sweep through the chart
+//! widget, the map through `regime`), and under it, when the view is the one the preset's
+//! `[explore]` section opens on, the preset's "Look at:" paragraph, so that the lesson's words
+//! sit next to what they describe. The status's readout of the sweep's or the map's cursor is
+//! here too.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Borders, Clear, Paragraph};
+use wearlab::engine::explore::Explored;
+use wearlab::explore::{Opening, opening};
+
+use crate::tui::app::App;
+use crate::tui::charts::range::frames;
+use crate::tui::charts::readout::readout as read;
+use crate::tui::charts::{Figure, Plot, sweep};
+use crate::tui::explore::{View, shown, wanted};
+use crate::tui::sweep_form::{Field, SweepForm};
+use crate::tui::view::chart::{self, Extras};
+use crate::tui::view::layout::centered;
+use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::{regime, wrap};
+
+/// The plots of the sweep on screen (None while there is none).
+pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
+    let (answer, _) = shown(app)?;
+    let (Opening::Curve(spec), Explored::Curve(curve)) = (&answer.request.job, &answer.explored)
+    else {
+        return None;
+    };
+    let preset = &answer.request.preset;
+    match sweep::figure(preset.problem, preset.friction.coefficient, spec, curve) {
+        Figure::Plots(p) => Some(p),
+        Figure::Map(_) => None,
+    }
+}
+
+/// The preset's "Look at:" paragraph, when the view shows what its `[explore]` section opens on.
+fn lesson(app: &App) -> Option<String> {
+    let want = wanted(app)?;
+    let own = opening(&app.doc.preset)?.ok()?;
+    if !same_axes(&want.job, &own) {
+        return None;
+    }
+    let text = &app.doc.preset.description;
+    let start = text.find("Look at")?;
+    let end = text[start..]
+        .find("Command line")
+        .map_or(text.len(), |e| start + e);
+    Some(
+        text[start..end]
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" "),
+    )
+}
+
+fn same_axes(a: &Opening, b: &Opening) -> bool {
+    match (a, b) {
+        (Opening::Curve(a), Opening::Curve(b)) => a.axis == b.axis && a.quantity == b.quantity,
+        (Opening::Map(a), Opening::Map(b)) => a == b,
+        _ => false,
+    }
+}
+
+/// Draws the sweep or the map into the chart's area.
+pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let Some(want) = wanted(app) else {
+        return;
+    };
+    let shown = shown(app);
+    let done = shown.is_some_and(|(a, current)| current && a.complete);
+    let what = match &want.job {
+        Opening::Curve(c) => format!(
+            "sweep: {} against {}",
+            c.quantity.symbol(),
+            c.axis.key.symbol()
+        ),
+        Opening::Map(m) => format!(
+            "regime map: {} over {} and {}",
+            m.quantity.symbol(),
+            m.x.key.symbol(),
+            m.y.key.symbol()
+        ),
+    };
+    let note = match shown {
+        _ if done => String::new(),
+        Some((a, true)) => match &a.explored {
+            Explored::Map(m) => format!("  refining (every {}th point)…", m.stride),
+            Explored::Curve(_) => "  computing…".into(),
+        },
+        Some((_, false)) => "  [previous inputs] computing…".into(),
+        None => "  computing…".into(),
+    };
+    let key = match app.explore.view {
+        Some(View::Map) => "M",
+        _ => "v",
+    };
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .title(format!(" {what}{note} "))
+        .title_bottom(Line::from(format!(" {key}: change  Tab: charts ")).right_aligned());
+    let mut inner = block.inner(area);
+    frame.render_widget(block, area);
+    if let Some(text) = lesson(app) {
+        let lines = wrap(&text, inner.width as usize);
+        // a quarter of a tall chart's height, one line of a short one (f gives it more room)
+        let most = if inner.height >= 20 {
+            inner.height / 4
+        } else {
+            1
+        };
+        let n = (lines.len() as u16).min(most);
+        inner.height -= n;
+        for (i, l) in lines.iter().take(n as usize).enumerate() {
+            frame.buffer_mut().set_stringn(
+                inner.x,
+                inner.y + inner.height + i as u16,
+                l,
+                inner.width as usize,
+                style.heading(),
+            );
+        }
+    }
+    let Some((answer, current)) = shown else {
+        return;
+    };
+    match &answer.explored {
+        Explored::Curve(_) => {
+            let plots = sweep_plots(app).unwrap_or_default();
+            let frames = frames(&plots, &[], false);
+            let extras = Extras {
+                cursor: app.ui.cursor,
+                pins: Vec::new(),
+            };
+            chart::draw(&frames, style, &extras, frame.buffer_mut(), inner);
+        }
+        Explored::Map(map) => {
+            if let Opening::Map(spec) = &answer.request.job {
+                regime::draw(
+                    spec,
+                    map,
+                    app.explore.cell,
+                    style,
+                    frame.buffer_mut(),
+                    inner,
+                );
+            }
+        }
+    }
+    if !current {
+        frame.buffer_mut().set_style(inner, style.stale());
+    }
+}
+
+/// The status's first lines in the sweep or map view: the cursor's readout.
+pub fn readout(app: &App) -> Option<Vec<String>> {
+    match app.explore.view? {
+        View::Sweep => {
+            let cursor = app.ui.cursor?;
+            let plots = sweep_plots(app)?;
+            let mut items = read(&frames(&plots, &[], false), cursor);
+            items[0] = format!("cursor {}:", items[0]);
+            Some(items)
+        }
+        View::Map => {
+            let (answer, _) = shown(app)?;
+            let (Opening::Map(spec), Explored::Map(map)) = (&answer.request.job, &answer.explored)
+            else {
+                return None;
+            };
+            regime::readout(spec, map, app.explore.cell?)
+        }
+    }
+}
+
+/// The form of `v` and `M`, over the chart.
+pub fn form(form: &SweepForm, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let rows = form.fields();
+    let rect = centered(area, 64, rows.len() as u16 + 5);
+    frame.render_widget(Clear, rect);
+    let title = match form.view {
+        View::Sweep => " sweep: one parameter along x ",
+        View::Map => " regime map: two parameters ",
+    };
+    let block = Block::default().borders(Borders::ALL).title(title);
+    let inner = block.inner(rect);
+    frame.render_widget(block, rect);
+    let axis_name = |n: usize| match (form.view, n) {
+        (View::Sweep, _) => "x",
+        (View::Map, 0) => "x",
+        _ => "y",
+    };
+    let mut lines: Vec<Line> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            let (label, value) = match *f {
+                Field::Param(n) => {
+                    let k = form.axes[n].key;
+                    let p = k.param();
+                    let unit = if p.unit.is_empty() { "-" } else { p.unit };
+                    (
+                        format!("{} parameter", axis_name(n)),
+                        format!("◀ {}: {} [{unit}] ▶", k.symbol(), p.label),
+                    )
+                }
+                Field::From(n) => ("  from".into(), form.axes[n].from.clone()),
+                Field::To(n) => ("  to".into(), form.axes[n].to.clone()),
+                Field::Points(n) => ("  points".into(), form.axes[n].points.clone()),
+                Field::Scale(n) => (
+                    "  scale".into(),
+                    if form.axes[n].log {
+                        "◀ log ▶"
+                    } else {
+                        "◀ linear ▶"
+                    }
+                    .into(),
+                ),
+                Field::Quantity => {
+                    let q = form.quantity;
+                    let unit = q.quantity().unit;
+                    let unit = if unit.is_empty() { "-" } else { unit };
+                    ("quantity".into(), format!("◀ {} [{unit}] ▶", q.symbol()))
+                }
+            };
+            let text = format!("{label:<12} {value}");
+            if i == form.row {
+                Line::styled(text, style.selected())
+            } else {
+                Line::from(text)
+            }
+        })
+        .collect();
+    let hint = match form.field() {
+        Field::Param(n) | Field::From(n) | Field::To(n) | Field::Scale(n) => {
+            let k = form.axes[n].key;
+            let allowed = k.param().limit().map_or("", |l| l.allowed);
+            format!("{}: allowed {allowed}", k.symbol())
+        }
+        Field::Points(_) => format!(
+            "points: allowed {}",
+            wearlab::physics::limits::SWEEP_POINTS.allowed
+        ),
+        Field::Quantity => {
+            let q = form.quantity.quantity();
+            format!("{}: {}", form.quantity.symbol(), q.description)
+        }
+    };
+    lines.push(Line::from(""));
+    lines.extend(
+        wrap(&hint, inner.width as usize)
+            .into_iter()
+            .take(3)
+            .map(|l| Line::styled(l, Style::default())),
+    );
+    frame.render_widget(Paragraph::new(lines), inner);
+}
