@@ -237,7 +237,7 @@ pub const BINDINGS: [Binding; 21] = [
     ),
     binding(
         &[(ch('D'), Action::Dimensionless)],
-        "D", "dimensionless view: the problem's dimensionless groups at the current inputs, and sweeps offer only pure numbers (the groups are defined in this help)",
+        "D", "dimensionless view: the quantity choices of the sweep and map forms (v, M) narrow to pure numbers, the problem's dimensionless groups and ratios (mu*, theta, (a+b)/h, (a+b)/R, k m, mu chi, P/(m R); spatial kh, beta t, A/(M pbar), phi); D again offers all",
         ("D", "groups", "", 7), None,
     ),
     binding(
