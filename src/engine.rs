@@ -1,20 +1,22 @@
 //! The incremental engine behind the explorer: the library's pipeline stages
-//! (`plane::operating_point`, `sweep`, `spatial::evolutions`, `spatial::state_at`, `history`,
-//! `dispersion`, and on the period cell the running-in and mu*(pbar) of `spatial::partial`), each
-//! cached by the typed inputs it depends on, so an edit recomputes only what it touches; and a
-//! background worker that always works on the newest request and answers in stages, what the
+//! (`plane::operating_point`, `validity::strip_check`, `sweep`, `spatial::evolutions`,
+//! `spatial::state_at`, `history`, `dispersion`, and on the period cell the running-in and
+//! mu*(pbar) of `spatial::partial`), each cached by the typed inputs it depends on, so an edit
+//! recomputes only what it touches; and a background worker that always works on the newest request and answers in stages, what the
 //! status shows first. Long work (the running-in) reports progress and stops when a newer request
 //! arrives.
 
 mod cache;
 mod cell;
 pub mod explore;
+mod validity;
 
 use std::sync::{Arc, Condvar, Mutex};
 use std::thread;
 use std::time::Duration;
 
 use crate::physics::plane::sweep::{Sweep, sweep};
+use crate::physics::plane::validity::StripCheck;
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History, dispersion, history};
@@ -54,6 +56,9 @@ pub struct Request {
 pub struct PlaneOutput {
     /// The operating point, or why there is none.
     pub point: Result<Arc<OperatingPoint>, SolveError>,
+    /// The point's model against the exact strip model; None until computed, and when there is
+    /// no point.
+    pub strip_check: Option<StripCheck>,
     /// The preset's model swept over the preset's loads; None until computed.
     pub sweep: Option<Arc<Sweep>>,
     /// The other models' sweeps, when asked for and computed.
@@ -102,6 +107,8 @@ pub struct Answer {
 pub struct StageCounts {
     /// Plane operating points.
     pub operating_point: usize,
+    /// Plane operating points checked against the strip model.
+    pub strip_check: usize,
     /// Plane load sweeps.
     pub load_sweep: usize,
     /// Spatial harmonic responses (with the dispersion curves).
@@ -151,6 +158,7 @@ type Responses = Arc<(Vec<Evolution>, Arc<Dispersion>)>;
 /// The staged, cached solver.
 pub struct Engine {
     points: Cache<(PlaneInputs, Model), Result<Arc<OperatingPoint>, SolveError>>,
+    strip_checks: Cache<(PlaneInputs, Model), StripCheck>,
     /// Keyed by the inputs at unit load: a sweep does not depend on the load.
     sweeps: Cache<(PlaneInputs, Model, SweepRange), Arc<Sweep>>,
     responses: Cache<ResponseKey, Responses>,
@@ -176,13 +184,15 @@ impl Default for Engine {
 pub type Proceed = bool;
 
 impl Engine {
-    /// An engine with empty caches: 8 operating points, 6 sweeps (two settings of three models),
+    /// An engine with empty caches: 8 operating points and their checks against the strip
+    /// model, 6 sweeps (two settings of three models),
     /// 4 sets of harmonic responses, 4 histories and 2 spatial states (a 512-point grid holds
     /// 6 MB); on the period cell 2 running-ins (each keeps at most 32 MiB of snapshots), 4
     /// contact states, 4 running-in histories and 4 mu*(pbar) curves.
     pub fn new() -> Engine {
         Engine {
             points: Cache::new(8),
+            strip_checks: Cache::new(8),
             sweeps: Cache::new(6),
             responses: Cache::new(4),
             histories: Cache::new(4),
@@ -244,6 +254,7 @@ impl Engine {
             .filter(|_| request.overlays)
             .collect();
         let mut out = PlaneOutput {
+            strip_check: self.strip_checks.get(&(inputs, model)),
             point,
             sweep: self.sweeps.get(&(unloaded, model, range)),
             overlays: Vec::new(),
@@ -252,13 +263,21 @@ impl Engine {
             .iter()
             .map_while(|m| Some((*m, self.sweeps.get(&(unloaded, *m, range))?)))
             .collect();
-        if out.sweep.is_some() && cached.len() == others.len() {
+        let checked = out.strip_check.is_some() || out.point.is_err();
+        if checked && out.sweep.is_some() && cached.len() == others.len() {
             out.overlays = cached;
             deliver(Output::Plane(out), true);
             return;
         }
         if !deliver(Output::Plane(out.clone()), false) {
             return;
+        }
+        // the check against the strip model follows the point, before the slower sweeps
+        if let (Ok(point), None) = (&out.point, &out.strip_check) {
+            out.strip_check = Some(self.strip_check(inputs, model, point));
+            if !deliver(Output::Plane(out.clone()), false) {
+                return;
+            }
         }
         let mut sweep_of = |m: Model| {
             self.sweeps

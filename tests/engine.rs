@@ -27,6 +27,7 @@ fn nudging_the_load_does_not_recompute_the_sweep() {
         engine.counts,
         StageCounts {
             operating_point: 1,
+            strip_check: 1,
             load_sweep: 3,
             ..StageCounts::default()
         }
@@ -127,14 +128,23 @@ fn the_operating_point_comes_first_and_overlays_only_when_asked() {
         let Output::Plane(out) = output else { panic!() };
         stages.push((
             out.point.is_ok(),
+            out.strip_check.is_some(),
             out.sweep.is_some(),
             out.overlays.len(),
             complete,
         ));
         true
     });
-    // the status first (point, no sweep yet), then the strip's own sweep; no overlays asked
-    assert_eq!(stages, [(true, false, 0, false), (true, true, 0, true)]);
+    // the status first (point, no sweep yet), then its check against the strip model, then the
+    // strip's own sweep; no overlays asked
+    assert_eq!(
+        stages,
+        [
+            (true, false, false, 0, false),
+            (true, true, false, 0, false),
+            (true, true, true, 0, true)
+        ]
+    );
     assert_eq!(engine.counts.load_sweep, 1);
     // a stage that is told to stop stops: the point is delivered, the sweeps are skipped
     let mut other = preset.clone();

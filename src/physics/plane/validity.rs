@@ -1,7 +1,8 @@
 //! Whether an operating point lies where its model holds, in words (docs/physics/plane.md sections 3,
 //! 4, 6). The wide and narrow models are judged by how far they are from the strip model of any
 //! thickness, with the formulas of `criteria` (derived from a study against the strip model);
-//! `against_strip` measures it exactly when the strip model is cheap.
+//! `strip_check` measures it exactly when the strip model is cheap (the explorer shows it after
+//! the operating point).
 
 use serde::Serialize;
 
@@ -46,6 +47,11 @@ pub struct Validity {
     pub estimated_error: Deviation,
     /// The criteria of the study the model fails, in words; empty when it holds.
     pub failed_criteria: Vec<String>,
+    /// The same criteria in a few words each, for the explorer's status ("Winkler needs (a+b)/h
+    /// > 312 here, not 8.3"; the form beside it shows nu, mu and k), not reported by `wearlab
+    /// solve`, where `failed_criteria` says the same at length.
+    #[serde(skip)]
+    pub reasons: Vec<String>,
 }
 
 /// Checks the operating point against the model's assumptions and the study's criteria.
@@ -54,11 +60,12 @@ pub fn check(sol: &PlaneSolution) -> Validity {
     let h = inputs.material.thickness;
     let l = sol.contact_width();
     let l_over_h = if h.is_finite() { l / h } else { 0.0 };
-    let (estimated_error, failed_criteria) = match sol.model {
+    let (estimated_error, failed) = match sol.model {
         _ if !h.is_finite() => (Deviation::NONE, Vec::new()),
         Model::Strip => (Deviation::NONE, Vec::new()),
         Model::Wide | Model::Narrow => criteria_of(sol, l_over_h),
     };
+    let (reasons, failed_criteria): (Vec<String>, Vec<String>) = failed.into_iter().unzip();
     let mut warnings = failed_criteria.clone();
     if let Some(theta) = sol.theta
         && theta.abs() > 0.45
@@ -86,12 +93,13 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         warnings,
         estimated_error,
         failed_criteria,
+        reasons,
     }
 }
 
 /// The estimated deviation of a wide or narrow solution on a finite strip, and the criteria it
-/// fails in words.
-fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<String>) {
+/// fails, each in a few words and at length.
+fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, String)>) {
     let inputs = &sol.inputs;
     let nu = inputs.material.poisson_ratio;
     let mu = inputs.friction.coefficient;
@@ -116,10 +124,13 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<String>) {
     .filter_map(|(out, what)| out.then_some(what))
     .collect();
     if !outside.is_empty() {
-        failed.push(format!(
-            "{name} is judged against the strip model only where that was studied (nu <= 0.499, \
-             mu <= 1, k m <= 3, no adhesion); here {}: use the strip model",
-            outside.join(", ")
+        failed.push((
+            format!("not judged at {}: use the strip model", outside.join(", ")),
+            format!(
+                "{name} is judged against the strip model only where that was studied (nu <= \
+                 0.499, mu <= 1, k m <= 3, no adhesion); here {}: use the strip model",
+                outside.join(", ")
+            ),
         ));
     }
     let error = if sol.model == Model::Wide {
@@ -130,11 +141,14 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<String>) {
         let limit = criteria::wide_mu_star_limit(nu)
             .min((WIDTH_TOLERANCE / criteria::wide_width_error(nu, 1.0)).sqrt());
         if lambda > limit {
-            failed.push(format!(
-                "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width within 2 %, \
-                 mu* - mu within 5 % of the exact strip solution); here (a+b)/h = {lambda:.3}, \
-                 estimated error {}: use the strip model",
-                percentages(&error)
+            failed.push((
+                format!("wide needs (a+b)/h < {limit:.2} here, not {lambda:.3}"),
+                format!(
+                    "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width \
+                     within 2 %, mu* - mu within 5 % of the exact strip solution); here (a+b)/h = \
+                     {lambda:.3}, estimated error {}: use the strip model",
+                    percentages(&error)
+                ),
             ));
         }
         error
@@ -152,24 +166,37 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<String>) {
         };
         let needed = criteria::narrow_width_limit(nu, mu, km);
         if error.contact_width > WIDTH_TOLERANCE {
-            failed.push(format!(
-                "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} for \
-                 its contact width within 2 % of the exact strip solution; here (a+b)/h = \
-                 {lambda:.3}, estimated error {:.1} %: use the strip model",
-                100.0 * error.contact_width
+            failed.push((
+                format!("Winkler needs (a+b)/h > {needed:.0} here, not {lambda:.1}"),
+                format!(
+                    "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} \
+                     for its contact width within 2 % of the exact strip solution; here (a+b)/h = \
+                     {lambda:.3}, estimated error {:.1} %: use the strip model",
+                    100.0 * error.contact_width
+                ),
             ));
         }
         if error.mu_star_minus_mu > MU_STAR_TOLERANCE {
             failed.push(if km == 0.0 {
-                "without wear the Winkler model gives mu* = mu exactly, while friction alone \
-                 makes the strip's mu* - mu nonzero: use the strip model"
-                    .to_string()
+                (
+                    "Winkler lacks the friction part of mu* - mu (mu* = mu without wear)"
+                        .to_string(),
+                    "without wear the Winkler model gives mu* = mu exactly, while friction alone \
+                     makes the strip's mu* - mu nonzero: use the strip model"
+                        .to_string(),
+                )
             } else {
-                format!(
-                    "the Winkler model lacks the friction-induced part of mu* - mu, estimated \
-                     {:.0} % of what it gives (at most 5 %: wear must dominate): use the strip \
-                     model",
-                    100.0 * error.mu_star_minus_mu
+                let part = 100.0 * error.mu_star_minus_mu;
+                (
+                    format!(
+                        "Winkler lacks the friction part of mu* - mu, estimated up to {part:.0} % \
+                         of it"
+                    ),
+                    format!(
+                        "the Winkler model lacks the friction-induced part of mu* - mu, estimated \
+                         {part:.0} % of what it gives (at most 5 %: wear must dominate): use the \
+                         strip model"
+                    ),
                 )
             });
         }
@@ -191,31 +218,91 @@ fn percentages(d: &Deviation) -> String {
 /// milliseconds).
 pub const CHEAP_STRIP_WIDTH: f64 = 90.0;
 
-/// The shown wide or narrow solution against the strip model at the same inputs, measured: None
-/// for the strip model itself, a half-plane, a contact wider than CHEAP_STRIP_WIDTH thicknesses,
-/// or where the strip model has no answer.
-pub fn against_strip(sol: &PlaneSolution) -> Option<Deviation> {
+/// The shown model against the exact strip model, for the status.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StripCheck {
+    /// The strip model is shown: it is the exact model, for any (a+b)/h.
+    Exact,
+    /// The wide model on a half-plane, where it is exact.
+    HalfPlane,
+    /// Measured against the strip model at the same inputs.
+    Measured(Deviation),
+    /// Not measured: why, and the deviation the study's formulas estimate (`Validity`).
+    Estimated {
+        /// Why the strip model was not run (too wide to be cheap, or it has no answer).
+        why: String,
+        /// The estimated deviation.
+        estimate: Deviation,
+    },
+}
+
+/// The shown solution against the strip model: measured when the strip model is cheap (a contact
+/// at most CHEAP_STRIP_WIDTH thicknesses wide), else estimated by the study's formulas.
+pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
     let h = sol.inputs.material.thickness;
-    if sol.model == Model::Strip || !h.is_finite() || sol.contact_width() / h > CHEAP_STRIP_WIDTH {
-        return None;
+    let lambda = sol.contact_width() / h;
+    let estimated = |why: String| StripCheck::Estimated {
+        why,
+        estimate: check(sol).estimated_error,
+    };
+    if sol.model == Model::Strip {
+        return StripCheck::Exact;
     }
-    let strip = solve(&sol.inputs, Model::Strip).ok()?;
+    if !h.is_finite() {
+        return StripCheck::HalfPlane;
+    }
+    if lambda > CHEAP_STRIP_WIDTH {
+        return estimated(format!(
+            "the exact strip model is not run beyond (a+b)/h = {CHEAP_STRIP_WIDTH:.0}"
+        ));
+    }
+    let strip = match solve(&sol.inputs, Model::Strip) {
+        Ok(strip) => strip,
+        Err(e) => return estimated(format!("the exact strip model has no answer here: {e}")),
+    };
     let mu = sol.inputs.friction.coefficient;
     let floor = MU_STAR_FLOOR * strip.contact_width() / sol.inputs.radius;
-    Some(Deviation {
+    StripCheck::Measured(Deviation {
         contact_width: (sol.contact_width() / strip.contact_width() - 1.0).abs(),
         mu_star_minus_mu: (sol.mu_star - strip.mu_star).abs()
             / (strip.mu_star - mu).abs().max(floor),
     })
 }
 
-/// One line for the status: "wide: contact width within 0.1 %, mu* - mu within 0.4 % of the exact
-/// strip solution".
-pub fn describe(model: Model, deviation: &Deviation) -> String {
-    format!(
-        "{}: contact width within {:.1} %, mu* - mu within {:.1} % of the exact strip solution",
-        model.name(),
-        100.0 * deviation.contact_width,
-        100.0 * deviation.mu_star_minus_mu
-    )
+/// The shown wide or narrow solution against the strip model at the same inputs, measured: None
+/// for the strip model itself, a half-plane, a contact wider than CHEAP_STRIP_WIDTH thicknesses,
+/// or where the strip model has no answer.
+pub fn against_strip(sol: &PlaneSolution) -> Option<Deviation> {
+    match strip_check(sol) {
+        StripCheck::Measured(deviation) => Some(deviation),
+        _ => None,
+    }
+}
+
+/// A relative deviation in percent, rounded up to 0.1 % (so that "within" stays true).
+fn within(x: f64) -> String {
+    format!("{:.1} %", (1000.0 * x).ceil() / 10.0)
+}
+
+impl StripCheck {
+    /// One line for the status: "wide: contact width within 0.1 %, mu* - mu within 0.4 % of the
+    /// exact strip solution"; "off by" where a deviation is outside the tolerances.
+    pub fn describe(&self, model: Model) -> String {
+        let name = model.name();
+        match self {
+            StripCheck::Exact => format!("{name}: the exact model of the bonded strip"),
+            StripCheck::HalfPlane => format!("{name}: exact on a half-plane"),
+            StripCheck::Measured(d) if d.within_tolerance() => format!(
+                "{name}: contact width within {}, mu* - mu within {} of the exact strip solution",
+                within(d.contact_width),
+                within(d.mu_star_minus_mu)
+            ),
+            StripCheck::Measured(d) => {
+                format!("{name}: off the exact strip solution by {}", percentages(d))
+            }
+            StripCheck::Estimated { why, estimate } => {
+                format!("{name}: estimated off by {} ({why})", percentages(estimate))
+            }
+        }
+    }
 }

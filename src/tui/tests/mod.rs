@@ -13,6 +13,7 @@ mod screens;
 mod stale;
 mod ticks;
 mod update;
+mod validity;
 mod widgets;
 
 use ratatui::Terminal;

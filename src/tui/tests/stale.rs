@@ -5,7 +5,7 @@ use std::sync::mpsc::channel;
 use std::time::{Duration, Instant};
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::Engine;
+use wearlab::engine::{Engine, Output};
 
 use super::*;
 use crate::tui::app::PickerEntry;
@@ -131,4 +131,45 @@ fn the_loop_shows_a_result_without_waiting_for_a_key() {
     assert!(start.elapsed() < Duration::from_secs(10));
     let s = l.terminal.backend().to_string();
     assert!(s.contains("valid: (a+b)/h = 0.061"), "{s}");
+}
+
+#[test]
+fn a_check_against_the_strip_model_is_never_shown_for_other_inputs() {
+    // polymer-coating.toml (wide, holds) solved to the end; nu = 0.49, then h = 0.1 mm: the
+    // contact is then some 6 thicknesses wide, where the wide model does not hold
+    let mut app = solved("polymer-coating.toml");
+    let before = screen(&app, 120, 40, PLAIN);
+    assert!(before.contains("wide: contact width within"), "{before}");
+    select(&mut app, "nu", None);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "0.49");
+    let first = press(&mut app, KeyCode::Enter);
+    settle(&mut app, first);
+    select(&mut app, "h", None);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "0.1 mm");
+    let cmds = press(&mut app, KeyCode::Enter);
+    // while solving, the old check stays under the old result's label, dimmed
+    let waiting = screen(&app, 120, 40, PLAIN);
+    assert!(waiting.contains("[previous inputs] solving…"), "{waiting}");
+    // the new point comes alone first: its status has no check yet, none of the old one
+    let mut engine = Engine::new();
+    let answers = answers(&mut engine, &cmds);
+    update(&mut app, Msg::Answer(Box::new(answers[0].clone())));
+    let Output::Plane(out) = &answers[0].output else {
+        panic!()
+    };
+    assert!(out.strip_check.is_none());
+    let first = screen(&app, 120, 40, PLAIN);
+    assert!(!first.contains("of the exact strip solution"), "{first}");
+    assert!(first.contains("! wide needs (a+b)/h <"), "{first}");
+    // then the check of the new inputs
+    for a in &answers[1..] {
+        update(&mut app, Msg::Answer(Box::new(a.clone())));
+    }
+    let after = screen(&app, 120, 40, PLAIN);
+    assert!(
+        after.contains("wide: off the exact strip solution by"),
+        "{after}"
+    );
 }

@@ -16,6 +16,7 @@ pub mod raster;
 pub mod regime;
 pub mod status;
 pub mod theme;
+pub mod validity_status;
 
 use ratatui::Frame;
 use ratatui::layout::{Alignment, Rect};

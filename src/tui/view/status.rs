@@ -8,6 +8,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 use wearlab::engine::{Answer, Output, SpatialOutput};
 use wearlab::physics::plane::OperatingPoint;
+use wearlab::physics::plane::validity::StripCheck;
 use wearlab::units::format_si;
 
 use crate::tui::app::App;
@@ -17,7 +18,7 @@ use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot};
 use crate::tui::view::contact_status;
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::{Shown, note, wrap};
+use crate::tui::view::{Shown, note, validity_status, wrap};
 
 /// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item;
 /// continuation lines start with `indent`.
@@ -64,7 +65,7 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     let height = (inner.height as usize).saturating_sub(lines.len());
     lines.extend(match &answer.output {
         Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, style, width),
+            Ok(p) => plane(p, out.strip_check.as_ref(), style, width),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
@@ -95,14 +96,19 @@ fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
 }
 
 /// A sentence wrapped to the panel, in one style.
-fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
+pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
     wrap(text, width)
         .into_iter()
         .map(|l| Line::styled(l, style))
         .collect()
 }
 
-fn plane(p: &OperatingPoint, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
+fn plane(
+    p: &OperatingPoint,
+    check: Option<&StripCheck>,
+    style: RenderOptions,
+    width: usize,
+) -> Vec<Line<'static>> {
     let s = &p.solution;
     let mut items = vec![
         format!("a = {}", format_si(s.a, "m")),
@@ -123,17 +129,7 @@ fn plane(p: &OperatingPoint, style: RenderOptions, width: usize) -> Vec<Line<'st
         .into_iter()
         .map(Line::from)
         .collect();
-    if p.validity.ok {
-        let verdict = format!(
-            "valid: (a+b)/h = {:.3}; {} model holds",
-            p.validity.contact_width_over_thickness,
-            s.model.name()
-        );
-        lines.extend(prose(&verdict, width, style.ok()));
-    }
-    for w in &p.validity.warnings {
-        lines.extend(prose(&format!("! {w}"), width, style.error()));
-    }
+    lines.extend(validity_status::lines(p, check, style, width));
     lines
 }
 

@@ -1,0 +1,71 @@
+//! The plane status's validity lines (issue 13): the model holds and its measured distance from
+//! the exact strip model follows the point; it does not hold and the reason is said in a few
+//! words; the strip model is said to be the exact one. Each snapshot is the status panel alone,
+//! read as a student would before it was accepted.
+
+use super::*;
+use crate::tui::view::layout;
+
+/// The status panel of the screen, one string per row.
+fn status(app: &App, w: u16, h: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+    terminal.draw(|f| view(app, PLAIN, f)).unwrap();
+    let area = layout::areas(terminal.backend().buffer().area, false)
+        .unwrap()
+        .status;
+    let buffer = terminal.backend().buffer();
+    (area.top()..area.bottom())
+        .map(|y| {
+            let row: String = (area.left()..area.right())
+                .map(|x| buffer[(x, y)].symbol())
+                .collect();
+            format!("{row}\n")
+        })
+        .collect()
+}
+
+/// A bundled preset edited, solved to the end.
+fn solved_with(file: &str, edit: impl FnOnce(&mut Preset)) -> App {
+    let mut preset = bundled(file);
+    edit(&mut preset);
+    let mut app = App::new(preset, None, Places::default());
+    let commands = app.start();
+    settle(&mut app, commands);
+    app
+}
+
+#[test]
+fn a_model_that_holds_says_how_far_it_is_from_the_exact_strip_model() {
+    let app = solved("polymer-coating.toml");
+    let s = status(&app, 80, 24);
+    assert!(
+        s.contains("valid: (a+b)/h = 0.061; wide model holds"),
+        "{s}"
+    );
+    assert!(s.contains("of the exact strip solution"), "{s}");
+    insta::assert_snapshot!("validity_holds_80x24", s);
+    insta::assert_snapshot!("validity_holds_120x40", status(&app, 120, 40));
+}
+
+#[test]
+fn a_model_that_does_not_hold_says_why_in_words() {
+    // the Winkler strip of thin-strip-winkler.toml made nearly incompressible: the layer is then
+    // softer than Winkler's, and its contact width needs a far wider contact (criteria.rs)
+    let app = solved_with("thin-strip-winkler.toml", |p| {
+        p.material.poisson_ratio = 0.49
+    });
+    let s = status(&app, 80, 24);
+    assert!(s.contains("! Winkler needs (a+b)/h >"), "{s}");
+    assert!(s.contains("off the exact strip solution by"), "{s}");
+    insta::assert_snapshot!("validity_fails_80x24", s);
+    insta::assert_snapshot!("validity_fails_120x40", status(&app, 120, 40));
+}
+
+#[test]
+fn the_strip_model_is_said_to_be_the_exact_one() {
+    let app = solved("hard-coating-strip.toml");
+    let s = status(&app, 80, 24);
+    assert!(s.contains("strip: the exact model"), "{s}");
+    insta::assert_snapshot!("validity_strip_80x24", s);
+    insta::assert_snapshot!("validity_strip_120x40", status(&app, 120, 40));
+}
