@@ -1,21 +1,24 @@
 //! The spatial field (pressure, shape and wear): 8 harmonics on 128 x 128 and 32 on 512 x 512,
-//! the cases of `benches/reference/spatial_field.py` (numpy, one matrix product per field); and
-//! the complete-contact check on the 8-harmonic pattern.
+//! the cases of `benches/reference/spatial_field.py` (numpy, one matrix product per field), into
+//! fresh buffers (`field`, as numpy allocates its results: page faults included) and into reused
+//! ones (`field_into`); and the complete-contact check on the 8-harmonic pattern. In CPU time.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::f64::consts::PI;
 use std::hint::black_box;
 use wearlab::physics::spatial::contact::check;
-use wearlab::physics::spatial::field::field;
+use wearlab::physics::spatial::field::{field, field_into};
 use wearlab::physics::spatial::harmonic::Harmonic;
 use wearlab::physics::spatial::{Cell, SpatialInputs, solve};
 use wearlab::physics::{Friction, Material};
 
-/// `count` harmonics in distinct directions: wx = w (1 + n mod d), wy = w (n div e) with
-/// (d, e) = (4, 2) for 8 harmonics and (8, 8) for more.
-fn harmonics(count: usize) -> SpatialInputs {
+mod common;
+use common::cpu_time::CpuTime;
+
+/// `count` harmonics in distinct directions: wx = w (1 + n mod d), wy = w (n div e): on
+/// d x count/e wave vectors, sharing wavenumbers (merged by the field) unless d = count, e = 1.
+fn harmonics(count: usize, (d, e): (usize, usize)) -> SpatialInputs {
     let w = 2.0 * PI / 4e-3;
-    let (d, e) = if count > 8 { (8, 8) } else { (4, 2) };
     let harmonics = (0..count)
         .map(|n| Harmonic {
             amplitude: 1e-6 / (n + 1) as f64,
@@ -42,16 +45,28 @@ fn harmonics(count: usize) -> SpatialInputs {
     }
 }
 
-fn bench(c: &mut Criterion) {
-    for (count, n) in [(8, 128), (32, 512)] {
-        let inputs = harmonics(count);
+fn bench(c: &mut Criterion<CpuTime>) {
+    // the reference script's cases, then 32 harmonics that share no wavenumber (no merging)
+    for (count, n, spread, name) in [
+        (8, 128, (4, 2), ""),
+        (32, 512, (8, 8), ""),
+        (32, 512, (32, 1), "_distinct"),
+    ] {
+        let inputs = harmonics(count, spread);
         let sol = solve(&inputs, 10.0).unwrap();
         let cell = Cell::of(&inputs.harmonics);
-        c.bench_function(&format!("spatial_field/{n}x{n}x{count}"), |b| {
-            b.iter(|| black_box(field(black_box(&sol), &cell, n)))
-        });
+        if name.is_empty() {
+            c.bench_function(&format!("spatial_field/{n}x{n}x{count}"), |b| {
+                b.iter(|| black_box(field(black_box(&sol), &cell, n)))
+            });
+        }
+        let mut reused = field(&sol, &cell, n);
+        c.bench_function(
+            &format!("spatial_field_reused/{n}x{n}x{count}{name}"),
+            |b| b.iter(|| field_into(black_box(&sol), &cell, n, black_box(&mut reused))),
+        );
     }
-    let inputs = harmonics(8);
+    let inputs = harmonics(8, (4, 2));
     let sol = solve(&inputs, 10.0).unwrap();
     let cell = Cell::of(&inputs.harmonics);
     c.bench_function("spatial_contact/8", |b| {
@@ -62,5 +77,9 @@ fn bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+criterion_group! {
+    name = benches;
+    config = Criterion::default().with_measurement(CpuTime);
+    targets = bench
+}
 criterion_main!(benches);

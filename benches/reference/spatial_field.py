@@ -1,5 +1,8 @@
 """Times the spatial field (pressure, shape and wear on an n x n grid over the cell) with plain
-numpy, one matrix product per field, for the ratio against wearlab's `spatial_field` bench.
+numpy, one matrix product per field, for the ratio against wearlab's `spatial_field` bench:
+"fresh" allocates the three results anew at every call (as `field` does; both pay the first-touch
+page faults of new multi-MB arrays), "reused" writes them into arrays allocated once (`out=`, as
+`field_into` does). CPU time of this process (time.process_time), best of 7 repeats.
 
 Usage: OPENBLAS_NUM_THREADS=1 python3 benches/reference/spatial_field.py SCIPY_REFERENCE_DIR
 The cases are those of benches/spatial_field.rs (8 harmonics on 128 x 128, 32 on 512 x 512).
@@ -40,9 +43,24 @@ def case(count, n):
         wear = mean_wear + sy.T @ u0 - u
         return p, u, wear
 
+    p, u, wear = (np.empty((n, n)) for _ in range(3))
+
+    def fields_into():
+        sy = np.sin(np.outer(wy, ys) + ry[:, None])
+        px = (A * ratio)[:, None] * np.sin(np.outer(wx, xs) + (rx + phi)[:, None])
+        ux = A[:, None] * np.sin(np.outer(wx, xs) + rx[:, None])
+        u0 = A0[:, None] * np.sin(np.outer(wx, xs) + rx0[:, None])
+        np.matmul(sy.T, px, out=p)
+        np.add(p, pbar, out=p)
+        np.matmul(sy.T, ux, out=u)
+        np.matmul(sy.T, u0, out=wear)
+        np.subtract(wear, u, out=wear)
+        np.add(wear, mean_wear, out=wear)
+
     reps = 2000 if n <= 128 else 50
-    best = min(timeit.repeat(fields, number=reps, repeat=7, timer=time.process_time)) / reps
-    return best
+    time_of = lambda f: min(timeit.repeat(f, number=reps, repeat=7, timer=time.process_time)) / reps
+    return time_of(fields), time_of(fields_into)
 
 for count, n in [(8, 128), (32, 512)]:
-    print(f"numpy {n}x{n}x{count}: {case(count, n) * 1e3:.4f} ms")
+    fresh, reused = case(count, n)
+    print(f"numpy {n}x{n}x{count}: fresh {fresh * 1e3:.4f} ms, reused {reused * 1e3:.4f} ms")

@@ -1,12 +1,8 @@
-//! Fields on a grid over the cell: pressure p, shape U and punch wear W.
-//!
-//! Every harmonic is separable, c sin(wx x + px) sin(wy y + py): a field is a sum of products of
-//! an x-table and a y-table, i.e. the matrix product of an (H x n) and an (H x n) table. The
-//! tables come from sines rotated along the uniform grid; the product is a small blocked kernel
-//! (4 x 8 grid points in registers while every harmonic adds to them, tables packed so that it
-//! reads them contiguously), with AVX2 and fused multiply-adds where the processor has them.
+//! Fields on a grid over the cell: pressure p, shape U and punch wear W, each a sum of separable
+//! waves (`separable`: merged where wavenumbers repeat, then a blocked matrix-product kernel).
 
-use crate::physics::spatial::{Cell, HarmonicSolution, Period, SpatialSolution};
+use crate::physics::spatial::separable::{Axis, Wave, sums};
+use crate::physics::spatial::{Cell, Period, SpatialSolution};
 
 /// One term c sin(wx x + px) sin(wy y + py) of a separable sum.
 #[derive(Clone, Copy, Debug)]
@@ -19,184 +15,22 @@ pub(crate) struct Term {
 }
 
 impl Term {
-    fn x_table(&self, xs: &[f64]) -> Vec<f64> {
-        xs.iter()
-            .map(|x| self.c * (self.wx * x + self.px).sin())
-            .collect()
-    }
-
-    fn y_table(&self, ys: &[f64]) -> Vec<f64> {
-        ys.iter().map(|y| (self.wy * y + self.py).sin()).collect()
-    }
-}
-
-/// Points where a uniform table is evaluated: first + i step, i < count.
-#[derive(Clone, Copy)]
-struct Grid {
-    first: f64,
-    step: f64,
-    count: usize,
-}
-
-impl Grid {
-    fn points(self) -> Vec<f64> {
-        (0..self.count)
-            .map(|i| self.first + i as f64 * self.step)
-            .collect()
-    }
-
-    /// c sin(w x_i + p) at every point: sines by the angle-addition rotation, restarted from a
-    /// direct evaluation every RESTART points so that rounding grows over RESTART steps at most
-    /// (within 1e-13 c on a 4096-point grid, tested).
-    fn sines(self, c: f64, w: f64, p: f64) -> Vec<f64> {
-        const RESTART: usize = 64;
-        let (sd, cd) = (w * self.step).sin_cos();
-        let mut out = Vec::with_capacity(self.count);
-        let (mut s, mut co) = (0.0, 0.0);
-        for i in 0..self.count {
-            if i % RESTART == 0 {
-                (s, co) = (w * (self.first + i as f64 * self.step) + p).sin_cos();
-            } else {
-                (s, co) = (s * cd + co * sd, co * cd - s * sd);
-            }
-            out.push(c * s);
-        }
-        out
+    fn wave(&self) -> Wave {
+        Wave::new(self.c, self.wx, self.px, self.wy, self.py)
     }
 }
 
 /// offset + sum of terms on the grid xs x ys, row-major (index j * xs.len() + i).
 pub(crate) fn synthesize(terms: &[Term], offset: f64, xs: &[f64], ys: &[f64]) -> Vec<f64> {
-    let y = Tables::new(terms, |t| t.y_table(ys));
-    let [out] = products([(offset, &Tables::new(terms, |t| t.x_table(xs)))], &y);
+    let waves: Vec<Wave> = terms.iter().map(Term::wave).collect();
+    let mut out = Vec::new();
+    sums(
+        [(offset, &waves[..])],
+        Axis::Points(xs),
+        Axis::Points(ys),
+        [&mut out],
+    );
     out
-}
-
-/// One table per term (its values at the grid points), stored term after term.
-struct Tables {
-    len: usize,
-    values: Vec<f64>,
-}
-
-impl Tables {
-    fn new(terms: &[Term], table: impl Fn(&Term) -> Vec<f64>) -> Tables {
-        Tables::from_rows(terms.iter().map(table))
-    }
-
-    fn from_rows(rows: impl Iterator<Item = Vec<f64>>) -> Tables {
-        let mut values = Vec::new();
-        let mut len = 0;
-        for row in rows {
-            len = row.len();
-            values.extend(row);
-        }
-        Tables { len, values }
-    }
-
-    fn count(&self) -> usize {
-        self.values.len().checked_div(self.len).unwrap_or(0)
-    }
-
-    /// The tables cut into blocks of B points, each block holding its B values of term 0, then of
-    /// term 1, ...: the kernel reads a block's terms from contiguous memory. The last block is
-    /// padded with zeros.
-    fn packed<const B: usize>(&self) -> Vec<[f64; B]> {
-        let terms = self.count();
-        let blocks = self.len.div_ceil(B);
-        let mut out = vec![[0.0; B]; blocks * terms];
-        for h in 0..terms {
-            let table = &self.values[h * self.len..(h + 1) * self.len];
-            for (b, chunk) in table.chunks(B).enumerate() {
-                out[b * terms + h][..chunk.len()].copy_from_slice(chunk);
-            }
-        }
-        out
-    }
-}
-
-/// Rows and columns of the block of the grid that the inner loop keeps in registers.
-const ROWS: usize = 4;
-const COLS: usize = 8;
-
-/// For each of F fields given as (offset, x-tables), offset + sum_h x_h(x_i) y_h(y_j) on the
-/// grid, row-major. All fields share the y-tables (one per term).
-fn products<const F: usize>(fields: [(f64, &Tables); F], y: &Tables) -> [Vec<f64>; F] {
-    let y_packed = y.packed::<ROWS>();
-    fields.map(|(offset, x)| {
-        let x_packed = x.packed::<COLS>();
-        let grid = Dims {
-            nx: x.len,
-            ny: y.len,
-            terms: x.count(),
-        };
-        // zeroed memory comes fresh from the allocator: no pass to fill it
-        let mut out = vec![0.0; grid.nx * grid.ny];
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-        {
-            // SAFETY: the processor has AVX2 and FMA (checked just above).
-            unsafe { accumulate_avx2(offset, grid, &x_packed, &y_packed, &mut out) };
-            return out;
-        }
-        accumulate::<false>(offset, grid, &x_packed, &y_packed, &mut out);
-        out
-    })
-}
-
-/// The output grid's size (nx columns, ny rows) and the number of terms.
-#[derive(Clone, Copy)]
-struct Dims {
-    nx: usize,
-    ny: usize,
-    terms: usize,
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn accumulate_avx2(offset: f64, g: Dims, x: &[[f64; COLS]], y: &[[f64; ROWS]], out: &mut [f64]) {
-    accumulate::<true>(offset, g, x, y, out)
-}
-
-/// out[j nx + i] = offset + sum_h y_h[j] x_h[i] from packed tables, by blocks of ROWS x COLS kept
-/// in registers while every term adds to them (a small matrix-product kernel). FUSED: with fused
-/// multiply-adds (only where the processor has them: a software fma would be slow).
-#[inline(always)]
-fn accumulate<const FUSED: bool>(
-    offset: f64,
-    g: Dims,
-    x: &[[f64; COLS]],
-    y: &[[f64; ROWS]],
-    out: &mut [f64],
-) {
-    if g.terms == 0 {
-        out.fill(offset);
-        return;
-    }
-    for (jb, y_block) in y.chunks_exact(g.terms).enumerate() {
-        for (ib, x_block) in x.chunks_exact(g.terms).enumerate() {
-            let mut acc = [[offset; COLS]; ROWS];
-            for (xv, yv) in x_block.iter().zip(y_block) {
-                for (row, &s) in acc.iter_mut().zip(yv) {
-                    for (a, v) in row.iter_mut().zip(xv) {
-                        *a = if FUSED { s.mul_add(*v, *a) } else { *a + s * v };
-                    }
-                }
-            }
-            let (i0, j0) = (ib * COLS, jb * ROWS);
-            for (r, row) in acc.iter().enumerate().take(g.ny - j0) {
-                let start = (j0 + r) * g.nx + i0;
-                if i0 + COLS <= g.nx {
-                    // a fixed-size copy: no call to memmove per block
-                    let dst: &mut [f64; COLS] = (&mut out[start..start + COLS])
-                        .try_into()
-                        .expect("COLS long");
-                    *dst = *row;
-                } else {
-                    out[start..start + g.nx - i0].copy_from_slice(&row[..g.nx - i0]);
-                }
-            }
-        }
-    }
 }
 
 /// The pressure terms of a solution: (A/M) sin(wx x + rho_x + phi) sin(wy y + rho_y).
@@ -234,7 +68,21 @@ pub struct Field {
 /// The fields of a solution on the grid over `cell`: n x n, or n x 1 for a shape constant along
 /// y (a 4096-point 1-D grid would otherwise fill 3 x 4096^2 values, 400 MB).
 pub fn field(sol: &SpatialSolution, cell: &Cell, n: usize) -> Field {
-    let centred = |extent: f64, count: usize| Grid {
+    let mut out = Field {
+        n,
+        x: Vec::new(),
+        y: Vec::new(),
+        pressure: Vec::new(),
+        shape: Vec::new(),
+        wear: Vec::new(),
+    };
+    field_into(sol, cell, n, &mut out);
+    out
+}
+
+/// `field` written into `out`'s buffers (no allocation when they already hold as many values).
+pub fn field_into(sol: &SpatialSolution, cell: &Cell, n: usize, out: &mut Field) {
+    let centred = |extent: f64, count: usize| Axis::Uniform {
         first: 0.5 * extent / count as f64,
         step: extent / count as f64,
         count,
@@ -244,43 +92,36 @@ pub fn field(sol: &SpatialSolution, cell: &Cell, n: usize) -> Field {
     } else {
         n
     };
-    let (gx, gy) = (centred(cell.lx, n), centred(cell.ly, rows));
-    let pressure = pressure_terms(sol);
-    let x_tables = |c: &dyn Fn(&HarmonicSolution) -> (f64, f64)| {
-        Tables::from_rows(sol.harmonics.iter().map(|h| {
-            let (amplitude, phase) = c(h);
-            gx.sines(amplitude, h.initial.wavenumber_x, phase)
-        }))
-    };
-    let shape = x_tables(&|h| (h.state.amplitude, h.state.phase_x));
-    // W = mean wear + U(0) - U(t): per harmonic, the x-table of U(0) minus that of U(t)
-    let initial = x_tables(&|h| (h.initial.amplitude, h.initial.phase_x));
-    let wear = Tables {
-        len: n,
-        values: (initial.values.iter().zip(&shape.values))
-            .map(|(u0, u)| u0 - u)
-            .collect(),
-    };
-    let [pressure, shape, wear] = products(
+    let pressure: Vec<Wave> = pressure_terms(sol).iter().map(Term::wave).collect();
+    let (shape, wear): (Vec<Wave>, Vec<Wave>) = (sol.harmonics.iter())
+        .map(|h| {
+            let (wx, wy) = (h.initial.wavenumber_x, h.initial.wavenumber_y);
+            let wave = |a: f64, px: f64| Wave::new(a, wx, px, wy, h.state.phase_y);
+            let u = wave(h.state.amplitude, h.state.phase_x);
+            // W = mean wear + U(0) - U(t)
+            let u0 = wave(h.initial.amplitude, h.initial.phase_x);
+            let x = [u0.x[0] - u.x[0], u0.x[1] - u.x[1]];
+            (u, Wave { x, ..u })
+        })
+        .unzip();
+    sums(
         [
-            (
-                sol.inputs.mean_pressure,
-                &Tables::from_rows(pressure.iter().map(|t| gx.sines(t.c, t.wx, t.px))),
-            ),
-            (0.0, &shape),
-            (sol.mean_wear(), &wear),
+            (sol.inputs.mean_pressure, &pressure[..]),
+            (0.0, &shape[..]),
+            (sol.mean_wear(), &wear[..]),
         ],
-        &Tables::from_rows(pressure.iter().map(|t| gy.sines(1.0, t.wy, t.py))),
+        centred(cell.lx, n),
+        centred(cell.ly, rows),
+        [&mut out.pressure, &mut out.shape, &mut out.wear],
     );
-    let (xs, ys) = (gx.points(), gy.points());
-    Field {
-        n,
-        x: xs,
-        y: ys,
-        pressure,
-        shape,
-        wear,
-    }
+    let points = |extent: f64, count: usize| {
+        (0..count).map(move |i| 0.5 * extent / count as f64 + i as f64 * extent / count as f64)
+    };
+    out.n = n;
+    out.x.clear();
+    out.x.extend(points(cell.lx, n));
+    out.y.clear();
+    out.y.extend(points(cell.ly, rows));
 }
 
 #[cfg(test)]
@@ -290,20 +131,30 @@ mod tests {
     use crate::physics::spatial::{SpatialInputs, solve};
     use crate::physics::{Friction, Material};
 
-    /// Five harmonics in several directions, worn for a while (phases and amplitudes moved).
+    /// Eight harmonics in several directions, some sharing a wavenumber along y (merged) or x,
+    /// worn for a while (phases and amplitudes moved).
     fn solution() -> SpatialSolution {
         let w = 2.0 * std::f64::consts::PI / 1e-3;
-        let harmonics = [(1, 0), (2, 1), (3, 2), (1, 3), (4, 4)]
-            .iter()
-            .enumerate()
-            .map(|(n, &(mx, my))| Harmonic {
-                amplitude: 1e-7 / (n + 1) as f64,
-                wavenumber_x: w * mx as f64,
-                wavenumber_y: w * my as f64,
-                phase_x: 0.4 * n as f64,
-                phase_y: 1.3 - 0.1 * n as f64,
-            })
-            .collect();
+        let harmonics = [
+            (1, 0),
+            (2, 1),
+            (3, 2),
+            (1, 3),
+            (4, 4),
+            (2, 0),
+            (3, 1),
+            (1, 1),
+        ]
+        .iter()
+        .enumerate()
+        .map(|(n, &(mx, my))| Harmonic {
+            amplitude: 1e-7 / (n + 1) as f64,
+            wavenumber_x: w * mx as f64,
+            wavenumber_y: w * my as f64,
+            phase_x: 0.4 * n as f64,
+            phase_y: 1.3 - 0.1 * n as f64,
+        })
+        .collect();
         let inputs = SpatialInputs {
             material: Material {
                 youngs_modulus: 1e8,
@@ -325,7 +176,8 @@ mod tests {
     #[test]
     fn the_grid_equals_the_pointwise_closed_form() {
         // Independent route: SpatialSolution::pressure/shape/wear evaluate every harmonic's sines
-        // directly at each point; the field uses rotated sine tables and the blocked kernel. Grid
+        // directly at each point; the field merges the waves, uses rotated sine tables and the blocked
+        // kernel. Grid
         // sizes both multiples of the 4 x 8 block and not (edge blocks).
         let sol = solution();
         let cell = Cell::of(&sol.inputs.harmonics);
@@ -366,45 +218,15 @@ mod tests {
     }
 
     #[test]
-    fn the_portable_kernel_equals_the_dispatched_one() {
+    fn refilled_buffers_hold_the_fresh_fields() {
+        // field_into over a field of another size, then of the same size: the fresh field's
+        // numbers bit for bit.
         let sol = solution();
         let cell = Cell::of(&sol.inputs.harmonics);
-        let reference = field(&sol, &cell, 45);
-        let terms = pressure_terms(&sol);
-        let x = Tables::new(&terms, |t| t.x_table(&reference.x));
-        let y = Tables::new(&terms, |t| t.y_table(&reference.y));
-        let mut out = vec![0.0; 45 * 45];
-        let g = Dims {
-            nx: 45,
-            ny: 45,
-            terms: terms.len(),
-        };
-        accumulate::<false>(
-            sol.inputs.mean_pressure,
-            g,
-            &x.packed::<COLS>(),
-            &y.packed::<ROWS>(),
-            &mut out,
-        );
-        for (a, b) in out.iter().zip(&reference.pressure) {
-            assert!((a - b).abs() < 1e-12 * b.abs());
-        }
-    }
-
-    #[test]
-    fn rotated_sine_tables_stay_within_round_off() {
-        // Against sin() at every point of the longest grid (4096 points over a 1 mm cell) for the
-        // 31st harmonic of the cell: arguments up to 31 * 2 pi, about 0.05 rad per step.
-        let grid = Grid {
-            first: 0.5e-3 / 4096.0,
-            step: 1e-3 / 4096.0,
-            count: 4096,
-        };
-        let (w, p) = (31.0 * 2.0 * std::f64::consts::PI / 1e-3, -0.7);
-        let table = grid.sines(1.0, w, p);
-        for (i, v) in table.iter().enumerate() {
-            let direct = (w * (grid.first + i as f64 * grid.step) + p).sin();
-            assert!((v - direct).abs() < 1e-13, "{i}: {v} vs {direct}");
+        let mut reused = field(&sol, &cell, 16);
+        for n in [37, 37] {
+            field_into(&sol, &cell, n, &mut reused);
+            assert_eq!(reused, field(&sol, &cell, n));
         }
     }
 }

@@ -11,6 +11,8 @@ pub mod field;
 pub mod harmonic;
 pub mod history;
 pub mod partial;
+mod product;
+mod separable;
 pub mod state;
 
 use std::f64::consts::PI;
