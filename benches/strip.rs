@@ -1,6 +1,7 @@
 //! The strip of any thickness (docs/physics/plane.md section 6): kernel table, Gauss–Jacobi rules, one
 //! operating point at (a+b)/h of about 1, 5, 20 and 56, 100-point sweeps, and `wearlab solve` of a
-//! preset at (a+b)/h = 56 as a whole process.
+//! preset at (a+b)/h = 56 as a whole process, and of the wide default preset (start-up: reading,
+//! checking, solving and writing the JSON of a wide preset).
 //! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, mu = 0.3, k m = 0.5 on h = 1e-5 m (the strip preset's
 //! material; P = 1e5 N/m is the SciPy reference's README case).
 //! Measured in CPU time (this process's, plus its children's for `wearlab_solve`): on the shared
@@ -103,14 +104,18 @@ fn whole_process(c: &mut Criterion<CpuTime>) {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("strip-56h.toml");
     std::fs::write(&path, preset).unwrap();
+    let solve = |file: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearlab"))
+            .args(["solve", file])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+    };
     c.bench_function("wearlab_solve/strip_56h", |b| {
-        b.iter(|| {
-            let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearlab"))
-                .args(["solve", path.to_str().unwrap()])
-                .output()
-                .unwrap();
-            assert!(out.status.success());
-        })
+        b.iter(|| solve(path.to_str().unwrap()))
+    });
+    c.bench_function("wearlab_solve/wide_polymer_coating", |b| {
+        b.iter(|| solve("presets/polymer-coating.toml"))
     });
 }
 
