@@ -51,7 +51,44 @@ pub struct Validity {
     /// > 312 here, not 8.3"; the form beside it shows nu, mu and k), not reported by `wearlab
     /// solve`, where `failed_criteria` says the same at length.
     #[serde(skip)]
-    pub reasons: Vec<String>,
+    pub reasons: Vec<Reason>,
+}
+
+/// Which tolerance a failed criterion is about: a measurement against the strip model
+/// (`StripCheck::Measured`) settles the first two, not the third.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Aspect {
+    /// The contact width (2 %).
+    ContactWidth,
+    /// mu* - mu (5 %).
+    MuStarMinusMu,
+    /// Both at once (the wide model's limit on (a+b)/h).
+    Both,
+    /// Inputs outside the study: nothing was estimated.
+    Unstudied,
+}
+
+/// A failed criterion in a few words, and what it is about.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reason {
+    /// What the criterion judges.
+    pub aspect: Aspect,
+    /// "Winkler needs (a+b)/h > 312 here, not 8.3".
+    pub text: String,
+}
+
+impl Reason {
+    /// Whether a measurement against the strip model contradicts this estimated reason (the
+    /// measured deviation in its aspect is within tolerance): the status then shows the
+    /// measurement alone.
+    pub fn refuted_by(&self, measured: &Deviation) -> bool {
+        match self.aspect {
+            Aspect::ContactWidth => measured.contact_width <= WIDTH_TOLERANCE,
+            Aspect::MuStarMinusMu => measured.mu_star_minus_mu <= MU_STAR_TOLERANCE,
+            Aspect::Both => measured.within_tolerance(),
+            Aspect::Unstudied => false,
+        }
+    }
 }
 
 /// Checks the operating point against the model's assumptions and the study's criteria.
@@ -65,7 +102,10 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         Model::Strip => (Deviation::NONE, Vec::new()),
         Model::Wide | Model::Narrow => criteria_of(sol, l_over_h),
     };
-    let (reasons, failed_criteria): (Vec<String>, Vec<String>) = failed.into_iter().unzip();
+    let (reasons, failed_criteria): (Vec<Reason>, Vec<String>) = failed
+        .into_iter()
+        .map(|(aspect, text, long)| (Reason { aspect, text }, long))
+        .unzip();
     let mut warnings = failed_criteria.clone();
     if let Some(theta) = sol.theta
         && theta.abs() > 0.45
@@ -98,8 +138,8 @@ pub fn check(sol: &PlaneSolution) -> Validity {
 }
 
 /// The estimated deviation of a wide or narrow solution on a finite strip, and the criteria it
-/// fails, each in a few words and at length.
-fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, String)>) {
+/// fails: what each is about, in a few words and at length.
+fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, String, String)>) {
     let inputs = &sol.inputs;
     let nu = inputs.material.poisson_ratio;
     let mu = inputs.friction.coefficient;
@@ -125,6 +165,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, Str
     .collect();
     if !outside.is_empty() {
         failed.push((
+            Aspect::Unstudied,
             format!("not judged at {}: use the strip model", outside.join(", ")),
             format!(
                 "{name} is judged against the strip model only where that was studied (nu <= \
@@ -142,6 +183,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, Str
             .min((WIDTH_TOLERANCE / criteria::wide_width_error(nu, 1.0)).sqrt());
         if lambda > limit {
             failed.push((
+                Aspect::Both,
                 format!("wide needs (a+b)/h < {limit:.2} here, not {lambda:.3}"),
                 format!(
                     "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width \
@@ -167,6 +209,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, Str
         let needed = criteria::narrow_width_limit(nu, mu, km);
         if error.contact_width > WIDTH_TOLERANCE {
             failed.push((
+                Aspect::ContactWidth,
                 format!("Winkler needs (a+b)/h > {needed:.0} here, not {lambda:.1}"),
                 format!(
                     "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} \
@@ -179,6 +222,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, Str
         if error.mu_star_minus_mu > MU_STAR_TOLERANCE {
             failed.push(if km == 0.0 {
                 (
+                    Aspect::MuStarMinusMu,
                     "Winkler lacks the friction part of mu* - mu (mu* = mu without wear)"
                         .to_string(),
                     "without wear the Winkler model gives mu* = mu exactly, while friction alone \
@@ -188,6 +232,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(String, Str
             } else {
                 let part = 100.0 * error.mu_star_minus_mu;
                 (
+                    Aspect::MuStarMinusMu,
                     format!(
                         "Winkler lacks the friction part of mu* - mu, estimated up to {part:.0} % \
                          of it"

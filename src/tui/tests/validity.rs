@@ -57,6 +57,9 @@ fn a_model_that_does_not_hold_says_why_in_words() {
     let s = status(&app, 80, 24);
     assert!(s.contains("! Winkler needs (a+b)/h >"), "{s}");
     assert!(s.contains("off the exact strip solution by"), "{s}");
+    // the study's bound on the friction part of mu* - mu is far above the 0.4 % measured here
+    // ((a+b)/h = 8.3 is below the studied 10): the measurement is shown, not the bound
+    assert!(!s.contains("lacks the friction part"), "{s}");
     insta::assert_snapshot!("validity_fails_80x24", s);
     insta::assert_snapshot!("validity_fails_120x40", status(&app, 120, 40));
 }

@@ -38,8 +38,18 @@ pub fn lines(
         let look = if off { style.error() } else { style.ok() };
         texts.push((check.describe(model), look));
     }
+    // an estimate the measurement refutes is not shown beside it
+    let measured = match check {
+        Some(StripCheck::Measured(d)) => Some(d),
+        _ => None,
+    };
+    let reasons = v
+        .reasons
+        .iter()
+        .filter(|r| !measured.is_some_and(|d| r.refuted_by(d)))
+        .map(|r| &r.text);
     let others = v.warnings.iter().filter(|w| !v.failed_criteria.contains(w));
-    for w in v.reasons.iter().chain(others) {
+    for w in reasons.chain(others) {
         texts.push((format!("! {w}"), style.error()));
     }
     texts
