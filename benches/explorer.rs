@@ -211,10 +211,53 @@ fn partial(c: &mut Criterion) {
     }
 }
 
+/// True when the map on screen answers the newest sweep/map request (a coarse pass or more).
+fn map_on_screen(app: &App) -> bool {
+    app.explore
+        .shown
+        .as_ref()
+        .is_some_and(|a| a.generation == app.explore.generation)
+}
+
+/// An edit of the load on the regime map of the strip model (friction-or-wear-map.toml on a
+/// 1 mm layer, 41 x 41): from the key to the first coarse pass of the new map drawn, through the
+/// real loop (the explorer's thread cancels the previous map). Each iteration's load is new.
+fn map_first_pass(c: &mut Criterion) {
+    let mut preset = bundled("friction-or-wear-map.toml").unwrap().unwrap();
+    preset.plane.model = wearlab::physics::plane::Model::Strip;
+    preset.material.thickness = 1e-3;
+    let (tx, rx) = channel();
+    let keys = tx.clone();
+    let terminal = Terminal::new(TestBackend::new(120, 40)).unwrap();
+    let app = App::new(preset, None, Places::default());
+    let mut l = Loop::new(terminal, app, OPTIONS, tx, rx).unwrap();
+    while !map_on_screen(&l.app) {
+        l.step().unwrap();
+    }
+    select_load(&mut l.app);
+    let mut i = 0u64;
+    c.bench_function("explorer_edit_to_map_first_pass/strip_41x41", |b| {
+        b.iter(|| {
+            i += 1;
+            l.app.doc.preset.plane.load = 5000.0 * (1.0 + 1e-6 * i as f64);
+            let before = l.app.explore.generation;
+            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            while l.app.explore.generation == before || !map_on_screen(&l.app) {
+                l.step().unwrap();
+            }
+        })
+    });
+}
+
 criterion_group!(benches, bench);
+criterion_group! {
+    name = regime_map;
+    config = Criterion::default().sample_size(20).measurement_time(Duration::from_secs(4));
+    targets = map_first_pass
+}
 criterion_group! {
     name = partial_contact;
     config = Criterion::default().sample_size(20).measurement_time(Duration::from_secs(4));
     targets = partial
 }
-criterion_main!(benches, partial_contact);
+criterion_main!(benches, partial_contact, regime_map);
