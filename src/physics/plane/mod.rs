@@ -201,8 +201,56 @@ pub(crate) fn exponent(inputs: &PlaneInputs) -> (f64, f64, f64) {
     )
 }
 
+/// What each model's solver finds; `PlaneSolution::assemble` derives the forces and mu* from it
+/// the same way for every model.
+pub(crate) struct Found {
+    /// Trailing and leading half-widths a, b [m].
+    pub a: f64,
+    pub b: f64,
+    /// The contact width L [m] the solver's root search settled on (a + b up to round-off).
+    pub width: f64,
+    /// Q2 [N/m].
+    pub q2: f64,
+    /// psi [N/m].
+    pub psi: f64,
+    /// Delta_g [m].
+    pub delta_g: f64,
+    /// theta and gamma of the wide and strip models; None for the narrow model.
+    pub theta: Option<f64>,
+    pub gamma: Option<f64>,
+}
+
+impl PlaneSolution {
+    /// The solution from what a model's solver found: Q1 = mu Q2 + tau0 L, T = Q1 + psi (3.11)
+    /// and mu* (3.13).
+    pub(crate) fn assemble(
+        model: Model,
+        inputs: &PlaneInputs,
+        found: Found,
+        law: PressureLaw,
+    ) -> PlaneSolution {
+        let friction_force =
+            inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width;
+        PlaneSolution {
+            model,
+            inputs: *inputs,
+            normal_force: found.q2,
+            friction_force,
+            tangential_force: friction_force + found.psi,
+            a: found.a,
+            b: found.b,
+            theta: found.theta,
+            gamma: found.gamma,
+            psi: found.psi,
+            delta_g: found.delta_g,
+            mu_star: total_friction(&inputs.friction, found.psi, found.delta_g, inputs.load),
+            law,
+        }
+    }
+}
+
 /// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, paper 001 (3.13).
-pub(crate) fn total_friction(friction: &Friction, psi: f64, delta_g: f64, load: f64) -> f64 {
+fn total_friction(friction: &Friction, psi: f64, delta_g: f64, load: f64) -> f64 {
     let mu = friction.coefficient;
     mu + ((1.0 + mu * mu) * psi + mu * delta_g * friction.adhesion) / load
 }

@@ -5,7 +5,7 @@
 //! forms: Taylor series below y = 2 (Bernoulli numbers), exponentials of negative arguments above.
 
 use crate::physics::SolveError;
-use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw, total_friction};
+use crate::physics::plane::{Found, Model, PlaneInputs, PlaneSolution, PressureLaw};
 use crate::physics::roots::{BRENT_ITERATIONS, bracket_or_why, brent};
 
 /// Winkler compliance of the normal displacement, beta = (1 - 2nu)(1 + nu) h / ((1 - nu) E) [m/Pa] (5.1).
@@ -184,23 +184,21 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
         ))
     })?;
     let s = state(inputs, beta, lambda, l);
-    let mu = inputs.friction.coefficient;
-    let tau0 = inputs.friction.adhesion;
-    Ok(PlaneSolution {
-        model: Model::Narrow,
-        inputs: *inputs,
-        normal_force: s.q2,
-        friction_force: mu * s.q2 + tau0 * l,
-        tangential_force: mu * s.q2 + tau0 * l + s.psi,
-        a: s.a,
-        b: l - s.a,
-        theta: None,
-        gamma: None,
-        psi: s.psi,
-        delta_g: s.delta_g,
-        mu_star: total_friction(&inputs.friction, s.psi, s.delta_g, p),
-        law: PressureLaw::Narrow { lambda, beta },
-    })
+    Ok(PlaneSolution::assemble(
+        Model::Narrow,
+        inputs,
+        Found {
+            a: s.a,
+            b: l - s.a,
+            width: l,
+            q2: s.q2,
+            psi: s.psi,
+            delta_g: s.delta_g,
+            theta: None,
+            gamma: None,
+        },
+        PressureLaw::Narrow { lambda, beta },
+    ))
 }
 
 #[cfg(test)]

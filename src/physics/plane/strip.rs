@@ -17,9 +17,7 @@ use crate::physics::elastic::chi_c12;
 use crate::physics::plane::collocation::{Rules, System};
 use crate::physics::plane::kernels::StripKernels;
 use crate::physics::plane::narrow::winkler_beta;
-use crate::physics::plane::{
-    Model, PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction,
-};
+use crate::physics::plane::{Found, Model, PlaneInputs, PlaneSolution, PressureLaw, exponent};
 use crate::physics::roots::{bracket, brent_to, secant_log};
 use crate::physics::{SolveError, SweepRange};
 
@@ -308,24 +306,18 @@ fn search<'a>(
 
 /// The solution from a converged collocation.
 pub fn solution(inputs: &PlaneInputs, col: Collocation, model: Model) -> PlaneSolution {
-    let mu = inputs.friction.coefficient;
-    let tau0 = inputs.friction.adhesion;
     let (_, gamma, _) = exponent(inputs);
-    PlaneSolution {
-        model,
-        inputs: *inputs,
-        normal_force: col.q2,
-        friction_force: mu * col.q2 + tau0 * col.l,
-        tangential_force: mu * col.q2 + tau0 * col.l + col.psi,
+    let found = Found {
         a: 0.5 * col.l - col.c,
         b: 0.5 * col.l + col.c,
-        theta: Some(col.theta),
-        gamma: Some(gamma),
+        width: col.l,
+        q2: col.q2,
         psi: col.psi,
         delta_g: col.delta_g,
-        mu_star: total_friction(&inputs.friction, col.psi, col.delta_g, inputs.load),
-        law: PressureLaw::Strip(Arc::new(col)),
-    }
+        theta: Some(col.theta),
+        gamma: Some(gamma),
+    };
+    PlaneSolution::assemble(model, inputs, found, PressureLaw::Strip(Arc::new(col)))
 }
 
 /// Solves the strip model at the inputs' load (finite thickness only).

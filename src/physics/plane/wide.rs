@@ -4,7 +4,7 @@ use std::f64::consts::PI;
 
 use crate::physics::SolveError;
 use crate::physics::elastic::chi_c12;
-use crate::physics::plane::{PlaneInputs, PlaneSolution, PressureLaw, exponent, total_friction};
+use crate::physics::plane::{Found, PlaneInputs, PlaneSolution, PressureLaw, exponent};
 use crate::physics::roots::{BRENT_ITERATIONS, NoBracket, brent, march_up};
 
 /// The constants of the wide solution that do not depend on the contact width.
@@ -116,24 +116,22 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
         ))
     })?;
     let s = state(c, inputs, l);
-    let mu = inputs.friction.coefficient;
-    let tau0 = inputs.friction.adhesion;
-    Ok(PlaneSolution {
-        model: super::Model::Wide,
-        inputs: *inputs,
-        normal_force: s.q2,
-        friction_force: s.q1,
-        tangential_force: mu * s.q2 + tau0 * l + s.psi,
-        a: s.a,
-        b: s.b,
-        theta: Some(c.theta),
-        gamma: Some(c.gamma),
-        psi: s.psi,
-        delta_g: s.delta_g,
-        mu_star: total_friction(&inputs.friction, s.psi, s.delta_g, p),
-        law: PressureLaw::Wide {
+    Ok(PlaneSolution::assemble(
+        super::Model::Wide,
+        inputs,
+        Found {
+            a: s.a,
+            b: s.b,
+            width: l,
+            q2: s.q2,
+            psi: s.psi,
+            delta_g: s.delta_g,
+            theta: Some(c.theta),
+            gamma: Some(c.gamma),
+        },
+        PressureLaw::Wide {
             c: c.m * (PI * c.theta).cos() / (PI * inputs.radius),
             theta: c.theta,
         },
-    })
+    ))
 }
