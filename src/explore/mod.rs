@@ -7,6 +7,7 @@
 
 pub mod axis;
 pub mod curve;
+pub mod groups;
 pub mod locate;
 pub mod map;
 pub mod output;

@@ -227,3 +227,11 @@ pub fn groups(preset: &Preset) -> Vec<QuantityKey> {
         .filter(|k| k.quantity().group)
         .collect()
 }
+
+/// The dimensionless groups of a problem, each once (a harmonic's group stands for every
+/// harmonic): the explorer's help defines them with their `description`.
+pub fn problem_groups(problem: Problem) -> impl Iterator<Item = &'static Quantity> {
+    QUANTITIES
+        .iter()
+        .filter(move |q| q.group && q.problem == problem)
+}

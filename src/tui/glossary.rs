@@ -1,5 +1,8 @@
 //! What every symbol of the status panel means, with its unit and sign convention (shown by `?`).
 
+use std::sync::LazyLock;
+
+use wearlab::explore::quantity::problem_groups;
 use wearlab::preset::Problem;
 
 /// One symbol: how the status writes it, its unit, what it is.
@@ -39,10 +42,44 @@ pub const SPATIAL: [Entry; 15] = [
     ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
 ];
 
-/// The symbols of a problem's status.
+/// The symbols of a problem's status, then those of its dimensionless view.
 pub fn of(problem: Problem) -> &'static [Entry] {
     match problem {
-        Problem::Plane => &PLANE,
-        Problem::Spatial => &SPATIAL,
+        Problem::Plane => &PLANE_ALL,
+        Problem::Spatial => &SPATIAL_ALL,
     }
+}
+
+static PLANE_ALL: LazyLock<Vec<Entry>> = LazyLock::new(|| with_groups(&PLANE, Problem::Plane));
+static SPATIAL_ALL: LazyLock<Vec<Entry>> =
+    LazyLock::new(|| with_groups(&SPATIAL, Problem::Spatial));
+
+/// What heads the groups' entries.
+const GROUPS_HEAD: Entry = (
+    "D (groups)",
+    "",
+    "the dimensionless view: the status shows the problem's dimensionless groups instead of dimensional values, its title says 'in dimensionless groups'; D again goes back. The groups not defined above:",
+);
+
+/// The spatial view's one group that is not a quantity of its own.
+const PRESSURE_SUM: Entry = (
+    "sum A/(M pbar)",
+    "-",
+    "the harmonics' A/(M pbar) summed, 1 - (pbar - sum A/M)/pbar: the contact is surely complete while it is below 1",
+);
+
+/// A status's entries, then the groups of the dimensionless view that they do not define, from
+/// the quantity table (symbol and description).
+fn with_groups(status: &[Entry], problem: Problem) -> Vec<Entry> {
+    let mut entries = status.to_vec();
+    entries.push(GROUPS_HEAD);
+    entries.extend(
+        problem_groups(problem)
+            .filter(|q| !status.iter().any(|(symbol, _, _)| *symbol == q.symbol))
+            .map(|q| (q.symbol, "-", q.description)),
+    );
+    if problem == Problem::Spatial {
+        entries.push(PRESSURE_SUM);
+    }
+    entries
 }

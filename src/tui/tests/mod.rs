@@ -6,6 +6,7 @@ mod bytes;
 mod charts;
 mod explore;
 mod files;
+mod groups;
 mod keys;
 mod legend;
 mod partial;

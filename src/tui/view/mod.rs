@@ -8,6 +8,7 @@ pub mod chart;
 pub mod contact_status;
 pub mod explore;
 pub mod form;
+pub mod groups_status;
 pub mod heatmap;
 pub mod layout;
 pub mod legend;

@@ -16,9 +16,9 @@ use crate::tui::charts::contact;
 use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot};
-use crate::tui::view::contact_status;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::{Shown, note, validity_status, wrap};
+use crate::tui::view::{contact_status, groups_status};
 
 /// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item;
 /// continuation lines start with `indent`.
@@ -42,9 +42,11 @@ pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
 
 /// Draws the status of the shown result into `area`.
 pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let block = Block::default()
-        .borders(Borders::ALL)
-        .title(format!(" operating point{} ", note(shown)));
+    let block = Block::default().borders(Borders::ALL).title(format!(
+        " {}{} ",
+        groups_status::title(app),
+        note(shown)
+    ));
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let Some((answer, dim)) = shown.answer() else {
@@ -63,16 +65,17 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
         .map(|l| Line::styled(l, style.cursor()))
         .collect();
     let height = (inner.height as usize).saturating_sub(lines.len());
+    let selected = app.row().harmonic_index();
     lines.extend(match &answer.output {
+        _ if app.explore.dimensionless => {
+            groups_status::lines(&answer.output, selected, style, width, height)
+        }
         Output::Plane(out) => match &out.point {
             Ok(p) => plane(p, out.strip_check.as_ref(), style, width),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
-        Output::Spatial(Ok(out)) => {
-            let selected = app.row().harmonic_index();
-            spatial(out, selected, style, width, height)
-        }
+        Output::Spatial(Ok(out)) => spatial(out, selected, style, width, height),
     });
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
     if dim {

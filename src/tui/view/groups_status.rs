@@ -1,0 +1,146 @@
+//! The status in the problem's dimensionless groups (the dimensionless view, `D`): every number is
+//! a group the library computes (`explore::groups`), never a dimensional value, and the panel's
+//! title says "groups". `?` defines each group.
+
+use ratatui::text::Line;
+use wearlab::engine::{Output, SpatialOutput};
+use wearlab::explore::groups::{self, Group};
+use wearlab::physics::plane::OperatingPoint;
+use wearlab::physics::plane::validity::StripCheck;
+use wearlab::units::format_si;
+
+use crate::tui::app::App;
+use crate::tui::charts::contact;
+use crate::tui::view::status::{pack, prose, visible};
+use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::validity_status;
+
+/// The status panel's title: it says when the values are groups.
+pub fn title(app: &App) -> &'static str {
+    if app.explore.dimensionless {
+        "operating point in dimensionless groups"
+    } else {
+        "operating point"
+    }
+}
+
+fn item(g: &Group) -> String {
+    format!("{} = {}", g.symbol, format_si(g.value, ""))
+}
+
+/// The status lines of the shown output in groups, wrapped to `width`, at most `height` harmonic
+/// rows counted as in the dimensional status (the selected harmonic kept in view).
+pub fn lines(
+    output: &Output,
+    selected: Option<usize>,
+    style: RenderOptions,
+    width: usize,
+    height: usize,
+) -> Vec<Line<'static>> {
+    match output {
+        Output::Plane(out) => match &out.point {
+            Ok(p) => plane(p, out.strip_check.as_ref(), style, width),
+            Err(e) => vec![Line::styled(e.to_string(), style.error())],
+        },
+        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
+        Output::Spatial(Ok(out)) => spatial(out, selected, style, width, height),
+    }
+}
+
+fn plane(
+    p: &OperatingPoint,
+    check: Option<&StripCheck>,
+    style: RenderOptions,
+    width: usize,
+) -> Vec<Line<'static>> {
+    let s = &p.solution;
+    let mut items: Vec<String> = groups::plane(s, &p.validity).iter().map(item).collect();
+    if let Some(mu_star) = items.last_mut() {
+        mu_star.push_str(&format!(" (mu {})", s.inputs.friction.coefficient));
+    }
+    let mut lines: Vec<Line> = pack(&items, width, "")
+        .into_iter()
+        .map(Line::from)
+        .collect();
+    lines.extend(validity_status::lines(p, check, style, width));
+    lines
+}
+
+fn spatial(
+    out: &SpatialOutput,
+    selected: Option<usize>,
+    style: RenderOptions,
+    width: usize,
+    height: usize,
+) -> Vec<Line<'static>> {
+    let s = &out.state.solution;
+    let sum = groups::pressure_ratio_sum(s);
+    let items = [
+        format!(
+            "mu* = {} (mu {})",
+            format_si(s.mu_star, ""),
+            s.inputs.friction.coefficient
+        ),
+        format!("sum A/(M pbar) = {}", format_si(sum, "")),
+    ];
+    let mut lines: Vec<Line> = pack(&items, width, "")
+        .into_iter()
+        .map(Line::from)
+        .collect();
+    // the groups are the closed form's: say so when the contact is not complete all along
+    let (verdict, look) = match (contact::stepped(out), out.state.contact.complete) {
+        (Some(_), _) => (
+            "contact partial at first (running in): these are the closed form's groups, for \
+             complete contact; D off shows the running-in",
+            style.error(),
+        ),
+        (None, true) => ("complete contact", style.ok()),
+        (None, false) => (
+            "contact lost: these are the closed form's groups, for complete contact; D off says \
+             why",
+            style.error(),
+        ),
+    };
+    lines.extend(prose(verdict, width, look));
+    let rows: Vec<Vec<Group>> = s.harmonics.iter().map(|h| groups::harmonic(s, h)).collect();
+    let Some(first) = rows.first() else {
+        return lines;
+    };
+    // each column as wide as its symbol or its widest value, two spaces apart
+    let cells: Vec<Vec<String>> = rows
+        .iter()
+        .map(|row| row.iter().map(|g| format_si(g.value, "")).collect())
+        .collect();
+    let widths: Vec<usize> = (first.iter().enumerate())
+        .map(|(i, g)| {
+            (cells.iter().map(|c| c[i].chars().count())).fold(g.symbol.chars().count(), usize::max)
+        })
+        .collect();
+    let line = |n: &str, texts: Vec<&str>| {
+        let mut line = format!("{n:>3}");
+        for (text, width) in texts.iter().zip(&widths) {
+            line.push_str(&format!("  {text:<width$}"));
+        }
+        line.trim_end().to_string()
+    };
+    let mut header = line("n", first.iter().map(|g| g.symbol).collect());
+    let blocks: Vec<Vec<String>> = (cells.iter().enumerate())
+        .map(|(n, c)| {
+            vec![line(
+                &(n + 1).to_string(),
+                c.iter().map(String::as_str).collect(),
+            )]
+        })
+        .collect();
+    let room = height.saturating_sub(lines.len() + 1);
+    let (from, count) = visible(&blocks, selected, room);
+    let hidden = blocks.len() - count;
+    if hidden > 0 {
+        header = format!("{header}  +{hidden} more");
+    }
+    lines.push(Line::styled(header, style.heading()));
+    for block in &blocks[from..from + count] {
+        lines.extend(block.iter().cloned().map(Line::from));
+    }
+    lines
+}
