@@ -328,41 +328,66 @@ fn symlog([a, b]: [f64; 2], c: f64, label: &str, unit: &str, max: usize) -> Tick
         u => format!("{label} [{u}] (symlog)"),
     };
     let scale = Scale::SymLog(c);
-    // decades k of c 10^k on each side, the same stride for both
-    let reach = |p: f64| (scale.value_at(p).abs() / c).log10().max(0.0);
-    let left = if a < 0.0 { reach(a) } else { 0.0 };
-    let right = if b > 0.0 { reach(b) } else { 0.0 };
-    let top = left.max(right);
-    let fits = |k: i32, sign: f64| {
-        scale
-            .to_plot(sign * c * 10f64.powi(k))
-            .is_some_and(|p| (a - 1e-9..=b + 1e-9).contains(&p))
-    };
-    let values = [1, 2, 3, 5, 10, 20]
-        .into_iter()
-        .map(|s| {
-            let mut v: Vec<f64> = (0..=top as i32)
-                .rev()
-                .filter(|k| k % s == 0 && fits(*k, -1.0))
-                .map(|k| -c * 10f64.powi(k))
-                .collect();
-            if (a..=b).contains(&0.0) {
-                v.push(0.0);
+    let inside = |p: f64| (a - 1e-9..=b + 1e-9).contains(&p);
+    // the core's edge (plot coordinate of c)
+    let core = 2f64.log10();
+    let reach = |p: f64| (scale.value_at(p).abs() / c).log10().max(0.0).ceil() as i32;
+    let top = reach(a).max(reach(b));
+    // zero first, then on each side c 10^k from the outermost inwards, each kept when it is
+    // clear of those kept by `gap`; a side with values beyond the linear core that gets none:
+    // 1-2-5 times c 10^k, then half as clear
+    let pick = |gap: f64| -> Vec<f64> {
+        let mut kept: Vec<(f64, f64)> = Vec::new();
+        if inside(0.0) {
+            kept.push((0.0, 0.0));
+        }
+        for (sign, wide) in [(-1.0, a < -core), (1.0, b > core)] {
+            let before = kept.len();
+            let tries = [
+                (&[1.0][..], gap),
+                (&[1.0, 2.0, 5.0], gap),
+                (&[1.0, 2.0, 5.0], gap / 2.0),
+            ];
+            for (mantissas, clear) in tries {
+                for k in (0..=top).rev() {
+                    for m in mantissas.iter().rev() {
+                        let v = sign * m * c * 10f64.powi(k);
+                        let Some(p) = scale.to_plot(v).filter(|p| inside(*p)) else {
+                            continue;
+                        };
+                        if kept.iter().all(|q| (q.0 - p).abs() >= clear) {
+                            kept.push((p, v));
+                        }
+                    }
+                }
+                if !wide || kept.len() > before {
+                    break;
+                }
             }
-            v.extend(
-                (0..=top as i32)
-                    .filter(|k| k % s == 0 && fits(*k, 1.0))
-                    .map(|k| c * 10f64.powi(k)),
-            );
-            v
-        })
-        .find(|v| v.len() >= 2 && v.len() <= max)
-        .unwrap_or_else(|| {
-            // within the linear core: nice steps of the values themselves
-            let (lo, hi) = (scale.value_at(a), scale.value_at(b));
-            let (step, _, _, ks) = nice_step(lo, hi, max);
-            ks.iter().map(|k| k * step).collect()
-        });
+        }
+        kept.sort_by(|x, y| x.0.total_cmp(&y.0));
+        kept.into_iter().map(|q| q.1).collect()
+    };
+    // ticks at least a max-th of the range apart (each on a row of its own), or a (max-1)-th
+    // when that gives too many
+    let mut values = Some(pick((b - a) / max as f64))
+        .filter(|v| v.len() <= max)
+        .unwrap_or_else(|| pick((b - a) / (max - 1) as f64));
+    // still too many (both sides kept one half as clear): the innermost go
+    while values.len() > max {
+        let inner = (0..values.len())
+            .filter(|&i| values[i] != 0.0)
+            .min_by(|&i, &j| values[i].abs().total_cmp(&values[j].abs()));
+        values.remove(inner.unwrap_or(0));
+    }
+    let values = if values.len() >= 2 {
+        values
+    } else {
+        // within the linear core: nice steps of the values themselves
+        let (lo, hi) = (scale.value_at(a), scale.value_at(b));
+        let (step, _, _, ks) = nice_step(lo, hi, max);
+        ks.iter().map(|k| k * step).collect()
+    };
     Ticks {
         ticks: with_labels(scale, values, unit),
         title,
