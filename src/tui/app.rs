@@ -12,6 +12,7 @@ use crate::tui::charts::{Chart, Plot};
 use crate::tui::explore::Explore;
 use crate::tui::form::{self, Change, Row};
 use crate::tui::sweep_form::SweepForm;
+use crate::tui::view::MIN_SIZE;
 use wearlab::engine::explore::{ExploreAnswer, ExploreRequest};
 
 /// The preset being edited and its history.
@@ -129,6 +130,9 @@ pub struct Ui {
     pub log_y: Vec<Chart>,
     /// The pressure map's colour scale over the times seen of one set of inputs.
     pub heat_scale: Option<HeatScale>,
+    /// The screen as last drawn (80x24 before the first draw): the help's scrolling stops at
+    /// its end.
+    pub screen: ratatui::layout::Rect,
 }
 
 /// A colour scale kept while only the time changes, so that a decay shows as fading colours.
@@ -288,6 +292,7 @@ impl App {
                 expanded: false,
                 log_y: Vec::new(),
                 heat_scale: None,
+                screen: ratatui::layout::Rect::new(0, 0, MIN_SIZE.0, MIN_SIZE.1),
             },
             doc: Document {
                 preset,

@@ -112,6 +112,11 @@ impl<B: Backend> Loop<B> {
     }
 
     fn draw(&mut self) -> io::Result<()> {
+        let size = self
+            .terminal
+            .size()
+            .map_err(|e| io::Error::other(e.to_string()))?;
+        self.app.ui.screen = ratatui::layout::Rect::new(0, 0, size.width, size.height);
         let (app, render) = (&self.app, self.render);
         match self.terminal.draw(|f| view(app, render, f)) {
             Ok(_) => Ok(()),

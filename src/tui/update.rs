@@ -150,11 +150,13 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             }
         }
         Mode::Help(scroll) => {
+            // scrolling stops at the end of the text on the last drawn screen
+            let last = crate::tui::view::popups::help_last(app, app.ui.screen);
             app.ui.mode = match keys::prompt_action(Prompt::Help, &key) {
-                Some(PromptAction::Up) => Mode::Help(scroll.saturating_sub(1)),
-                Some(PromptAction::Down) => Mode::Help(scroll.saturating_add(1)),
-                Some(PromptAction::PageUp) => Mode::Help(scroll.saturating_sub(10)),
-                Some(PromptAction::PageDown) => Mode::Help(scroll.saturating_add(10)),
+                Some(PromptAction::Up) => Mode::Help(scroll.min(last).saturating_sub(1)),
+                Some(PromptAction::Down) => Mode::Help(scroll.saturating_add(1).min(last)),
+                Some(PromptAction::PageUp) => Mode::Help(scroll.min(last).saturating_sub(10)),
+                Some(PromptAction::PageDown) => Mode::Help(scroll.saturating_add(10).min(last)),
                 _ => Mode::Normal,
             };
             Vec::new()

@@ -125,6 +125,32 @@ fn the_help_explains_every_status_symbol_of_both_problems() {
     }
 }
 
+#[test]
+fn every_help_line_fits_and_long_symbols_stand_above_their_text() {
+    // the review: "partial contact (N%) [-]the contact, solved on the nodes of the period cel"
+    for file in ["polymer-coating.toml", "contact-lost.toml"] {
+        let app = app(file);
+        for width in [76, 98] {
+            let help: Vec<String> = help_lines(&app, PLAIN, width)
+                .iter()
+                .map(|l| l.to_string())
+                .collect();
+            assert!(help.iter().all(|l| l.chars().count() <= width), "{file}");
+            if file != "contact-lost.toml" {
+                continue;
+            }
+            let at = |text: &str| help.iter().position(|l| l.contains(text)).unwrap();
+            let head = at("  complete after t (simulated) [s]");
+            assert_eq!(help[head].trim(), "complete after t (simulated) [s]");
+            assert!(
+                help[head + 1]
+                    .trim_start()
+                    .starts_with("when the simulated")
+            );
+        }
+    }
+}
+
 /// The chart modes of issue 11, each at 80x24 and 120x40.
 fn both(name: &str, app: &App, style: RenderOptions) {
     insta::assert_snapshot!(format!("{name}_80x24"), screen(app, 80, 24, style));

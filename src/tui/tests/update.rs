@@ -298,6 +298,30 @@ fn question_mark_opens_a_scrolling_help_that_any_other_key_closes() {
 }
 
 #[test]
+fn help_scrolling_stops_at_the_end_of_the_text() {
+    // the review: after PgDn x12, past the end, the first three PgUp did nothing
+    for (w, h) in [(80, 24), (120, 40)] {
+        let mut app = app("contact-lost.toml");
+        app.ui.screen = ratatui::layout::Rect::new(0, 0, w, h);
+        let last = crate::tui::view::popups::help_last(&app, app.ui.screen);
+        assert!(
+            last > 10,
+            "{w}x{h}: the help fits without scrolling ({last})"
+        );
+        press(&mut app, KeyCode::Char('?'));
+        for _ in 0..12 {
+            press(&mut app, KeyCode::PageDown);
+        }
+        assert_eq!(app.ui.mode, Mode::Help(last), "{w}x{h}");
+        press(&mut app, KeyCode::PageUp);
+        assert_eq!(app.ui.mode, Mode::Help(last - 10), "{w}x{h}");
+        press(&mut app, KeyCode::Down);
+        press(&mut app, KeyCode::End);
+        assert_eq!(app.ui.mode, Mode::Normal);
+    }
+}
+
+#[test]
 fn every_parameter_of_the_registry_has_its_nudge() {
     use crate::tui::form::{STEPS, Step};
     for p in wearlab::preset::PARAMS {

@@ -12,16 +12,17 @@ use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
 use crate::tui::{glossary, keys};
 
-/// A two-column row: `left` padded to `indent` columns, `right` wrapped in the rest.
+/// A two-column row: `left` padded to `indent` columns, `right` wrapped in the rest; a `left`
+/// too long for its column has a line of its own, the text starting under it.
 fn row(left: &str, right: &str, indent: usize, width: usize) -> Vec<Line<'static>> {
-    wrap(right, width.saturating_sub(indent).max(10))
-        .into_iter()
-        .enumerate()
-        .map(|(i, text)| {
-            let left = if i == 0 { left } else { "" };
-            Line::from(format!("{left:<indent$}{text}"))
-        })
-        .collect()
+    let own_line = left.chars().count() + 1 > indent;
+    let texts = wrap(right, width.saturating_sub(indent).max(10));
+    let head = own_line.then(|| Line::from(left.to_string()));
+    let body = texts.into_iter().enumerate().map(move |(i, text)| {
+        let left = if i == 0 && !own_line { left } else { "" };
+        Line::from(format!("{left:<indent$}{text}"))
+    });
+    head.into_iter().chain(body).collect()
 }
 
 /// The help's lines for a text `width` wide.
@@ -57,19 +58,48 @@ pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'st
     lines
 }
 
-/// The help window, scrolled by `scroll` lines.
-pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    // over everything but the message and key lines
+/// Where the help goes on a screen: over everything but the message and key lines, the whole
+/// width up to 100 columns (so that no border of the screen under it shows beside it).
+fn help_rect(screen: Rect) -> Rect {
     let above = Rect {
-        height: area.height.saturating_sub(2),
-        ..area
+        height: screen.height.saturating_sub(2),
+        ..screen
     };
-    let rect = centered(above, 78, above.height);
-    frame.render_widget(Clear, rect);
+    centered(above, 100, above.height)
+}
+
+/// The help's lines in its window on `screen`, and the largest scroll that still fills it.
+fn help_layout(app: &App, style: RenderOptions, screen: Rect) -> (Vec<Line<'static>>, u16) {
+    let rect = help_rect(screen);
     let lines = help_lines(app, style, rect.width.saturating_sub(2) as usize);
     let last = lines
         .len()
-        .saturating_sub(rect.height.saturating_sub(2) as usize) as u16;
+        .saturating_sub(rect.height.saturating_sub(2) as usize);
+    (lines, u16::try_from(last).unwrap_or(u16::MAX))
+}
+
+/// The largest scroll of the help on `screen`: scrolling stops there.
+pub fn help_last(app: &App, screen: Rect) -> u16 {
+    let plain = RenderOptions {
+        ascii: false,
+        color: false,
+        truecolor: false,
+    };
+    help_layout(app, plain, screen).1
+}
+
+/// The help window, scrolled by `scroll` lines.
+pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let rect = help_rect(area);
+    // the screen under it is cleared whole: no border of it beside the help's own
+    frame.render_widget(
+        Clear,
+        Rect {
+            height: area.height.saturating_sub(2),
+            ..area
+        },
+    );
+    let (lines, last) = help_layout(app, style, area);
     let more = if scroll < last { " ↓ more " } else { "" };
     let block = Block::default()
         .borders(Borders::ALL)
