@@ -151,6 +151,30 @@ fn every_help_line_fits_and_long_symbols_stand_above_their_text() {
     }
 }
 
+#[test]
+fn a_long_message_takes_two_lines_and_is_never_cut_mid_word() {
+    // the review: typing 10um for E ended "…write a plain number or a prefix" at 80 columns
+    let mut app = solved("polymer-coating.toml");
+    select(&mut app, "E", None);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "10um");
+    press(&mut app, KeyCode::Enter);
+    let message = app.ui.message.as_ref().unwrap().text.clone();
+    for (w, h) in [(80, 24), (120, 40)] {
+        let s = screen(&app, w, h, PLAIN);
+        let rows: Vec<&str> = s.lines().collect();
+        let shown: String = rows[h as usize - 3..h as usize - 1]
+            .iter()
+            .map(|r| r.trim_matches('"').trim())
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(shown.ends_with(message.as_str()), "{w}x{h}:\n{s}");
+        if w == 80 {
+            insta::assert_snapshot!("long_message_80x24", s);
+        }
+    }
+}
+
 /// The chart modes of issue 11, each at 80x24 and 120x40.
 fn both(name: &str, app: &App, style: RenderOptions) {
     insta::assert_snapshot!(format!("{name}_80x24"), screen(app, 80, 24, style));

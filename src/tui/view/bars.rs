@@ -3,11 +3,13 @@
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
+use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
 use crate::tui::app::{App, Mode};
 use crate::tui::keys::{self, Prompt};
 use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::wrap;
 
 /// The prompt whose keys apply in a mode (None on the main screen).
 pub fn prompt(mode: &Mode) -> Option<Prompt> {
@@ -24,10 +26,10 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
     }
 }
 
-/// Draws the message line: a question being asked, the file name being typed, the last
-/// message, or the preset's name.
-pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let (text, st) = match &app.ui.mode {
+/// The message line: a question being asked, the file name being typed, the last message, or
+/// the preset's name.
+fn message(app: &App, style: RenderOptions) -> (String, Style) {
+    match &app.ui.mode {
         Mode::SaveAs(buffer) => (
             format!("save as (a name, or a path such as ~/lab.toml): {buffer}_"),
             Style::default(),
@@ -58,8 +60,40 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
                 (format!("{name}{edited}"), Style::default())
             }
         },
-    };
-    frame.render_widget(Paragraph::new(text).style(st), area);
+    }
+}
+
+/// How many lines the message takes on a screen `width` wide: two when it does not fit on one
+/// (the panels above give up their last row meanwhile), else one.
+pub fn message_height(app: &App, style: RenderOptions, width: u16) -> u16 {
+    let (text, _) = message(app, style);
+    if wrap(&text, width as usize).len() > 1 {
+        2
+    } else {
+        1
+    }
+}
+
+/// Draws the message, wrapped at spaces to the lines of `area`; a message longer still ends
+/// in "…" after its last whole word.
+pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let (text, st) = message(app, style);
+    let width = area.width as usize;
+    let rows = area.height.max(1) as usize;
+    let mut lines = wrap(&text, width);
+    if lines.len() > rows {
+        lines.truncate(rows);
+        let last = &mut lines[rows - 1];
+        while last.chars().count() + 2 > width {
+            match last.rfind(' ') {
+                Some(i) => last.truncate(i),
+                None => last.clear(),
+            }
+        }
+        last.push_str(" …");
+    }
+    let lines: Vec<Line> = lines.into_iter().map(Line::from).collect();
+    frame.render_widget(Paragraph::new(lines).style(st), area);
 }
 
 /// Draws the keys of the main screen or of the prompt being answered.

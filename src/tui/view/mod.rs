@@ -89,10 +89,17 @@ pub fn shown(app: &App) -> Shown<'_> {
 /// Draws the whole screen.
 pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     let area = frame.area();
-    let Some(areas) = layout::areas(area, app.ui.expanded) else {
+    let Some(mut areas) = layout::areas(area, app.ui.expanded) else {
         too_small(frame, area);
         return;
     };
+    if bars::message_height(app, style, area.width) > 1 {
+        // a long message takes the panels' last row rather than being cut
+        areas.form.height -= 1;
+        areas.status.height -= 1;
+        areas.message.y -= 1;
+        areas.message.height += 1;
+    }
     let shown = shown(app);
     if !app.ui.expanded {
         form::draw(app, style, frame, areas.form);
