@@ -6,26 +6,39 @@ use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::{Scale, Series, ticks};
 
 /// A value as the readout writes it: three significant digits with an SI prefix where the unit
-/// takes one, else six significant digits (mu* differs from mu in the fifth).
-pub fn value(v: f64, unit: &str) -> String {
+/// takes one, else six significant digits (mu* differs from mu in the fifth), or on a linear axis
+/// spanning `span` (same unit) as many decimals as resolve a hundredth of it, trailing zeros kept
+/// (mu* on an axis "mu* - 0.3 (x1e-7)" reads 0.2999999700, not 0.3).
+pub fn value(v: f64, unit: &str, span: Option<f64>) -> String {
     if prefixable(unit) || !v.is_finite() {
         return format_si(v, unit);
     }
+    let fine = span
+        .filter(|s| *s > 0.0 && s.is_finite())
+        .map(|s| (2.0 - s.log10()).ceil().clamp(0.0, 15.0) as usize);
     let text = if v == 0.0 {
         "0".to_string()
     } else {
         let e = v.abs().log10().floor() as i32;
-        if (-4..6).contains(&e) {
-            let f = 10f64.powi(5 - e);
-            ticks::plain((v * f).round() / f)
-        } else {
-            format!("{v:.5e}")
+        match fine {
+            Some(d) if (-4..6).contains(&e) && d as i32 > 5 - e => format!("{v:.d$}"),
+            _ if (-4..6).contains(&e) => {
+                let f = 10f64.powi(5 - e);
+                ticks::plain((v * f).round() / f)
+            }
+            _ => format!("{v:.5e}"),
         }
     };
     match unit {
         "" => text,
         u => format!("{text} {u}"),
     }
+}
+
+/// The name the readout gives a curve: its legend text up to the first ", " (what follows is a
+/// remark: "mu*, contact complete from pbar = 428 kPa" reads "mu* = 0.3...").
+pub fn short_name(name: &str) -> &str {
+    name.split(", ").next().unwrap_or(name)
 }
 
 /// A curve's value at plot coordinate `x` (linear between its points in plot coordinates), or
@@ -48,7 +61,7 @@ pub fn at(series: &Series, x: f64, xs: Scale, ys: Scale) -> Option<f64> {
 }
 
 /// The readout at `cursor` (a fraction of the x range): "x = ...", then "name = value" for every
-/// curve of every plot, and for the pins' curves "[n] name = value".
+/// curve of every plot (its short name), and for the pins' curves "[n] name = value".
 pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     let Some(first) = frames.first() else {
         return Vec::new();
@@ -63,20 +76,21 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     )];
     for f in frames {
         let unit = f.plot.y.unit;
+        let span = (f.y_scale == Scale::Linear).then_some(f.y[1] - f.y[0]);
         let read = |s: &Series| {
-            at(s, xp, f.plot.x.scale, f.y_scale).map_or("-".to_string(), |v| value(v, unit))
+            at(s, xp, f.plot.x.scale, f.y_scale).map_or("-".to_string(), |v| value(v, unit, span))
         };
         items.extend(
             f.plot
                 .series
                 .iter()
-                .map(|s| format!("{} = {}", s.name, read(s))),
+                .map(|s| format!("{} = {}", short_name(&s.name), read(s))),
         );
         for (n, pin) in f.pins.iter().enumerate() {
             items.extend(
                 pin.series
                     .iter()
-                    .map(|s| format!("[{}] {} = {}", n + 1, s.name, read(s))),
+                    .map(|s| format!("[{}] {} = {}", n + 1, short_name(&s.name), read(s))),
             );
         }
     }

@@ -63,7 +63,7 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
             x_axis(),
             axis("p", "Pa", Scale::Linear),
             vec![Series {
-                name: format!("p along y = {y}{}", crest(&p)),
+                name: format!("p (y = {y}){}", crest(&p)),
                 points: p,
             }],
         ),

@@ -118,3 +118,52 @@ fn the_selected_harmonic_stays_in_view() {
     assert_eq!(visible(&blocks, Some(5), 2), (4, 2));
     assert_eq!(visible(&blocks, Some(5), 0), (5, 0));
 }
+
+/// The plane pressure chart with a < 0 (default preset, h = 10 um): the mark "-a" lies right of
+/// the tip. Each label covers its own mark's column, or is left out.
+#[test]
+fn mark_labels_sit_over_their_marks_or_are_left_out() {
+    use crate::tui::charts::Mark;
+    use crate::tui::view::axis::mark_labels;
+    let mark = |at: f64, label: &str| Mark {
+        at,
+        label: label.into(),
+    };
+    let mut plot = Plot::new(
+        axis("m", Scale::Linear),
+        axis("Pa", Scale::Linear),
+        vec![series(&[(0.0, 1.0), (1.0, 2.0)])],
+    );
+    let area = ratatui::layout::Rect::new(0, 0, 40, 5);
+    // columns: round(f * 39): 0.5 -> 20, 0.52 -> 20, 0.7 -> 27
+    plot.x_marks = vec![mark(0.7, "-a"), mark(0.5, "tip")];
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(mark_labels(f, area), [(19, "tip"), (26, "-a")]);
+    // on the same column: the second cannot cover its mark and is left out (it was drawn at
+    // column 23, under nothing of its own)
+    plot.x_marks = vec![mark(0.52, "-a"), mark(0.5, "tip")];
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(mark_labels(f, area).len(), 1);
+    // at the right end: shifted left to end with the plot, still over its mark
+    plot.x_marks = vec![mark(1.0, "complete")];
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(mark_labels(f, area), [(32, "complete")]);
+}
+
+/// Spatial chart 4 of the default preset: the curve's legend text carries a remark with its own
+/// "=", and mu* - mu is 1e-7. The readout names the curve alone and gives the digits the axis
+/// "mu* - 0.3 (x1e-7)" resolves (it read "mu*, contact complete from pbar = 428 kPa = 0.3").
+#[test]
+fn the_readout_names_the_curve_alone_with_the_digits_of_its_axis() {
+    use crate::tui::charts::readout::{readout, value};
+    let mut s = series(&[(1.0, 0.3 - 1e-7), (2.0, 0.3 - 3e-8)]);
+    s.name = "mu*, contact complete from pbar = 428 kPa".into();
+    let plot = Plot::new(axis("Pa", Scale::Linear), axis("", Scale::Linear), vec![s]);
+    let f = frames(std::slice::from_ref(&plot), &[], false);
+    // the span 7e-8: a hundredth of it is 7e-10, ten decimals
+    assert_eq!(readout(&f, 1.0)[1], "mu* = 0.2999999700");
+    assert_eq!(readout(&f, 0.0)[1], "mu* = 0.2999999000");
+    // a wide axis keeps six significant digits
+    assert_eq!(value(0.31234567, "", Some(0.05)), "0.312346");
+    assert_eq!(value(0.31234567, "", None), "0.312346");
+}

@@ -209,6 +209,38 @@ pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions,
     }
 }
 
+/// The labels of the vertical marks on the x axis line of plot area `p`, left to right: each
+/// over its own mark's column (centred, else shifted clear of the plot's end or of a label before
+/// it, as long as it still covers the column), a column apart; one that cannot be is left out, never put elsewhere.
+pub fn mark_labels<'a>(frame: &'a Frame, p: Rect) -> Vec<(u16, &'a str)> {
+    let mut marks: Vec<(u16, &str)> = frame
+        .plot
+        .x_marks
+        .iter()
+        .filter_map(|m| {
+            let v = frame.plot.x.scale.to_plot(m.at)?;
+            Some((p.x + column(frac(v, frame.x), p.width), m.label.as_str()))
+        })
+        .collect();
+    marks.sort_by_key(|m| m.0);
+    let mut free = p.x;
+    let mut out = Vec::new();
+    for (centre, label) in marks {
+        let len = label.chars().count() as u16;
+        let end = p.x + p.width;
+        let start = centre
+            .saturating_sub(len / 2)
+            .min(end.saturating_sub(len))
+            .max(free);
+        if start > centre || start + len <= centre || start + len > end {
+            continue;
+        }
+        out.push((start, label));
+        free = start + len + 1;
+    }
+    out
+}
+
 /// Draws the axis lines with tick marks, the tick labels, and the vertical marks' labels on the
 /// x axis line.
 pub fn frame(frame: &Frame, g: &Geometry, y: &Ticks, x: &Ticks, buf: &mut Buffer) {
@@ -236,19 +268,8 @@ pub fn frame(frame: &Frame, g: &Geometry, y: &Ticks, x: &Ticks, buf: &mut Buffer
     for (pos, _) in &x.ticks {
         buf[(p.x + column(frac(*pos, frame.x), p.width), g.axis_row)].set_char('┬');
     }
-    let mut free = p.x;
-    for m in &frame.plot.x_marks {
-        let Some(v) = frame.plot.x.scale.to_plot(m.at) else {
-            continue;
-        };
-        let len = m.label.chars().count() as u16;
-        let centre = p.x + column(frac(v, frame.x), p.width);
-        let start = centre.saturating_sub(len / 2).max(free);
-        if start + len > p.x + p.width {
-            continue;
-        }
-        buf.set_stringn(start, g.axis_row, &m.label, len as usize, Style::default());
-        free = start + len + 1;
+    for (start, label) in mark_labels(frame, p) {
+        buf.set_string(start, g.axis_row, label, Style::default());
     }
     if let Some(r) = g.x_labels {
         let left = p.x - g.header.x;
