@@ -76,7 +76,7 @@ fn group(name: &'static str, value: f64) -> Group {
 
 /// The plane problem's groups at a solution, in the order the status shows them: (a+b)/h (0 for
 /// the half-plane, from the validity verdict), (a+b)/R, P/(m R), k m, mu chi, theta (wide and
-/// strip models only) and mu*.
+/// strip models only), mu* and mu* - mu (the deformation part of friction).
 pub fn plane(s: &PlaneSolution, validity: &Validity) -> Vec<Group> {
     let i = &s.inputs;
     let mut groups = vec![
@@ -91,7 +91,28 @@ pub fn plane(s: &PlaneSolution, validity: &Validity) -> Vec<Group> {
     ];
     groups.extend(s.theta.map(|t| group("theta", t)));
     groups.push(group("mu_star", s.mu_star));
+    groups.push(group(
+        "mu_star_minus_mu",
+        s.mu_star - i.friction.coefficient,
+    ));
     groups
+}
+
+/// The spatial problem's groups of the whole contact: mu*, mu* - mu and the sum of A/(M pbar)
+/// over the harmonics (`pressure_ratio_sum`).
+pub fn spatial(s: &SpatialSolution) -> Vec<Group> {
+    vec![
+        group("mu_star", s.mu_star),
+        group(
+            "mu_star_minus_mu",
+            s.mu_star - s.inputs.friction.coefficient,
+        ),
+        Group {
+            name: "pressure_ratio_sum",
+            symbol: "sum A/(M pbar)",
+            value: pressure_ratio_sum(s),
+        },
+    ]
 }
 
 /// One harmonic's groups: kh, beta t, A/(M pbar) and the phase lead phi [rad] of the pressure

@@ -235,3 +235,11 @@ pub fn problem_groups(problem: Problem) -> impl Iterator<Item = &'static Quantit
         .iter()
         .filter(move |q| q.group && q.problem == problem)
 }
+
+/// The quantity of a problem with this name (`mu_star_minus_mu`; a harmonic's as
+/// `harmonics.N.kh`).
+pub fn by_name(problem: Problem, name: &str) -> Option<&'static Quantity> {
+    QUANTITIES
+        .iter()
+        .find(|q| q.problem == problem && q.name == name)
+}

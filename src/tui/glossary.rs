@@ -2,7 +2,7 @@
 
 use std::sync::LazyLock;
 
-use wearlab::explore::quantity::problem_groups;
+use wearlab::explore::quantity::{by_name, problem_groups};
 use wearlab::preset::Problem;
 
 /// One symbol: how the status writes it, its unit, what it is.
@@ -64,17 +64,18 @@ const GROUPS_HEAD: Entry = (
 /// The spatial view's one group that is not a quantity of its own.
 const PRESSURE_SUM: Entry = (
     "sum A/(M pbar)",
-    "-",
+    "",
     "the harmonics' A/(M pbar) summed, 1 - (pbar - sum A/M)/pbar: the contact is surely complete while it is below 1",
 );
 
-/// A status's entries, then the groups of the dimensionless view that they do not define, from
-/// the quantity table (symbol and description).
+/// A status's entries, then the groups of the dimensionless view and mu* - mu that they do not
+/// define, from the quantity table (symbol and description).
 fn with_groups(status: &[Entry], problem: Problem) -> Vec<Entry> {
     let mut entries = status.to_vec();
     entries.push(GROUPS_HEAD);
     entries.extend(
         problem_groups(problem)
+            .chain(by_name(problem, "mu_star_minus_mu"))
             .filter(|q| !status.iter().any(|(symbol, _, _)| *symbol == q.symbol))
             .map(|q| (q.symbol, "-", q.description)),
     );

@@ -237,7 +237,7 @@ pub const BINDINGS: [Binding; 21] = [
     ),
     binding(
         &[(ch('D'), Action::Dimensionless)],
-        "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*; spatial mu*, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the swept inputs on the axes keep their units; D again goes back",
+        "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*, mu*-mu; spatial mu*, mu*-mu, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the swept inputs on the axes keep their units; D again goes back",
         ("D", "groups", "", 7), None,
     ),
     binding(

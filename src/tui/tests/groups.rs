@@ -23,6 +23,7 @@ fn d_shows_the_status_in_groups_and_back() {
         "k m =",
         "mu chi =",
         "mu* =",
+        "mu*-mu =",
     ] {
         assert!(groups.contains(symbol), "{symbol}");
     }
@@ -43,7 +44,14 @@ fn the_spatial_status_in_groups() {
     let mut app = solved("dispersion.toml");
     press(&mut app, KeyCode::Char('D'));
     let groups = screen(&app, 120, 40, PLAIN);
-    for symbol in ["kh", "beta t", "A/(M pbar)", "phi", "sum A/(M pbar) ="] {
+    for symbol in [
+        "kh",
+        "beta t",
+        "A/(M pbar)",
+        "phi",
+        "sum A/(M pbar) =",
+        "mu*-mu =",
+    ] {
         assert!(groups.contains(symbol), "{symbol}");
     }
     insta::assert_snapshot!("groups_spatial_80x24", screen(&app, 80, 24, PLAIN));
@@ -65,6 +73,6 @@ fn the_help_defines_every_group() {
         for q in problem_groups(problem) {
             assert!(defined(q.symbol), "{file}: {} undefined", q.symbol);
         }
-        assert!(defined("D (groups)"));
+        assert!(defined("D (groups)") && defined("mu*-mu"));
     }
 }

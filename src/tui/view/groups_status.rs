@@ -24,8 +24,13 @@ pub fn title(app: &App) -> &'static str {
     }
 }
 
-fn item(g: &Group) -> String {
-    format!("{} = {}", g.symbol, format_si(g.value, ""))
+/// "symbol = value", mu* with the preset's mu beside it.
+fn item(g: &Group, mu: f64) -> String {
+    let text = format!("{} = {}", g.symbol, format_si(g.value, ""));
+    match g.name {
+        "mu_star" => format!("{text} (mu {mu})"),
+        _ => text,
+    }
 }
 
 /// The status lines of the shown output in groups, wrapped to `width`, at most `height` harmonic
@@ -54,10 +59,10 @@ fn plane(
     width: usize,
 ) -> Vec<Line<'static>> {
     let s = &p.solution;
-    let mut items: Vec<String> = groups::plane(s, &p.validity).iter().map(item).collect();
-    if let Some(mu_star) = items.last_mut() {
-        mu_star.push_str(&format!(" (mu {})", s.inputs.friction.coefficient));
-    }
+    let mu = s.inputs.friction.coefficient;
+    let items: Vec<String> = (groups::plane(s, &p.validity).iter())
+        .map(|g| item(g, mu))
+        .collect();
     let mut lines: Vec<Line> = pack(&items, width, "")
         .into_iter()
         .map(Line::from)
@@ -74,15 +79,8 @@ fn spatial(
     height: usize,
 ) -> Vec<Line<'static>> {
     let s = &out.state.solution;
-    let sum = groups::pressure_ratio_sum(s);
-    let items = [
-        format!(
-            "mu* = {} (mu {})",
-            format_si(s.mu_star, ""),
-            s.inputs.friction.coefficient
-        ),
-        format!("sum A/(M pbar) = {}", format_si(sum, "")),
-    ];
+    let mu = s.inputs.friction.coefficient;
+    let items: Vec<String> = groups::spatial(s).iter().map(|g| item(g, mu)).collect();
     let mut lines: Vec<Line> = pack(&items, width, "")
         .into_iter()
         .map(Line::from)
