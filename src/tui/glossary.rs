@@ -15,7 +15,7 @@ pub const PLANE: [Entry; 9] = [
     ("theta", "-", "exponent shift of the pressure (wide and strip models; eq. 4.5): > 0 peak behind the tip (friction wins), < 0 ahead (wear wins)"),
     ("Q2", "N/m", "normal contact force, the integral of the pressure q2 over the contact"),
     ("psi", "N/m", "deformation component of friction, the integral of q2 g'(x) (eq. 2.2); > 0 adds to friction"),
-    ("mu*", "-", "total friction coefficient T/P = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P (eq. 3.13)"),
+    ("mu*", "-", "total friction coefficient (T - tau0 (a+b))/P = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P (eq. 3.13): the friction force T less the adhesive part tau0 (a+b), over the load P (T/P only without adhesion)"),
     ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
     ("I-J residual", "-", "|I - J| over the gross work: how well the solution meets the energy identity I = J (eq. 2.9); small is good"),
     ("(a+b)/h", "-", "contact width over strip thickness: wide model for << 1, narrow (Winkler) for >> 1, strip for any"),
