@@ -10,6 +10,7 @@ use crate::physics::plane::criteria::{
     self, MU_STAR_FLOOR, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
 };
 use crate::physics::plane::{Model, PlaneSolution, solve};
+use crate::units::format_si;
 
 /// How far a model is from the strip model of any thickness, relative.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -47,9 +48,9 @@ pub struct Validity {
     pub estimated_error: Deviation,
     /// The criteria of the study the model fails, in words; empty when it holds.
     pub failed_criteria: Vec<String>,
-    /// The same criteria in a few words each, for the explorer's status ("Winkler needs (a+b)/h
-    /// > 312 here, not 8.3"; the form beside it shows nu, mu and k), not reported by `wearlab
-    /// solve`, where `failed_criteria` says the same at length.
+    /// Every warning in a few words, in the order of `warnings`, for the explorer's status
+    /// ("Winkler needs (a+b)/h > 312 here, not 8.3"; the form beside it shows nu, mu and k), not
+    /// reported by `wearlab solve`, where `warnings` says the same at length.
     #[serde(skip)]
     pub reasons: Vec<Reason>,
 }
@@ -66,6 +67,9 @@ pub enum Aspect {
     Both,
     /// Inputs outside the study: nothing was estimated.
     Unstudied,
+    /// An assumption of every model (small slopes, a contact around the tip, an integrable
+    /// pressure): not a comparison with the strip model.
+    Assumption,
 }
 
 /// A failed criterion in a few words, and what it is about.
@@ -86,7 +90,7 @@ impl Reason {
             Aspect::ContactWidth => measured.contact_width <= WIDTH_TOLERANCE,
             Aspect::MuStarMinusMu => measured.mu_star_minus_mu <= MU_STAR_TOLERANCE,
             Aspect::Both => measured.within_tolerance(),
-            Aspect::Unstudied => false,
+            Aspect::Unstudied | Aspect::Assumption => false,
         }
     }
 }
@@ -107,25 +111,47 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         .map(|(aspect, text, long)| (Reason { aspect, text }, long))
         .unzip();
     let mut warnings = failed_criteria.clone();
+    let mut reasons = reasons;
+    let mut assumption = |long: String, short: String| {
+        warnings.push(long);
+        reasons.push(Reason {
+            aspect: Aspect::Assumption,
+            text: short,
+        });
+    };
     if let Some(theta) = sol.theta
         && theta.abs() > 0.45
     {
-        warnings.push(format!(
-            "theta = {theta:.3} is close to +-1/2: the pressure is nearly singular at the {} edge",
-            if theta > 0.0 { "trailing" } else { "leading" }
-        ));
+        let edge = if theta > 0.0 { "trailing" } else { "leading" };
+        assumption(
+            format!(
+                "theta = {theta:.3} is close to +-1/2: the pressure is nearly singular at the \
+                 {edge} edge"
+            ),
+            format!("theta = {theta:.3} near +-1/2: pressure nearly singular at the {edge} edge"),
+        );
     }
     let l_over_r = l / inputs.radius;
     if l_over_r > 0.1 {
-        warnings.push(format!(
-            "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
-        ));
+        assumption(
+            format!(
+                "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
+            ),
+            format!("(a+b)/R = {l_over_r:.3} > 0.1: slopes not small"),
+        );
     }
     if sol.a < 0.0 || sol.b < 0.0 {
-        warnings.push(format!(
-            "the contact zone [-a, b] = [{:.4e}, {:.4e}] m does not contain the punch tip",
-            -sol.a, sol.b
-        ));
+        assumption(
+            format!(
+                "the contact zone [-a, b] = [{:.4e}, {:.4e}] m does not contain the punch tip",
+                -sol.a, sol.b
+            ),
+            format!(
+                "contact zone x = {} to {} misses the punch tip x = 0",
+                format_si(-sol.a, "m"),
+                format_si(sol.b, "m")
+            ),
+        );
     }
     Validity {
         ok: warnings.is_empty(),

@@ -72,3 +72,23 @@ fn the_strip_model_is_said_to_be_the_exact_one() {
     insta::assert_snapshot!("validity_strip_80x24", s);
     insta::assert_snapshot!("validity_strip_120x40", status(&app, 120, 40));
 }
+
+#[test]
+fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
+    // the review: h = 10 um on the default preset cut the status mid-sentence at 80x24
+    let app = solved_with("polymer-coating.toml", |p| p.material.thickness = 10e-6);
+    let tall = status(&app, 120, 40);
+    assert!(
+        tall.contains("! wide needs (a+b)/h < 0.26 here, not 61.205"),
+        "{tall}"
+    );
+    assert!(
+        tall.contains("! contact zone x = 583 um to 1.20 mm misses the punch tip"),
+        "{tall}"
+    );
+    let small = status(&app, 80, 24);
+    assert!(
+        small.contains("! +2 more (a taller window shows them)"),
+        "{small}"
+    );
+}

@@ -44,7 +44,7 @@ pub fn lines(
 ) -> Vec<Line<'static>> {
     match output {
         Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref(), style, width),
+            Ok(p) => plane(p, out.strip_check.as_ref(), style, width, height),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
@@ -57,6 +57,7 @@ fn plane(
     check: Option<&StripCheck>,
     style: RenderOptions,
     width: usize,
+    height: usize,
 ) -> Vec<Line<'static>> {
     let s = &p.solution;
     let mu = s.inputs.friction.coefficient;
@@ -67,7 +68,8 @@ fn plane(
         .into_iter()
         .map(Line::from)
         .collect();
-    lines.extend(validity_status::lines(p, check, style, width));
+    let room = height.saturating_sub(lines.len());
+    lines.extend(validity_status::lines(p, check, style, width, room));
     lines
 }
 

@@ -71,7 +71,7 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
             groups_status::lines(&answer.output, selected, style, width, height)
         }
         Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref(), style, width),
+            Ok(p) => plane(p, out.strip_check.as_ref(), style, width, height),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
@@ -111,6 +111,7 @@ fn plane(
     check: Option<&StripCheck>,
     style: RenderOptions,
     width: usize,
+    height: usize,
 ) -> Vec<Line<'static>> {
     let s = &p.solution;
     let mut items = vec![
@@ -132,7 +133,8 @@ fn plane(
         .into_iter()
         .map(Line::from)
         .collect();
-    lines.extend(validity_status::lines(p, check, style, width));
+    let room = height.saturating_sub(lines.len());
+    lines.extend(validity_status::lines(p, check, style, width, room));
     lines
 }
 

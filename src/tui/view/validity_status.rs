@@ -10,50 +10,73 @@ use wearlab::physics::plane::validity::StripCheck;
 use crate::tui::view::status::prose;
 use crate::tui::view::theme::RenderOptions;
 
-/// The validity lines of a plane operating point, wrapped to `width`: the verdict when the model
-/// holds, the check against the strip model once it has come (how far off), then the reasons it
-/// does not hold and the other warnings (why), each after "! ".
+/// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
+/// the verdict when the model holds, the check against the strip model once it has come (how
+/// far off), then every warning in a few words (why), each after "! "; warnings that do not fit
+/// are counted ("! +2 more (a taller window shows them)"), never cut.
 pub fn lines(
     p: &OperatingPoint,
     check: Option<&StripCheck>,
     style: RenderOptions,
     width: usize,
+    room: usize,
 ) -> Vec<Line<'static>> {
     let v = &p.validity;
     let model = p.solution.model;
-    let mut texts = Vec::new();
+    let mut head = Vec::new();
     if v.ok {
-        texts.push((
-            format!(
-                "valid: (a+b)/h = {:.3}; {} model holds",
-                v.contact_width_over_thickness,
-                model.name()
-            ),
+        let where_ = if p.solution.inputs.material.thickness.is_finite() {
+            format!("(a+b)/h = {:.3}", v.contact_width_over_thickness)
+        } else {
+            "half-plane, h = inf".to_string()
+        };
+        head.push((
+            format!("valid: {where_}; {} model holds", model.name()),
             style.ok(),
         ));
     }
-    // how far off, then why: the failed criteria in a few words, the other warnings
+    // how far off, then why: every warning in a few words
     if let Some(check) = check {
         let off = matches!(check, StripCheck::Measured(d) if !d.within_tolerance());
         let look = if off { style.error() } else { style.ok() };
-        texts.push((check.describe(model), look));
+        head.push((check.describe(model), look));
     }
+    let mut lines: Vec<Line> = head
+        .into_iter()
+        .flat_map(|(text, look)| prose(&text, width, look))
+        .collect();
     // an estimate the measurement refutes is not shown beside it
     let measured = match check {
         Some(StripCheck::Measured(d)) => Some(d),
         _ => None,
     };
-    let reasons = v
+    let warnings: Vec<Vec<Line>> = v
         .reasons
         .iter()
         .filter(|r| !measured.is_some_and(|d| r.refuted_by(d)))
-        .map(|r| &r.text);
-    let others = v.warnings.iter().filter(|w| !v.failed_criteria.contains(w));
-    for w in reasons.chain(others) {
-        texts.push((format!("! {w}"), style.error()));
+        .map(|r| prose(&format!("! {}", r.text), width, style.error()))
+        .collect();
+    let total: usize = warnings.iter().map(Vec::len).sum();
+    let room = room.saturating_sub(lines.len());
+    if total <= room {
+        lines.extend(warnings.into_iter().flatten());
+        return lines;
     }
-    texts
-        .into_iter()
-        .flat_map(|(text, look)| prose(&text, width, look))
-        .collect()
+    // whole warnings while one line is left for the count of the others
+    let mut used = 1;
+    let shown = warnings
+        .iter()
+        .take_while(|w| {
+            used += w.len();
+            used <= room
+        })
+        .count();
+    let more = warnings.len() - shown;
+    lines.extend(warnings.into_iter().take(shown).flatten());
+    lines.extend(prose(
+        &format!("! +{more} more (a taller window shows them)"),
+        width,
+        style.error(),
+    ));
+    lines
 }
