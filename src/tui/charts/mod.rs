@@ -185,7 +185,7 @@ impl PlaneChart {
             },
             Self::MuStar => Def {
                 title: "mu* against load",
-                help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The block marks the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
+                help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The 'now' marker is the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
                 overlays: true,
                 build: plane::mu_star,
             },
@@ -245,7 +245,7 @@ impl SpatialChart {
             },
             Self::MuStar => Def {
                 title: "mu* against mean pressure",
-                help: "mu* against the mean pressure pbar for the punch as it is at time t, one curve: partial contact below the complete-contact load (marked 'complete'), complete contact above. The block marks the preset's pbar. Solved on the period cell while this chart is visible (without a period cell: only where contact is complete).",
+                help: "mu* against the mean pressure pbar for the punch as it is at time t, one curve: partial contact below the complete-contact load (marked 'complete'), complete contact above. The 'now' marker is the preset's pbar. Below the complete-contact load the contact set gains or loses whole grid nodes, so mu* moves in small steps: they are the grid's resolution (the grid row of the form), not physics. Solved on the period cell while this chart is visible (without a period cell: only where contact is complete).",
                 overlays: true,
                 build: spatial::mu_star,
             },
