@@ -77,6 +77,59 @@ fn round_sig(value: f64, sig: i32) -> f64 {
     (value * factor).round() / factor
 }
 
+/// Significant digits kept by `clean`: far more than any input is known to, far fewer than the
+/// 15-17 of an f64, so the last-bit noise of float arithmetic (3e9 * 1.1 = 3300000000.0000005)
+/// is rounded away.
+pub const CLEAN_DIGITS: usize = 12;
+
+/// `value` rounded to `CLEAN_DIGITS` significant digits, as the nearest f64 to that decimal (so
+/// 3e9 * 1.1 gives exactly the literal 3.3e9). Changes a value by at most half a unit in its
+/// twelfth digit (5e-12 relative); 0, infinities and NaN are returned as they are.
+pub fn clean(value: f64) -> f64 {
+    if !value.is_finite() || value == 0.0 {
+        return value;
+    }
+    // Rust's `{:.Ne}` rounds the exact binary value correctly; parsing gives the nearest f64
+    let digits = CLEAN_DIGITS - 1;
+    format!("{value:.digits$e}").parse().unwrap_or(value)
+}
+
+/// Formats `value` with an SI prefix on `unit` like `format_si`, but with every significant
+/// digit of `clean(value)` and no trailing zeros ("3.3 GPa", "200 pPa", "2e-10 1/Pa",
+/// "0.31"), for text that is read back with `parse_si` (the ranges of the sweep form).
+pub fn format_si_exact(value: f64, unit: &str) -> String {
+    let value = clean(value);
+    if !value.is_finite() || value == 0.0 {
+        return format_si(value, unit);
+    }
+    let with_unit = |text: String| {
+        if unit.is_empty() {
+            text
+        } else {
+            format!("{text} {unit}")
+        }
+    };
+    if !prefixable(unit) {
+        return with_unit(if (1e-3..1e6).contains(&value.abs()) {
+            format!("{value}")
+        } else {
+            format!("{value:e}")
+        });
+    }
+    let mut exp = 3 * (value.abs().log10() / 3.0).floor() as i32;
+    // log10 may land a hair off a power of ten: keep 1 <= |scaled| < 1000
+    if clean(scale(value.abs(), -exp)) >= 1000.0 {
+        exp += 3;
+    } else if clean(scale(value.abs(), -exp)) < 1.0 {
+        exp -= 3;
+    }
+    let scaled = clean(scale(value, -exp));
+    match prefix(exp) {
+        Some(prefix) => format!("{scaled} {prefix}{unit}"),
+        None => format!("{scaled}e{exp} {unit}"),
+    }
+}
+
 /// Whether a unit takes SI prefixes ("Pa", "m", "N/m"); "", "1/Pa" and "rad/m" read badly with
 /// them and do not.
 pub fn prefixable(unit: &str) -> bool {
@@ -151,6 +204,56 @@ mod tests {
         assert_eq!(format_si(999.96e12, "Pa"), "1.00e15 Pa");
         assert_eq!(format_si(-1.5e-20, "m"), "-15.0e-21 m");
         assert_eq!(format_si(999e12, "Pa"), "999 TPa");
+    }
+
+    #[test]
+    fn clean_removes_float_noise() {
+        // 3e9 * 1.1 is 3300000000.0000005 in f64: one nudge of E from 3 GPa
+        assert_ne!(3e9 * 1.1, 3.3e9);
+        assert_eq!(clean(3e9 * 1.1), 3.3e9);
+        // 31 linear steps of 0.01 (the nudge of mu) is 0.31000000000000005 in f64
+        assert_eq!(clean(31.0 * 0.01), 0.31);
+        assert_eq!(clean(2e-9 / 10.0), 2e-10);
+        assert_eq!(clean(0.0), 0.0);
+        assert_eq!(clean(f64::INFINITY), f64::INFINITY);
+    }
+
+    #[test]
+    fn exact_text_reads_back() {
+        assert_eq!(format_si_exact(3e9 * 1.1, "Pa"), "3.3 GPa");
+        assert_eq!(format_si_exact(2e-9 / 10.0, "m"), "200 pm");
+        assert_eq!(format_si_exact(1e-9, "m"), "1 nm");
+        assert_eq!(format_si_exact(1000.0, "N/m"), "1 kN/m");
+        assert_eq!(format_si_exact(2e-10, "1/Pa"), "2e-10 1/Pa");
+        assert_eq!(
+            format_si_exact(-std::f64::consts::PI, "rad"),
+            "-3.14159265359 rad"
+        );
+        assert_eq!(format_si_exact(0.31, ""), "0.31");
+        assert_eq!(format_si_exact(f64::INFINITY, "m"), "inf");
+        assert_eq!(format_si_exact(3e30, "Pa"), "3e30 Pa");
+        for (v, unit) in [(3.3e9, "Pa"), (2e-10, "m"), (123.456, "N/m"), (1e13, "Pa")] {
+            assert_eq!(
+                parse_si(&format_si_exact(v, unit), unit),
+                Ok(v),
+                "{v} {unit}"
+            );
+        }
+    }
+
+    proptest::proptest! {
+        // 256 cases in `cargo test`; run once by hand with PROPTEST_CASES=100000
+        #[test]
+        fn clean_moves_a_value_by_at_most_half_a_twelfth_digit(
+            mantissa in 1.0f64..10.0, exp in -30i32..30, negative: bool,
+        ) {
+            let value = if negative { -mantissa } else { mantissa } * 10f64.powi(exp);
+            let cleaned = clean(value);
+            // half a unit in the 12th significant digit is 5e-12 of the leading digit's place,
+            // at most 5e-12 relative; 1e-15 allows for the f64 rounding of the result
+            proptest::prop_assert!(((cleaned - value) / value).abs() <= 5e-12 + 1e-15);
+            proptest::prop_assert_eq!(clean(cleaned), cleaned);
+        }
     }
 
     #[test]

@@ -4,7 +4,7 @@
 //! the registry and one of `STEPS`.
 
 use wearlab::preset::{Key, Preset};
-use wearlab::units::format_si;
+use wearlab::units::{clean, format_si};
 
 /// How Left/Right change a number.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -132,8 +132,13 @@ pub fn set_text(preset: &Preset, row: &Row, text: &str) -> Result<(Preset, Chang
     Ok(changed(preset, next, row))
 }
 
-/// The nudged value (`up` or down, `large` for Shift).
+/// The nudged value (`up` or down, `large` for Shift), rounded to `units::clean`'s significant
+/// digits so that a saved preset and the form read "3.3 GPa", not 3300000000.0000005.
 pub fn nudged(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
+    clean(nudged_raw(preset, row, up, large))
+}
+
+fn nudged_raw(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
     let v = get(preset, row);
     let dir = if up { 1.0 } else { -1.0 };
     let linear = |step: f64| {

@@ -9,7 +9,7 @@ use wearlab::explore::{Axis, QuantityKey};
 use wearlab::physics::Spacing;
 use wearlab::physics::limits;
 use wearlab::preset::Key;
-use wearlab::units::parse_si;
+use wearlab::units::{format_si_exact, parse_si};
 
 use crate::tui::app::{App, Command, Mode};
 use crate::tui::explore::{View, curve_spec, map_spec, parameters, quantities};
@@ -37,8 +37,8 @@ impl Draft {
     fn of(axis: &Axis) -> Draft {
         Draft {
             key: axis.key,
-            from: limits::show(axis.range.min),
-            to: limits::show(axis.range.max),
+            from: format_si_exact(axis.range.min, axis.key.param().unit),
+            to: format_si_exact(axis.range.max, axis.key.param().unit),
             points: axis.range.points.to_string(),
             log: axis.range.spacing == Spacing::Log,
         }

@@ -116,6 +116,28 @@ fn s_starts_an_empty_prompt_and_never_overwrites_without_asking() {
 }
 
 #[test]
+fn a_preset_saved_after_a_nudge_holds_the_clean_value() {
+    // polymer-coating.toml has E = 3.0e9; one nudge is x1.1 (form::STEPS), and 3e9 * 1.1 is
+    // 3300000000.0000005 in f64: the file must say 3.3 GPa as the student reads it on the form
+    let mut app = app("polymer-coating.toml");
+    select(&mut app, "E", None);
+    press(&mut app, KeyCode::Right);
+    assert_eq!(app.doc.preset.material.youngs_modulus, 3.3e9);
+    let dir = tempfile::tempdir().unwrap();
+    let target = SaveTarget {
+        path: dir.path().join("nudged.toml"),
+        create_folder: false,
+    };
+    let saved = crate::tui::effects::save(target, Box::new(app.doc.preset.clone()), false);
+    assert!(matches!(saved, Msg::Saved(_, _, Ok(()))), "{saved:?}");
+    let text = std::fs::read_to_string(dir.path().join("nudged.toml")).unwrap();
+    assert!(
+        text.lines().any(|l| l == "youngs_modulus = 3300000000.0"),
+        "{text}"
+    );
+}
+
+#[test]
 fn e_exports_the_visible_chart_and_reports_where() {
     let mut app = solved("polymer-coating.toml");
     let cmds = press(&mut app, KeyCode::Char('e'));
