@@ -262,3 +262,36 @@ fn every_number_has_a_default_range_around_its_value() {
         }
     }
 }
+
+#[test]
+fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution() {
+    // the x axis of the dimensionless view: (a+b)/h at each point, against the contact width
+    // a + b of the solution at that point divided by the h swept there
+    let p = preset("coating-thickness-sweep.toml");
+    let spec = CurveSpec {
+        axis: axis(&p, "material.thickness", [1e-5, 1e-3], 3, Spacing::Log),
+        quantity: QuantityKey::parse("mu_star", &p).unwrap(),
+        models: vec![Model::Wide, Model::Narrow],
+    };
+    let c = curve(&p, &spec, &AtomicBool::new(false)).unwrap();
+    assert_eq!(c.group.unwrap().symbol(), "(a+b)/h");
+    let width = QuantityKey::parse("contact_width", &p).unwrap();
+    for s in &c.series {
+        for (k, h) in c.x.iter().enumerate() {
+            let point = solve_at(&p, &[spec.axis], &[*h], s.model).unwrap();
+            let expected = width.value(&point).unwrap() / h;
+            let got = s.group[k].unwrap();
+            assert!(
+                (got - expected).abs() <= 1e-14 * expected,
+                "{got} vs {expected}"
+            );
+        }
+    }
+    // an input without a group keeps its dimensional axis
+    let e = CurveSpec {
+        axis: axis(&p, "material.youngs_modulus", [1e9, 1e10], 3, Spacing::Log),
+        ..spec
+    };
+    let c = curve(&p, &e, &AtomicBool::new(false)).unwrap();
+    assert!(c.group.is_none() && c.series[0].group.iter().all(Option::is_none));
+}

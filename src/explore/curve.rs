@@ -12,6 +12,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 
 use crate::explore::axis::Axis;
+use crate::explore::groups;
 use crate::explore::locate::{between, bisect};
 use crate::explore::point::{self, Point};
 use crate::explore::quantity::QuantityKey;
@@ -51,6 +52,25 @@ pub struct Series {
     pub holds: Vec<Option<bool>>,
     /// Where the verdict changes, in increasing x.
     pub changes: Vec<Change>,
+    /// The swept input's group (`Curve::group`) at each x, from this model's solution there; None
+    /// where there is no solution or the curve has no group.
+    pub group: Vec<Option<f64>>,
+}
+
+impl Series {
+    /// The group at parameter value `at` (the axis's unit), linear between the two neighbouring
+    /// points of `x` (the curve's), for a mark placed on the group axis; None outside the curve or
+    /// next to a point without a group.
+    pub fn group_at(&self, x: &[f64], at: f64) -> Option<f64> {
+        let k = (1..x.len()).find(|&k| (x[k - 1].min(x[k])..=x[k - 1].max(x[k])).contains(&at))?;
+        let (g0, g1) = (self.group[k - 1]?, self.group[k]?);
+        let t = if x[k] == x[k - 1] {
+            0.0
+        } else {
+            (at - x[k - 1]) / (x[k] - x[k - 1])
+        };
+        Some(g0 + t * (g1 - g0))
+    }
 }
 
 /// A computed curve.
@@ -62,6 +82,9 @@ pub struct Curve {
     pub current: f64,
     /// One series per model, in the order of the spec.
     pub series: Vec<Series>,
+    /// The dimensionless group the swept input is the natural variable of
+    /// (`groups::of_input`), evaluated at every point into `Series::group`.
+    pub group: Option<QuantityKey>,
 }
 
 /// The verdict at a point: the model holds (plane), the contact is complete (spatial).
@@ -97,8 +120,8 @@ pub fn solve_at(
     point::solve(&preset).map_err(|e| e.to_string())
 }
 
-/// The quantity at a point and the verdict there.
-type Answer = (Result<f64, String>, Option<bool>);
+/// The quantity at a point, the verdict there and the swept input's group.
+type Answer = (Result<f64, String>, Option<bool>, Option<f64>);
 
 /// Computes the curve; None when `cancel` was set before it finished.
 pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<Curve> {
@@ -108,6 +131,7 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
     };
     let x = spec.axis.values();
     let axes = [spec.axis];
+    let group = groups::of_input(preset, spec.axis.key.param().key);
     let jobs: Vec<(usize, f64)> = (0..models.len())
         .flat_map(|m| x.iter().map(move |v| (m, *v)))
         .collect();
@@ -118,8 +142,12 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
                 return None;
             }
             Some(match solve_at(preset, &axes, &[v], models[m]) {
-                Ok(p) => (spec.quantity.value(&p), Some(holds(&p))),
-                Err(why) => (Err(why), None),
+                Ok(p) => (
+                    spec.quantity.value(&p),
+                    Some(holds(&p)),
+                    group.and_then(|g| g.value(&p).ok()),
+                ),
+                Err(why) => (Err(why), None, None),
             })
         })
         .collect();
@@ -134,12 +162,14 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
             y: own.iter().map(|a| a.0.clone()).collect(),
             holds,
             changes,
+            group: own.iter().map(|a| a.2).collect(),
         });
     }
     Some(Curve {
         current: preset.get(spec.axis.key).ok()?,
         x,
         series,
+        group,
     })
 }
 

@@ -4,9 +4,11 @@
 //! those of `docs/physics/plane.md` and `docs/physics/spatial.md`.
 
 use crate::explore::quantities::QUANTITIES;
+use crate::explore::quantity::QuantityKey;
 use crate::physics::plane::validity::Validity;
 use crate::physics::plane::{PlaneInputs, PlaneSolution};
 use crate::physics::spatial::{HarmonicSolution, SpatialSolution};
+use crate::preset::{Preset, Problem};
 
 /// One group's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -153,4 +155,22 @@ pub fn pressure_ratio_sum(s: &SpatialSolution) -> f64 {
             )
         })
         .sum()
+}
+
+/// The group a swept input is the natural variable of, for the sweep chart's x axis in the
+/// dimensionless view: plane h -> (a+b)/h, P -> P/(m R), k -> k m, mu -> mu chi, R -> (a+b)/R;
+/// spatial h -> kh of the first harmonic. None for an input without one (E, nu, tau0, V, pbar, a
+/// harmonic's A, wx, wy, and h on the spatial problem without harmonics): its axis stays
+/// dimensional.
+pub fn of_input(preset: &Preset, input: &str) -> Option<QuantityKey> {
+    let name = match (preset.problem, input) {
+        (Problem::Plane, "material.thickness") => "validity.contact_width_over_thickness",
+        (Problem::Plane, "plane.load") => "load_number",
+        (Problem::Plane, "wear.coefficient") => "wear_number",
+        (Problem::Plane, "friction.coefficient") => "friction_number",
+        (Problem::Plane, "plane.radius") => "width_over_radius",
+        (Problem::Spatial, "material.thickness") => "harmonics.0.kh",
+        _ => return None,
+    };
+    QuantityKey::parse(name, preset).ok()
 }

@@ -230,7 +230,7 @@ pub fn reopen(app: &mut App) {
 pub fn toggle_dimensionless(app: &mut App) {
     app.explore.dimensionless = !app.explore.dimensionless;
     app.say(if app.explore.dimensionless {
-        "dimensionless view: status in groups, v/M offer pure numbers (? defines them)"
+        "dimensionless view: status, sweep x and v/M choices in groups (? defines them)"
     } else {
         "dimensionless view off"
     });

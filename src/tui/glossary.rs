@@ -58,7 +58,7 @@ static SPATIAL_ALL: LazyLock<Vec<Entry>> =
 const GROUPS_HEAD: Entry = (
     "D (groups)",
     "",
-    "the dimensionless view: the status shows the problem's dimensionless groups instead of dimensional values, its title says 'in dimensionless groups'; D again goes back. The groups not defined above:",
+    "the dimensionless view: the status shows the problem's dimensionless groups instead of dimensional values, its title says 'in dimensionless groups'; the sweep chart's x axis is the swept input's group ((a+b)/h for h, P/(m R) for P, k m for k, mu chi for mu, (a+b)/R for R, kh1 for the spatial h), the cursor also reading the input with its unit; other inputs keep their unit, '(dimensional: no group)'; D again goes back. The groups not defined above:",
 );
 
 /// The spatial view's one group that is not a quantity of its own.

@@ -237,7 +237,7 @@ pub const BINDINGS: [Binding; 21] = [
     ),
     binding(
         &[(ch('D'), Action::Dimensionless)],
-        "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*, mu*-mu; spatial mu*, mu*-mu, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the swept inputs on the axes keep their units; D again goes back",
+        "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*, mu*-mu; spatial mu*, mu*-mu, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the sweep chart's x axis becomes the swept input's group, computed at each point (plane h -> (a+b)/h, P -> P/(m R), k -> k m, mu -> mu chi, R -> (a+b)/R; spatial h -> kh1), each model's curve through its own points in the sweep's order, the cursor also reading the input with its unit along the preset's model; an input without a group keeps its unit, the axis title saying '(dimensional: no group)'; the map's axes keep their units; D again goes back",
         ("D", "groups", "", 7), None,
     ),
     binding(

@@ -2,7 +2,11 @@
 //! (`explore::curve`). One curve per plane model, the preset's first (it sets the y range); where
 //! a model's own validity check fails (the spatial problem: where the contact is not complete)
 //! its curve is drawn dim, and each place where the verdict changes is marked on the x axis. The
-//! current value of the parameter is marked "now".
+//! current value of the parameter is marked "now". In the dimensionless view (`D`) the x axis is
+//! the swept input's group (`Curve::group`, computed by the library at each point), each curve
+//! drawn through its points in the sweep's order (a parametric curve where the group is not
+//! monotone), the marks placed at the group interpolated between the neighbouring points; an
+//! input without a group keeps its dimensional axis, titled so.
 
 use wearlab::explore::curve::{Curve, CurveSpec};
 use wearlab::physics::Spacing;
@@ -22,6 +26,33 @@ pub fn x_axis(key: Key, spacing: Spacing) -> Axis {
     }
 }
 
+/// The x axis in the dimensionless view: the group's symbol, log when the sweep is log; or, for
+/// an input without a group, its dimensional axis titled "(dimensional: no group)".
+fn group_axis(spec: &CurveSpec, curve: &Curve) -> Axis {
+    let mut axis = x_axis(spec.axis.key, spec.axis.range.spacing);
+    match curve.group {
+        Some(g) => axis.label = g.symbol(),
+        None => axis.label = format!("{} (dimensional: no group)", axis.label),
+    }
+    if curve.group.is_some() {
+        axis.unit = "";
+    }
+    axis
+}
+
+/// The swept input against the group along the preset's curve (x: group, y: the input), for the
+/// cursor readout to give the input's value at a group; None without a group.
+pub fn input_along_group(curve: &Curve) -> Option<Series> {
+    curve.group?;
+    let s = curve.series.first()?;
+    Some(Series {
+        name: String::new(),
+        points: (0..curve.x.len())
+            .filter_map(|k| Some((s.group[k]?, curve.x[k])))
+            .collect(),
+    })
+}
+
 /// The legend name of the dim parts.
 pub fn dim_label(problem: Problem) -> &'static str {
     match problem {
@@ -31,18 +62,43 @@ pub fn dim_label(problem: Problem) -> &'static str {
 }
 
 /// The figure of a computed curve.
-pub fn figure(problem: Problem, mu: f64, spec: &CurveSpec, curve: &Curve) -> Figure {
+pub fn figure(
+    problem: Problem,
+    mu: f64,
+    spec: &CurveSpec,
+    curve: &Curve,
+    dimensionless: bool,
+) -> Figure {
     let q = spec.quantity;
+    let grouped = dimensionless && curve.group.is_some();
     let symbol = q.symbol();
     let mut series = Vec::new();
     let mut dim = Vec::new();
-    let mut x_marks = vec![Mark {
-        at: curve.current,
-        label: "now".into(),
-    }];
+    let mut x_marks = Vec::new();
     for (i, s) in curve.series.iter().enumerate() {
         let model = s.model.map(|m| m.name());
-        let point = |k: usize| s.y[k].as_ref().ok().map(|y| (curve.x[k], *y));
+        // the x of a point or of a mark: the input's value, or in groups the model's own group
+        let x_at = |at: f64| {
+            if grouped {
+                s.group_at(&curve.x, at)
+            } else {
+                Some(at)
+            }
+        };
+        let x_of = |k: usize| {
+            if grouped {
+                s.group[k]
+            } else {
+                Some(curve.x[k])
+            }
+        };
+        let point = |k: usize| Some((x_of(k)?, *s.y[k].as_ref().ok()?));
+        if i == 0 {
+            x_marks.extend(x_at(curve.current).map(|at| Mark {
+                at,
+                label: "now".into(),
+            }));
+        }
         series.push(Series {
             name: match model {
                 Some(m) => format!("{symbol} {m}"),
@@ -66,13 +122,15 @@ pub fn figure(problem: Problem, mu: f64, spec: &CurveSpec, curve: &Curve) -> Fig
                 _ => {}
             }
         }
-        x_marks.extend(s.changes.iter().map(|c| Mark {
-            at: c.at,
-            label: format!(
-                "{}{}",
-                model.map(|m| format!("{m} ")).unwrap_or_default(),
-                if c.holds_after { "ok>" } else { "fails>" }
-            ),
+        x_marks.extend(s.changes.iter().filter_map(|c| {
+            Some(Mark {
+                at: x_at(c.at)?,
+                label: format!(
+                    "{}{}",
+                    model.map(|m| format!("{m} ")).unwrap_or_default(),
+                    if c.holds_after { "ok>" } else { "fails>" }
+                ),
+            })
         }));
     }
     let quantity = q.quantity();
@@ -81,7 +139,12 @@ pub fn figure(problem: Problem, mu: f64, spec: &CurveSpec, curve: &Curve) -> Fig
         unit: quantity.unit,
         scale: Scale::Linear,
     };
-    let mut plot = Plot::new(x_axis(spec.axis.key, spec.axis.range.spacing), y, series);
+    let x = if dimensionless {
+        group_axis(spec, curve)
+    } else {
+        x_axis(spec.axis.key, spec.axis.range.spacing)
+    };
+    let mut plot = Plot::new(x, y, series);
     plot.focus = 1;
     // in increasing x, so that each label can sit at its own line
     x_marks.sort_by(|a, b| a.at.total_cmp(&b.at));

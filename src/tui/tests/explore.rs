@@ -166,6 +166,23 @@ fn sweep_screens() {
 }
 
 #[test]
+fn sweep_screens_in_groups() {
+    let mut app = app("coating-thickness-sweep.toml");
+    let cmds = app.start();
+    settle(&mut app, cmds.clone());
+    explored(&mut app, &cmds);
+    press(&mut app, KeyCode::Char('D'));
+    let big = screen(&app, 120, 40, PLAIN);
+    assert!(big.contains("(a+b)/h") && !big.contains("h [m]"), "{big}");
+    insta::assert_snapshot!("sweep_groups_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("sweep_groups_120x40", big);
+    press(&mut app, KeyCode::Char('x'));
+    let cursor = screen(&app, 120, 40, PLAIN);
+    assert!(cursor.contains("cursor (a+b)/h =") && cursor.contains("(strip: h = "));
+    insta::assert_snapshot!("sweep_groups_cursor_120x40", cursor);
+}
+
+#[test]
 fn map_screens() {
     let mut app = app("friction-or-wear-map.toml");
     let cmds = app.start();

@@ -11,11 +11,13 @@ use ratatui::style::Style;
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 use wearlab::engine::explore::Explored;
+use wearlab::explore::groups::of_input;
 use wearlab::explore::{Opening, opening};
+use wearlab::units::format_si;
 
 use crate::tui::app::App;
-use crate::tui::charts::range::frames;
-use crate::tui::charts::readout::readout as read;
+use crate::tui::charts::range::{self, frames};
+use crate::tui::charts::readout::{at, readout as read};
 use crate::tui::charts::{Figure, Plot, sweep};
 use crate::tui::explore::{View, shown, wanted};
 use crate::tui::sweep_form::{Field, SweepForm};
@@ -32,7 +34,14 @@ pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
         return None;
     };
     let preset = &answer.request.preset;
-    match sweep::figure(preset.problem, preset.friction.coefficient, spec, curve) {
+    let dimensionless = app.explore.dimensionless;
+    match sweep::figure(
+        preset.problem,
+        preset.friction.coefficient,
+        spec,
+        curve,
+        dimensionless,
+    ) {
         Figure::Plots(p) => Some(p),
         Figure::Map(_) => None,
     }
@@ -77,7 +86,12 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         Opening::Curve(c) => format!(
             "sweep: {} against {}",
             c.quantity.symbol(),
-            c.axis.key.symbol()
+            match of_input(&app.doc.preset, c.axis.key.param().key) {
+                Some(g) if app.explore.dimensionless => {
+                    format!("{} (swept: {})", g.symbol(), c.axis.key.symbol())
+                }
+                _ => c.axis.key.symbol(),
+            }
         ),
         Opening::Map(m) => format!(
             "regime map: {} over {} and {}",
@@ -162,8 +176,12 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
         View::Sweep => {
             let cursor = app.ui.cursor?;
             let plots = sweep_plots(app)?;
-            let mut items = read(&frames(&plots, &[], false), cursor);
+            let frames = frames(&plots, &[], false);
+            let mut items = read(&frames, cursor);
             items[0] = format!("cursor {}:", items[0]);
+            if app.explore.dimensionless {
+                items.extend(input_at(app, &frames, cursor));
+            }
             Some(items)
         }
         View::Map => {
@@ -175,6 +193,33 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
             regime::readout(spec, map, app.explore.cell?)
         }
     }
+}
+
+/// In the dimensionless view, the swept input's value with its unit at the cursor's group, read
+/// along the preset's curve (the first point of the sweep there, where the group is not
+/// monotone): "(strip: h = 85.8 um)".
+fn input_at(app: &App, frames: &[range::Frame], cursor: f64) -> Option<String> {
+    let (answer, _) = shown(app)?;
+    let (Opening::Curve(spec), Explored::Curve(curve)) = (&answer.request.job, &answer.explored)
+    else {
+        return None;
+    };
+    let along = sweep::input_along_group(curve)?;
+    let f = frames.first()?;
+    let xp = f.x[0] + cursor.clamp(0.0, 1.0) * (f.x[1] - f.x[0]);
+    let input = sweep::x_axis(spec.axis.key, spec.axis.range.spacing);
+    let v = at(&along, xp, f.plot.x.scale, input.scale)?;
+    let model = curve
+        .series
+        .first()?
+        .model
+        .map(|m| format!("{}: ", m.name()));
+    Some(format!(
+        "({}{} = {})",
+        model.unwrap_or_default(),
+        input.label,
+        format_si(v, input.unit)
+    ))
 }
 
 /// The form of `v` and `M`, over the chart.
