@@ -62,14 +62,25 @@ impl Series {
     /// points of `x` (the curve's), for a mark placed on the group axis; None outside the curve or
     /// next to a point without a group.
     pub fn group_at(&self, x: &[f64], at: f64) -> Option<f64> {
-        let k = (1..x.len()).find(|&k| (x[k - 1].min(x[k])..=x[k - 1].max(x[k])).contains(&at))?;
-        let (g0, g1) = (self.group[k - 1]?, self.group[k]?);
+        let (k, g0, g1) = self.bracket(x, at)?;
         let t = if x[k] == x[k - 1] {
             0.0
         } else {
             (at - x[k - 1]) / (x[k] - x[k - 1])
         };
         Some(g0 + t * (g1 - g0))
+    }
+
+    /// Whether the group grows with the parameter between the two points of `x` around `at`
+    /// (a mark's "beyond" then points the same way on the group axis).
+    pub fn group_rises_at(&self, x: &[f64], at: f64) -> Option<bool> {
+        let (k, g0, g1) = self.bracket(x, at)?;
+        Some((g1 > g0) == (x[k] > x[k - 1]))
+    }
+
+    fn bracket(&self, x: &[f64], at: f64) -> Option<(usize, f64, f64)> {
+        let k = (1..x.len()).find(|&k| (x[k - 1].min(x[k])..=x[k - 1].max(x[k])).contains(&at))?;
+        Some((k, self.group[k - 1]?, self.group[k]?))
     }
 }
 

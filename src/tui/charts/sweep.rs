@@ -128,7 +128,13 @@ pub fn figure(
                 label: format!(
                     "{}{}",
                     model.map(|m| format!("{m} ")).unwrap_or_default(),
-                    if c.holds_after { "ok>" } else { "fails>" }
+                    // "beyond" is towards larger x: on a falling group, leftwards
+                    match (c.holds_after, !grouped || s.group_rises_at(&curve.x, c.at)?) {
+                        (true, true) => "ok>",
+                        (false, true) => "fails>",
+                        (true, false) => "<ok",
+                        (false, false) => "<fails",
+                    }
                 ),
             })
         }));
