@@ -376,4 +376,28 @@ impl StripCheck {
             }
         }
     }
+
+    /// The same in at most 46 columns where a deviation is outside the tolerances, for a status
+    /// too small for the long line and the reasons: "off exact strip: width 227 %, mu*-mu 12 %"
+    /// ("est. off ..." for an estimate). None where `describe` is the only form.
+    pub fn describe_short(&self) -> Option<String> {
+        let short = |x: f64| {
+            let percent = 100.0 * x;
+            if percent >= 10.0 {
+                format!("{percent:.0} %")
+            } else {
+                format!("{percent:.1} %")
+            }
+        };
+        let (lead, d) = match self {
+            StripCheck::Measured(d) if !d.within_tolerance() => ("off exact strip", d),
+            StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),
+            _ => return None,
+        };
+        Some(format!(
+            "{lead}: width {}, mu*-mu {}",
+            short(d.contact_width),
+            short(d.mu_star_minus_mu)
+        ))
+    }
 }

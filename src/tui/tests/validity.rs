@@ -86,9 +86,15 @@ fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
         tall.contains("! contact zone x = 583 um to 1.20 mm misses the punch tip"),
         "{tall}"
     );
+    // at 80x24 the measurement takes its short form so that the first reason still fits
     let small = status(&app, 80, 24);
+    assert!(small.contains("off exact strip: width 227 %"), "{small}");
     assert!(
-        small.contains("! +2 more (a taller window shows them)"),
+        small.contains("! wide needs (a+b)/h < 0.26 here, not 61.205"),
+        "{small}"
+    );
+    assert!(
+        small.contains("! +1 more (a taller window shows them)"),
         "{small}"
     );
 }

@@ -35,16 +35,6 @@ pub fn lines(
             style.ok(),
         ));
     }
-    // how far off, then why: every warning in a few words
-    if let Some(check) = check {
-        let off = matches!(check, StripCheck::Measured(d) if !d.within_tolerance());
-        let look = if off { style.error() } else { style.ok() };
-        head.push((check.describe(model), look));
-    }
-    let mut lines: Vec<Line> = head
-        .into_iter()
-        .flat_map(|(text, look)| prose(&text, width, look))
-        .collect();
     // an estimate the measurement refutes is not shown beside it
     let measured = match check {
         Some(StripCheck::Measured(d)) => Some(d),
@@ -57,6 +47,23 @@ pub fn lines(
         .map(|r| prose(&format!("! {}", r.text), width, style.error()))
         .collect();
     let total: usize = warnings.iter().map(Vec::len).sum();
+    // how far off, then why: every warning in a few words; the short form of how far off when
+    // the long one would crowd the warnings out
+    if let Some(check) = check {
+        let off = matches!(check, StripCheck::Measured(d) if !d.within_tolerance());
+        let look = if off { style.error() } else { style.ok() };
+        let long = check.describe(model);
+        let crowded = head.len() + prose(&long, width, look).len() + total > room;
+        let text = match check.describe_short() {
+            Some(short) if crowded => short,
+            _ => long,
+        };
+        head.push((text, look));
+    }
+    let mut lines: Vec<Line> = head
+        .into_iter()
+        .flat_map(|(text, look)| prose(&text, width, look))
+        .collect();
     let room = room.saturating_sub(lines.len());
     if total <= room {
         lines.extend(warnings.into_iter().flatten());
