@@ -155,6 +155,10 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.ui.mode = Mode::Help(0);
             Vec::new()
         }
+        Action::About => {
+            app.ui.mode = Mode::About(0);
+            Vec::new()
+        }
         Action::Quit => quit(app),
     }
 }

@@ -71,6 +71,8 @@ pub enum Mode {
     Choosing(usize),
     /// Reading the help, scrolled by this many lines.
     Help(u16),
+    /// Reading the preset's name and whole description (`i`), scrolled by this many lines.
+    About(u16),
     /// Choosing a preset to open.
     Picker {
         /// The presets offered.

@@ -58,6 +58,8 @@ pub enum Action {
     Dimensionless,
     /// Undo the last change.
     Undo,
+    /// Show the preset's name and whole description.
+    About,
     /// Show the help.
     Help,
     /// Quit (asks when there are unsaved edits).
@@ -129,7 +131,8 @@ pub struct Binding {
     /// What they do, for the help and README.
     pub help: &'static str,
     /// The footer item: keys, word, a shorter word for narrow terminals, and the order in which
-    /// items take their shorter word when the footer does not fit (0: never).
+    /// items take their shorter word when the footer does not fit (0: never); no keys: none
+    /// (the help and README still list the binding).
     pub footer: (&'static str, &'static str, &'static str, u8),
     /// The problem the binding applies to (None: both).
     pub only: Option<Problem>,
@@ -157,7 +160,7 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 21] = [
+pub const BINDINGS: [Binding; 22] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
@@ -261,6 +264,11 @@ pub const BINDINGS: [Binding; 21] = [
         ("u", "undo", "", 5), None,
     ),
     binding(
+        &[(ch('i'), Action::About)],
+        "i", "about this preset: its name and whole description (Up/Down, PgUp/PgDn scroll; Esc closes)",
+        ("", "", "", 0), None,
+    ),
+    binding(
         &[(ch('?'), Action::Help)],
         "?", "this help: keys, the chart, the status symbols",
         ("?", "help", "help", 0), None,
@@ -282,7 +290,8 @@ pub fn lookup(ev: &KeyEvent) -> Option<(&'static Binding, Action)> {
     })
 }
 
-/// What a key does in a prompt (typing a value, a choice list, the help, the picker, the save
+/// What a key does in a prompt (typing a value, a choice list, the help or the preset's
+/// description, the picker, the save
 /// prompt, a yes/no question).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PromptAction {
@@ -317,7 +326,7 @@ pub enum Prompt {
     Text,
     /// Choosing from a list (a choice row, the picker).
     List,
-    /// Reading the help.
+    /// Reading the help or the preset's description.
     Help,
     /// A yes/no question.
     Question,
@@ -375,7 +384,7 @@ pub fn is_ctrl_c(ev: &KeyEvent) -> bool {
 pub fn footer(problem: Problem, width: usize) -> String {
     let items: Vec<_> = BINDINGS
         .iter()
-        .filter(|b| b.only.is_none_or(|p| p == problem))
+        .filter(|b| b.only.is_none_or(|p| p == problem) && !b.footer.0.is_empty())
         .map(|b| b.footer)
         .collect();
     let render = |shortened: u8, sep: &str| -> String {

@@ -152,13 +152,12 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         Mode::Help(scroll) => {
             // scrolling stops at the end of the text on the last drawn screen
             let last = crate::tui::view::popups::help_last(app, app.ui.screen);
-            app.ui.mode = match keys::prompt_action(Prompt::Help, &key) {
-                Some(PromptAction::Up) => Mode::Help(scroll.min(last).saturating_sub(1)),
-                Some(PromptAction::Down) => Mode::Help(scroll.saturating_add(1).min(last)),
-                Some(PromptAction::PageUp) => Mode::Help(scroll.min(last).saturating_sub(10)),
-                Some(PromptAction::PageDown) => Mode::Help(scroll.saturating_add(10).min(last)),
-                _ => Mode::Normal,
-            };
+            app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::Help);
+            Vec::new()
+        }
+        Mode::About(scroll) => {
+            let last = crate::tui::view::popups::about_last(app, app.ui.screen);
+            app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::About);
             Vec::new()
         }
         Mode::Picker { entries, selected } => match keys::prompt_action(Prompt::List, &key) {
@@ -320,5 +319,17 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
             app.complain(why);
             Vec::new()
         }
+    }
+}
+
+/// The scroll of a text window (the help, the preset's description) after a key, stopping at
+/// `last`; None closes it.
+fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
+    match keys::prompt_action(Prompt::Help, key)? {
+        PromptAction::Up => Some(scroll.min(last).saturating_sub(1)),
+        PromptAction::Down => Some(scroll.saturating_add(1).min(last)),
+        PromptAction::PageUp => Some(scroll.min(last).saturating_sub(10)),
+        PromptAction::PageDown => Some(scroll.saturating_add(10).min(last)),
+        _ => None,
     }
 }

@@ -3,6 +3,7 @@
 use ratatui::crossterm::event::KeyCode;
 
 use super::*;
+use crate::tui::app::Mode;
 use crate::tui::charts::{Chart, PlaneChart, SpatialChart};
 use crate::tui::view::popups::help_lines;
 
@@ -212,4 +213,34 @@ fn cursor_pin_expand_log_y_and_ascii_markers() {
     let cmds = history.start();
     settle(&mut history, cmds);
     both("mode_ascii_markers", &history, ASCII);
+}
+
+#[test]
+fn i_shows_the_whole_description_and_scrolls_it() {
+    let mut app = app("contact-lost.toml");
+    app.doc.path = Some("presets/contact-lost.toml".into());
+    // with no message, the bottom line names the preset beside its file
+    app.ui.message = None;
+    let s = screen(&app, 120, 40, PLAIN);
+    assert!(
+        s.contains(
+            "Running-in: partial contact worn to complete contact (presets/contact-lost.toml)"
+        ),
+        "{s}"
+    );
+    press(&mut app, KeyCode::Char('i'));
+    assert_eq!(app.ui.mode, Mode::About(0));
+    insta::assert_snapshot!("about_80x24", screen(&app, 80, 24, PLAIN));
+    insta::assert_snapshot!("about_120x40", screen(&app, 120, 40, PLAIN));
+    // on a short screen the text scrolls, and stops where its last line is at the bottom
+    app.ui.screen = ratatui::layout::Rect::new(0, 0, 80, 12);
+    press(&mut app, KeyCode::PageDown);
+    press(&mut app, KeyCode::PageDown);
+    let last = crate::tui::view::popups::about_last(&app, app.ui.screen);
+    assert!(last > 0);
+    assert_eq!(app.ui.mode, Mode::About(last));
+    let s = screen(&app, 80, 12, PLAIN);
+    assert!(s.contains("rising to 1 at 62.6 s"), "{s}");
+    press(&mut app, KeyCode::Esc);
+    assert_eq!(app.ui.mode, Mode::Normal);
 }

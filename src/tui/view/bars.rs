@@ -17,7 +17,7 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         Mode::Normal => None,
         Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
         Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
-        Mode::Help(_) => Some(Prompt::Help),
+        Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
         Mode::Form(_) => Some(Prompt::Form),
         Mode::ConfirmOverwrite(_)
         | Mode::ConfirmExport(_)
@@ -52,10 +52,10 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
             Some(m) => (m.text.clone(), Style::default()),
             None => {
                 let doc = &app.doc;
-                let name = doc
-                    .path
-                    .as_ref()
-                    .map_or(doc.preset.name.clone(), |p| p.display().to_string());
+                let name = match &doc.path {
+                    Some(p) => format!("{} ({})", doc.preset.name, p.display()),
+                    None => doc.preset.name.clone(),
+                };
                 let edited = if doc.dirty { " (edited)" } else { "" };
                 (format!("{name}{edited}"), Style::default())
             }

@@ -110,6 +110,7 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     bars::draw_footer(app, style, frame, areas.footer);
     match &app.ui.mode {
         Mode::Help(scroll) => popups::help(app, *scroll, style, frame, area),
+        Mode::About(scroll) => popups::about(app, *scroll, style, frame, area),
         Mode::Picker { entries, selected } => {
             popups::picker(entries, *selected, style, frame, area)
         }

@@ -68,30 +68,40 @@ fn help_rect(screen: Rect) -> Rect {
     centered(above, 100, above.height)
 }
 
-/// The help's lines in its window on `screen`, and the largest scroll that still fills it.
-fn help_layout(app: &App, style: RenderOptions, screen: Rect) -> (Vec<Line<'static>>, u16) {
+/// A text window's lines (from `lines_of` a text width) on `screen`, and the largest scroll
+/// that still fills it.
+fn window_layout(
+    lines_of: impl Fn(usize) -> Vec<Line<'static>>,
+    screen: Rect,
+) -> (Vec<Line<'static>>, u16) {
     let rect = help_rect(screen);
-    let lines = help_lines(app, style, rect.width.saturating_sub(2) as usize);
+    let lines = lines_of(rect.width.saturating_sub(2) as usize);
     let last = lines
         .len()
         .saturating_sub(rect.height.saturating_sub(2) as usize);
     (lines, u16::try_from(last).unwrap_or(u16::MAX))
 }
 
+const PLAIN: RenderOptions = RenderOptions {
+    ascii: false,
+    color: false,
+    truecolor: false,
+};
+
 /// The largest scroll of the help on `screen`: scrolling stops there.
 pub fn help_last(app: &App, screen: Rect) -> u16 {
-    let plain = RenderOptions {
-        ascii: false,
-        color: false,
-        truecolor: false,
-    };
-    help_layout(app, plain, screen).1
+    window_layout(|w| help_lines(app, PLAIN, w), screen).1
 }
 
-/// The help window, scrolled by `scroll` lines.
-pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let rect = help_rect(area);
-    // the screen under it is cleared whole: no border of it beside the help's own
+/// A text window over everything but the message and key lines, scrolled by `scroll` lines.
+fn text_window(
+    title: &str,
+    (lines, last): (Vec<Line<'static>>, u16),
+    scroll: u16,
+    frame: &mut Frame,
+    area: Rect,
+) {
+    // the screen under it is cleared whole: no border of it beside the window's own
     frame.render_widget(
         Clear,
         Rect {
@@ -99,18 +109,53 @@ pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, are
             ..area
         },
     );
-    let (lines, last) = help_layout(app, style, area);
     let more = if scroll < last { " ↓ more " } else { "" };
     let block = Block::default()
         .borders(Borders::ALL)
-        .title(" help ")
+        .title(format!(" {title} "))
         .title_bottom(Line::from(more).right_aligned());
     frame.render_widget(
         Paragraph::new(lines)
             .block(block)
             .scroll((scroll.min(last), 0)),
-        rect,
+        help_rect(area),
     );
+}
+
+/// The help window, scrolled by `scroll` lines.
+pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let layout = window_layout(|w| help_lines(app, style, w), area);
+    text_window("help", layout, scroll, frame, area);
+}
+
+/// The preset's name, its file, and its whole description wrapped at spaces to `width`, a
+/// blank line before "Look at:" and "Try:".
+pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
+    let doc = &app.doc;
+    let mut lines = vec![Line::styled(doc.preset.name.clone(), style.heading())];
+    if let Some(path) = &doc.path {
+        lines.extend(
+            wrap(&path.display().to_string(), width)
+                .into_iter()
+                .map(Line::from),
+        );
+    }
+    for paragraph in reflow(&doc.preset.description).lines() {
+        lines.push(Line::from(""));
+        lines.extend(wrap(paragraph, width).into_iter().map(Line::from));
+    }
+    lines
+}
+
+/// The largest scroll of the preset's description on `screen`.
+pub fn about_last(app: &App, screen: Rect) -> u16 {
+    window_layout(|w| about_lines(app, PLAIN, w), screen).1
+}
+
+/// The preset's name and whole description (`i`), scrolled by `scroll` lines.
+pub fn about(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, area: Rect) {
+    let layout = window_layout(|w| about_lines(app, style, w), area);
+    text_window("about this preset", layout, scroll, frame, area);
 }
 
 /// A preset description as paragraphs: its hard line breaks are joined, except before
