@@ -232,15 +232,21 @@ fn i_shows_the_whole_description_and_scrolls_it() {
     assert_eq!(app.ui.mode, Mode::About(0));
     insta::assert_snapshot!("about_80x24", screen(&app, 80, 24, PLAIN));
     insta::assert_snapshot!("about_120x40", screen(&app, 120, 40, PLAIN));
-    // on a short screen the text scrolls, and stops where its last line is at the bottom
-    app.ui.screen = ratatui::layout::Rect::new(0, 0, 80, 12);
+    // a description longer than the screen scrolls, and stops where its last line is at the
+    // bottom
+    let long = format!(
+        "{}\nTry: the end of it.",
+        app.doc.preset.description.repeat(2)
+    );
+    app.doc.preset.description = long;
+    app.ui.screen = ratatui::layout::Rect::new(0, 0, 80, 24);
     press(&mut app, KeyCode::PageDown);
     press(&mut app, KeyCode::PageDown);
     let last = crate::tui::view::popups::about_last(&app, app.ui.screen);
     assert!(last > 0);
     assert_eq!(app.ui.mode, Mode::About(last));
-    let s = screen(&app, 80, 12, PLAIN);
-    assert!(s.contains("rising to 1 at 62.6 s"), "{s}");
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("Try: the end of it."), "{s}");
     press(&mut app, KeyCode::Esc);
     assert_eq!(app.ui.mode, Mode::Normal);
 }
