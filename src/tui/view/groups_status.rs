@@ -11,9 +11,8 @@ use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status::{pack, prose, visible};
+use crate::tui::view::status::{pack, prose, visible, with_validity};
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::validity_status;
 
 /// The status panel's title: it says when the values are groups.
 pub fn title(app: &App) -> &'static str {
@@ -64,13 +63,7 @@ fn plane(
     let items: Vec<String> = (groups::plane(s, &p.validity).iter())
         .map(|g| item(g, mu))
         .collect();
-    let mut lines: Vec<Line> = pack(&items, width, "")
-        .into_iter()
-        .map(Line::from)
-        .collect();
-    let room = height.saturating_sub(lines.len());
-    lines.extend(validity_status::lines(p, check, style, width, room));
-    lines
+    with_validity(&items, p, check, style, width, height)
 }
 
 fn spatial(

@@ -129,10 +129,20 @@ fn plane(
         ),
         format!("I-J residual {:.1e}", p.energy.residual),
     ]);
-    let mut lines: Vec<Line> = pack(&items, width, "")
-        .into_iter()
-        .map(Line::from)
-        .collect();
+    with_validity(&items, p, check, style, width, height)
+}
+
+/// A plane status: `items` packed into lines, then the validity lines in the room left (the
+/// dimensional status and the dimensionless view share it).
+pub fn with_validity(
+    items: &[String],
+    p: &OperatingPoint,
+    check: Option<&StripCheck>,
+    style: RenderOptions,
+    width: usize,
+    height: usize,
+) -> Vec<Line<'static>> {
+    let mut lines: Vec<Line> = pack(items, width, "").into_iter().map(Line::from).collect();
     let room = height.saturating_sub(lines.len());
     lines.extend(validity_status::lines(p, check, style, width, room));
     lines
