@@ -49,15 +49,9 @@ fn draw(
     c.0.get() - before
 }
 
-const COLOUR_256: RenderOptions = RenderOptions {
-    ascii: false,
-    color: true,
-    truecolor: false,
-};
-
 const TRUECOLOR: RenderOptions = RenderOptions {
     truecolor: true,
-    ..COLOUR_256
+    ..COLOUR
 };
 
 /// Bytes of a full redraw and of each frame while time plays, at 120x40.
@@ -88,7 +82,7 @@ fn playing_the_pressure_map_writes_under_60_kb_a_second() {
         "jgh-egg-box.toml",
         "contact-lost.toml",
     ] {
-        let (full, frames) = playing(file, 20, COLOUR_256);
+        let (full, frames) = playing(file, 20, COLOUR);
         let worst = frames.iter().max().unwrap();
         assert!(
             worst * per_second < 60_000,
@@ -116,10 +110,10 @@ fn a_full_redraw_of_a_chart_screen_is_under_8_kb_and_nothing_changed_writes_noth
         let cmds = app.start();
         settle(&mut app, cmds);
         let (mut t, c) = terminal(120, 40);
-        let full = draw(&mut t, &c, &app, COLOUR_256);
+        let full = draw(&mut t, &c, &app, COLOUR);
         assert!(full < 8_000, "{file} chart {chart}: {full} bytes");
         // the same screen again: the colour and attribute resets and the hidden cursor only
-        let again = draw(&mut t, &c, &app, COLOUR_256);
+        let again = draw(&mut t, &c, &app, COLOUR);
         assert!(again <= 32, "{file}: {again}");
     }
 }

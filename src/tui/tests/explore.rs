@@ -10,18 +10,6 @@ use super::*;
 use crate::tui::app::Mode;
 use crate::tui::explore::View;
 
-const ASCII: RenderOptions = RenderOptions {
-    ascii: true,
-    color: false,
-    truecolor: false,
-};
-
-const COLOUR: RenderOptions = RenderOptions {
-    ascii: false,
-    color: true,
-    truecolor: false,
-};
-
 /// Computes the explorer's requests among `commands` as its thread would (every map pass, then
 /// the end) and delivers the answers.
 fn explored(app: &mut App, commands: &[Command]) {

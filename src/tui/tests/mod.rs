@@ -126,3 +126,16 @@ const PLAIN: RenderOptions = RenderOptions {
     color: false,
     truecolor: false,
 };
+
+const ASCII: RenderOptions = RenderOptions {
+    ascii: true,
+    color: false,
+    truecolor: false,
+};
+
+/// Colour in the 256-colour palette (no truecolor).
+const COLOUR: RenderOptions = RenderOptions {
+    ascii: false,
+    color: true,
+    truecolor: false,
+};

@@ -10,18 +10,6 @@ use super::*;
 use crate::tui::charts::{Chart, Figure, SpatialChart};
 use crate::tui::view::popups::help_lines;
 
-const ASCII: RenderOptions = RenderOptions {
-    ascii: true,
-    color: false,
-    truecolor: false,
-};
-
-const COLOUR: RenderOptions = RenderOptions {
-    ascii: false,
-    color: true,
-    truecolor: false,
-};
-
 fn on(app: &App, chart: SpatialChart) -> App {
     let mut app = app.clone();
     app.ui.chart = Chart::Spatial(chart);

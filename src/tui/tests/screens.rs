@@ -7,12 +7,6 @@ use crate::tui::app::Mode;
 use crate::tui::charts::{Chart, PlaneChart, SpatialChart};
 use crate::tui::view::popups::help_lines;
 
-const ASCII: RenderOptions = RenderOptions {
-    ascii: true,
-    color: false,
-    truecolor: false,
-};
-
 #[test]
 fn plane_screens() {
     let mut app = solved("polymer-coating.toml");
