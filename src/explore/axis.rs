@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 
 use crate::physics::{Spacing, SweepRange, limits};
 use crate::preset::{Key, Preset};
-use crate::units::parse_si;
+use crate::units::{clean, parse_si};
 
 /// A varied parameter and its range.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,7 +128,9 @@ impl Axis {
 
     /// The range the explorer offers first for `key`: a decade either side of the value (of the
     /// parameter's typical magnitude when the value is 0), log, clamped to the limit; a phase
-    /// runs linearly over pi either side.
+    /// runs linearly over pi either side. Both ends are `units::clean` (at most 12 significant
+    /// digits), so the form's text and the `--vary` command read back to this very range; below
+    /// an excluded maximum (nu < 1/2) the top end is a thousandth under it (0.4995).
     pub fn default_for(preset: &Preset, key: Key) -> Result<Axis, String> {
         let param = key.param();
         let (Some(limit), Some(typical)) = (param.limit(), param.typical()) else {
@@ -143,17 +145,15 @@ impl Axis {
             } else {
                 typical
             };
-            ((centre / 10.0).max(limit.min), centre * 10.0, Spacing::Log)
+            (centre / 10.0, centre * 10.0, Spacing::Log)
         };
-        let lo = lo.max(limit.min);
-        // the largest allowed value at or below `hi` (nu excludes 1/2)
-        let mut hi = hi.min(limit.max);
-        for _ in 0..4 {
-            if limit.accepts(hi) {
-                break;
-            }
-            hi -= hi.abs() * f64::EPSILON;
-        }
+        let lo = clean(lo).max(limit.min);
+        let hi = clean(hi).min(limit.max);
+        let hi = if limit.accepts(hi) {
+            hi
+        } else {
+            clean(limit.max - 1e-3 * limit.max.abs())
+        };
         Axis::new(preset, key, [lo, hi], CURVE_POINTS, spacing)
     }
 }

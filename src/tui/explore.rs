@@ -281,7 +281,10 @@ pub fn not_here(app: &App) -> String {
     )
 }
 
-fn vary(axis: &Axis) -> String {
+/// `--vary KEY=FROM:TO:N[:log]` for `axis`: the ends in SI units without a unit, each the
+/// shortest text that reads back to the same number (`limits::show`), so the command runs the
+/// sweep on screen.
+pub fn vary(axis: &Axis) -> String {
     let r = &axis.range;
     let log = if r.spacing == wearlab::physics::Spacing::Log {
         ":log"

@@ -181,3 +181,52 @@ fn map_screens() {
     press(&mut app, KeyCode::Char('x'));
     insta::assert_snapshot!("map_cursor_120x40", screen(&app, 120, 40, ASCII));
 }
+
+/// The significant digits of a number as written ("0.0035" 2, "2.5e-10" 2, "-3.14159265359" 12).
+fn significant_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or("");
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    digits.trim_start_matches('0').trim_end_matches('0').len()
+}
+
+#[test]
+fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
+    // every numeric input of every bundled preset: the v form opens on a range that Enter
+    // accepts as shown, and e names `--vary` ends that read back to that very sweep, in at most
+    // 12 significant digits (units::CLEAN_DIGITS) - no 0.4999999999999999 nor 1.0000000000000002e-6
+    for b in wearlab::preset::BUNDLED {
+        let mut app = app(b.file);
+        let count = crate::tui::explore::parameters(&app.doc.preset).len();
+        for n in 0..count {
+            press(&mut app, KeyCode::Char('v'));
+            for _ in 0..n {
+                press(&mut app, KeyCode::Right);
+            }
+            let Mode::Form(form) = &app.ui.mode else {
+                panic!("{}: {:?}", b.file, app.ui.mode)
+            };
+            let draft = form.axes[0].clone();
+            press(&mut app, KeyCode::Enter);
+            assert_eq!(
+                app.ui.mode,
+                Mode::Normal,
+                "{} {}: from {} to {}: {:?}",
+                b.file,
+                draft.key,
+                draft.from,
+                draft.to,
+                app.ui.message
+            );
+            let shown = app.explore.curve.as_ref().unwrap().axis;
+            press(&mut app, KeyCode::Char('e'));
+            let said = app.ui.message.clone().unwrap().text;
+            let vary = said.split("--vary ").nth(1).expect(&said);
+            let back = wearlab::explore::Axis::parse(&app.doc.preset, vary, 1).unwrap();
+            assert_eq!(back, shown, "{}: {vary}", b.file);
+            let (_, range) = vary.split_once('=').unwrap();
+            for end in range.split(':').take(2) {
+                assert!(significant_digits(end) <= 12, "{}: {vary}", b.file);
+            }
+        }
+    }
+}
