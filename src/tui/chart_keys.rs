@@ -5,7 +5,7 @@ use wearlab::engine::Output;
 
 use crate::tui::app::{App, Command, HeatScale, Pin};
 use crate::tui::charts::contact::Fields;
-use crate::tui::charts::range::{frames, plotted};
+use crate::tui::charts::range::{Frame, frames, plotted};
 use crate::tui::charts::{Figure, Plot, Scale};
 use crate::tui::keys::Action;
 use crate::tui::view::shown;
@@ -24,12 +24,16 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
                 }
                 None => {
                     app.say("cursor: [ ] move it a data point, { } ten; the status reads the curves there");
-                    Some(0.5)
+                    let plots = plots(app);
+                    Some(start(&frames(&plots, &pins(app), false)))
                 }
             };
         }
         Action::MoveCursor(points) => match app.ui.cursor {
-            Some(at) => app.ui.cursor = Some(moved(&plots(app), at, points)),
+            Some(at) => {
+                let plots = plots(app);
+                app.ui.cursor = Some(moved(&frames(&plots, &pins(app), false), at, points));
+            }
             None => app.say("x shows the cursor first"),
         },
         Action::Pin => pin(app),
@@ -71,10 +75,38 @@ fn plots(app: &App) -> Vec<Plot> {
     }
 }
 
+/// The pinned plots of the visible chart, as the view draws them (the sweep view has none): the
+/// cursor's fraction of the x range means the same x as on screen.
+fn pins(app: &App) -> Vec<&[Plot]> {
+    if app.explore.view.is_some() {
+        return Vec::new();
+    }
+    let pins = app.ui.pins_of(app.ui.chart);
+    pins.into_iter().map(|p| p.plots.as_slice()).collect()
+}
+
+/// Where `x` puts the cursor (a fraction of the x range): at the operating point when the chart
+/// marks one (the current load or time, the sweep's "now": the first read is the student's own
+/// point), else in the middle.
+pub fn start(frames: &[Frame]) -> f64 {
+    let Some(f) = frames.first() else {
+        return 0.5;
+    };
+    let plot = f.plot;
+    let marker = plot.markers.iter().flat_map(|m| m.points.first()).next();
+    let now = plot.x_marks.iter().find(|m| m.label == "now").map(|m| m.at);
+    let [lo, hi] = f.x;
+    marker
+        .map(|p| p.0)
+        .or(now)
+        .and_then(|x| plot.x.scale.to_plot(x))
+        .map_or(0.5, |x| ((x - lo) / (hi - lo)).clamp(0.0, 1.0))
+}
+
 /// The cursor `points` data points of the first curve away from `at` (a fraction of the x
 /// range), or `points` hundredths of the range where there is no curve.
-pub fn moved(plots: &[Plot], at: f64, points: i32) -> f64 {
-    let Some(f) = frames(plots, &[], false).into_iter().next() else {
+pub fn moved(frames: &[Frame], at: f64, points: i32) -> f64 {
+    let Some(f) = frames.first() else {
         return (at + points as f64 / 100.0).clamp(0.0, 1.0);
     };
     let [lo, hi] = f.x;

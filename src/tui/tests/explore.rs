@@ -230,3 +230,37 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
         }
     }
 }
+
+#[test]
+fn the_cursor_starts_at_the_operating_point() {
+    use crate::tui::charts::{Chart, PlaneChart, SpatialChart};
+    // mu* against load: at the preset's load, P = 5 kN/m, where the curve of the preset's model
+    // reads the operating point's own mu* (the status line "mu* = 0.299822 (mu 0.3)")
+    let mut app = app("polymer-coating.toml");
+    app.ui.chart = Chart::Plane(PlaneChart::MuStar);
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    press(&mut app, KeyCode::Char('x'));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(
+        s.contains("cursor P = 5.00 kN/m:") && s.contains("mu* wide = 0.299822"),
+        "{s}"
+    );
+    assert!(s.contains("mu* = 0.299822 (mu 0.3)"), "{s}");
+    // a sweep: at the swept input's value, h = 100 um (coating-thickness-sweep.toml's thickness)
+    let mut sweep = self::app("coating-thickness-sweep.toml");
+    let cmds = sweep.start();
+    settle(&mut sweep, cmds.clone());
+    explored(&mut sweep, &cmds);
+    press(&mut sweep, KeyCode::Char('x'));
+    let s = screen(&sweep, 120, 40, PLAIN);
+    assert!(s.contains("cursor h = 100 um:"), "{s}");
+    // amplitudes against time: at the preset's time, t = 0 (dispersion.toml)
+    let mut history = self::app("dispersion.toml");
+    history.ui.chart = Chart::Spatial(SpatialChart::History);
+    let cmds = history.start();
+    settle(&mut history, cmds);
+    press(&mut history, KeyCode::Char('x'));
+    let s = screen(&history, 120, 40, PLAIN);
+    assert!(s.contains("cursor t = 0 s:"), "{s}");
+}
