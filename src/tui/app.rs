@@ -79,6 +79,8 @@ pub enum Mode {
         entries: Vec<PickerEntry>,
         /// The highlighted one.
         selected: usize,
+        /// Lines of its description scrolled off the top (PgUp/PgDn).
+        scroll: u16,
     },
     /// Typing a file name to save to.
     SaveAs(String),

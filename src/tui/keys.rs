@@ -324,8 +324,10 @@ pub enum PromptAction {
 pub enum Prompt {
     /// Typing text (a value, a file name).
     Text,
-    /// Choosing from a list (a choice row, the picker).
+    /// Choosing from a list (a choice row).
     List,
+    /// Choosing a preset, its description scrolling.
+    Picker,
     /// Reading the help or the preset's description.
     Help,
     /// A yes/no question.
@@ -336,7 +338,7 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 26] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 34] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -346,6 +348,14 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 26] = [
     (Prompt::List, ch('j'), PromptAction::Down, ""),
     (Prompt::List, key(KeyCode::Enter), PromptAction::Accept, "⏎ take"),
     (Prompt::List, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
+    (Prompt::Picker, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
+    (Prompt::Picker, ch('k'), PromptAction::Up, ""),
+    (Prompt::Picker, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Picker, ch('j'), PromptAction::Down, ""),
+    (Prompt::Picker, key(KeyCode::PageUp), PromptAction::PageUp, "PgUp PgDn text"),
+    (Prompt::Picker, key(KeyCode::PageDown), PromptAction::PageDown, ""),
+    (Prompt::Picker, key(KeyCode::Enter), PromptAction::Accept, "⏎ open"),
+    (Prompt::Picker, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Help, key(KeyCode::Up), PromptAction::Up, "↑↓ PgUp PgDn scroll"),
     (Prompt::Help, key(KeyCode::Down), PromptAction::Down, ""),
     (Prompt::Help, key(KeyCode::PageUp), PromptAction::PageUp, ""),

@@ -27,6 +27,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             app.ui.mode = Mode::Picker {
                 entries,
                 selected: 0,
+                scroll: 0,
             };
             Vec::new()
         }
@@ -160,7 +161,11 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::About);
             Vec::new()
         }
-        Mode::Picker { entries, selected } => match keys::prompt_action(Prompt::List, &key) {
+        Mode::Picker {
+            entries,
+            selected,
+            scroll,
+        } => match keys::prompt_action(Prompt::Picker, &key) {
             Some(PromptAction::Accept) => {
                 app.ui.mode = Mode::Normal;
                 let Some(entry) = entries.get(selected).cloned() else {
@@ -183,9 +188,26 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 app.ui.mode = Mode::Normal;
                 Vec::new()
             }
+            Some(PromptAction::PageUp | PromptAction::PageDown) => {
+                // the description scrolls, stopping where its last line is at the bottom
+                let last = crate::tui::view::picker::last(&entries, selected, app.ui.screen);
+                let scroll = scrolled(&key, scroll, last).unwrap_or(scroll);
+                app.ui.mode = Mode::Picker {
+                    entries,
+                    selected,
+                    scroll,
+                };
+                Vec::new()
+            }
             action => {
-                let selected = moved(selected, entries.len(), action);
-                app.ui.mode = Mode::Picker { entries, selected };
+                let moved = moved(selected, entries.len(), action);
+                // another preset's description starts at its top
+                let scroll = if moved == selected { scroll } else { 0 };
+                app.ui.mode = Mode::Picker {
+                    entries,
+                    selected: moved,
+                    scroll,
+                };
                 Vec::new()
             }
         },

@@ -230,6 +230,7 @@ fn ctrl_c_quits_from_every_mode() {
         Mode::Picker {
             entries: vec![entry.clone()],
             selected: 0,
+            scroll: 0,
         },
         Mode::SaveAs("my lab".into()),
         Mode::ConfirmOverwrite(target),
@@ -254,5 +255,45 @@ fn ctrl_c_quits_from_every_mode() {
             ctrl(&mut edited, 'c');
         }
         assert_eq!(ctrl(&mut edited, 'c'), vec![Command::Quit], "{mode:?}");
+    }
+}
+
+#[test]
+fn the_picker_shows_every_description_whole() {
+    // every line of each bundled preset's wrapped description is on screen at one of the
+    // scroll positions PgDn reaches; at 120x40 each fits without scrolling
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+        panic!()
+    };
+    for (w, h) in [(80u16, 24u16), (120, 40)] {
+        let mut app = app("polymer-coating.toml");
+        app.ui.screen = ratatui::layout::Rect::new(0, 0, w, h);
+        update(&mut app, Msg::PresetsListed(entries.clone()));
+        for (i, entry) in entries.iter().enumerate() {
+            let mut seen: Vec<String> = Vec::new();
+            for _ in 0..20 {
+                let s = screen(&app, w, h, PLAIN);
+                seen.extend(
+                    s.lines()
+                        .map(|l| l.trim_matches('"').trim_matches(['│', ' ']).to_string()),
+                );
+                press(&mut app, KeyCode::PageDown);
+            }
+            let width = (w.min(100) - 2) as usize;
+            for line in crate::tui::view::picker::lines(entry, width) {
+                let line = line.to_string();
+                assert!(
+                    seen.iter().any(|s| s == line.trim_end()),
+                    "{w}x{h} {}: not shown: {line}",
+                    entry.source
+                );
+            }
+            let last = crate::tui::view::picker::last(&entries, i, app.ui.screen);
+            assert!(w < 120 || last == 0, "{}: scrolls at 120x40", entry.source);
+            press(&mut app, KeyCode::Down);
+            // the next preset's description starts at its top
+            let next = matches!(app.ui.mode, Mode::Picker { scroll: 0, .. });
+            assert!(next || i + 1 == entries.len());
+        }
     }
 }

@@ -181,6 +181,7 @@ fn every_prompt_says_how_to_leave_it() {
     for p in [
         Prompt::Text,
         Prompt::List,
+        Prompt::Picker,
         Prompt::Help,
         Prompt::Question,
         Prompt::Form,

@@ -16,7 +16,8 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
     match mode {
         Mode::Normal => None,
         Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
-        Mode::Choosing(_) | Mode::Picker { .. } => Some(Prompt::List),
+        Mode::Choosing(_) => Some(Prompt::List),
+        Mode::Picker { .. } => Some(Prompt::Picker),
         Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
         Mode::Form(_) => Some(Prompt::Form),
         Mode::ConfirmOverwrite(_)

@@ -12,6 +12,7 @@ pub mod groups_status;
 pub mod heatmap;
 pub mod layout;
 pub mod legend;
+pub mod picker;
 pub mod popups;
 pub mod raster;
 pub mod regime;
@@ -111,9 +112,11 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     match &app.ui.mode {
         Mode::Help(scroll) => popups::help(app, *scroll, style, frame, area),
         Mode::About(scroll) => popups::about(app, *scroll, style, frame, area),
-        Mode::Picker { entries, selected } => {
-            popups::picker(entries, *selected, style, frame, area)
-        }
+        Mode::Picker {
+            entries,
+            selected,
+            scroll,
+        } => picker::draw(entries, *selected, *scroll, style, frame, area),
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
         Mode::Form(form) => explore::form(form, style, frame, area),
         _ => {}

@@ -1,12 +1,12 @@
 //! The windows drawn over the main screen: the help (keys, the chart, the status symbols), the
-//! preset picker and a choice row's list.
+//! preset's description (`i`) and a choice row's list (the preset picker is `picker`).
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
-use crate::tui::app::{App, PickerEntry};
+use crate::tui::app::App;
 use crate::tui::view::layout::centered;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
@@ -60,7 +60,7 @@ pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'st
 
 /// Where the help goes on a screen: over everything but the message and key lines, the whole
 /// width up to 100 columns (so that no border of the screen under it shows beside it).
-fn help_rect(screen: Rect) -> Rect {
+pub(super) fn help_rect(screen: Rect) -> Rect {
     let above = Rect {
         height: screen.height.saturating_sub(2),
         ..screen
@@ -140,7 +140,15 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
                 .map(Line::from),
         );
     }
-    for paragraph in reflow(&doc.preset.description).lines() {
+    lines.extend(paragraphs(&doc.preset.description, width));
+    lines
+}
+
+/// A preset's description wrapped at spaces to `width`, each paragraph after a blank line (a
+/// new paragraph at "Look at:" and "Try:").
+pub(super) fn paragraphs(description: &str, width: usize) -> Vec<Line<'static>> {
+    let mut lines = Vec::new();
+    for paragraph in reflow(description).lines() {
         lines.push(Line::from(""));
         lines.extend(wrap(paragraph, width).into_iter().map(Line::from));
     }
@@ -160,7 +168,7 @@ pub fn about(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, ar
 
 /// A preset description as paragraphs: its hard line breaks are joined, except before
 /// "Look at:" and "Try:", which start lines of their own.
-fn reflow(text: &str) -> String {
+pub(super) fn reflow(text: &str) -> String {
     let mut out = String::new();
     for line in text.trim().lines().map(str::trim) {
         if line.starts_with("Look at") || line.starts_with("Try") {
@@ -171,53 +179,6 @@ fn reflow(text: &str) -> String {
         out.push_str(line);
     }
     out
-}
-
-/// The preset picker: the list, and the highlighted preset's source and description.
-pub fn picker(
-    entries: &[PickerEntry],
-    selected: usize,
-    style: RenderOptions,
-    frame: &mut Frame,
-    area: Rect,
-) {
-    let rect = centered(area, 78, 22);
-    frame.render_widget(Clear, rect);
-    let block = Block::default()
-        .borders(Borders::ALL)
-        .title(" open a preset (Enter opens, Esc closes) ");
-    let inner = block.inner(rect);
-    frame.render_widget(block, rect);
-    let list_height = (entries.len() as u16).min(inner.height / 2);
-    let [list, desc] =
-        Layout::vertical([Constraint::Length(list_height), Constraint::Min(3)]).areas(inner);
-    let offset = selected.saturating_sub(list_height.saturating_sub(1) as usize);
-    let lines: Vec<Line> = entries
-        .iter()
-        .enumerate()
-        .map(|(i, e)| {
-            let mark = if e.preset.is_err() { "!" } else { " " };
-            let text = format!("{mark}{}", e.title);
-            if i == selected {
-                Line::styled(text, style.selected())
-            } else {
-                Line::from(text)
-            }
-        })
-        .collect();
-    frame.render_widget(Paragraph::new(lines).scroll((offset as u16, 0)), list);
-    if let Some(e) = entries.get(selected) {
-        let text = match &e.preset {
-            Ok(p) => format!("{}\n{}", e.source, reflow(&p.description)),
-            Err(why) => format!("{}\ncannot be opened: {why}", e.source),
-        };
-        frame.render_widget(
-            Paragraph::new(text)
-                .wrap(Wrap { trim: true })
-                .block(Block::default().borders(Borders::TOP)),
-            desc,
-        );
-    }
 }
 
 /// The list of a choice row, over the form.
