@@ -60,7 +60,7 @@ fn no_data_cell_covered(app: &App, w: u16, h: u16, style: RenderOptions) {
     let Ok(Figure::Plots(plots)) = app.ui.chart.build(answer) else {
         return;
     };
-    let chart = areas(Rect::new(0, 0, w, h), false).unwrap().chart;
+    let chart = areas(Rect::new(0, 0, w, h), false, false).unwrap().chart;
     let inner = Rect::new(chart.x + 1, chart.y + 1, chart.width - 2, chart.height - 2);
     let frames = frames(&plots, &[], false);
     let extras = Extras::default();

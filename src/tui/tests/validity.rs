@@ -10,7 +10,7 @@ use crate::tui::view::layout;
 fn status(app: &App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     terminal.draw(|f| view(app, PLAIN, f)).unwrap();
-    let area = layout::areas(terminal.backend().buffer().area, false)
+    let area = layout::areas(terminal.backend().buffer().area, false, false)
         .unwrap()
         .status;
     let buffer = terminal.backend().buffer();

@@ -47,6 +47,10 @@ pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
     }
 }
 
+/// What the chart says instead of the preset's "Look at:" paragraph where the paragraph does not
+/// fit whole.
+pub const LESSON_ELSEWHERE: &str = "Look at: i shows the preset's notes on this view";
+
 /// The preset's "Look at:" paragraph, when the view shows what its `[explore]` section opens on.
 fn lesson(app: &App) -> Option<String> {
     let want = wanted(app)?;
@@ -120,14 +124,16 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let mut inner = block.inner(area);
     frame.render_widget(block, area);
     if let Some(text) = lesson(app) {
-        let lines = wrap(&text, inner.width as usize);
-        // a quarter of a tall chart's height, one line of a short one (f gives it more room)
-        let most = if inner.height >= 20 {
-            inner.height / 4
+        let whole = wrap(&text, inner.width as usize);
+        // a quarter of a tall chart's height; where the paragraph needs more, one line saying
+        // where it is whole (never a sentence cut in the middle)
+        let most = (inner.height / 4).max(1) as usize;
+        let lines = if whole.len() <= most {
+            whole
         } else {
-            1
+            wrap(LESSON_ELSEWHERE, inner.width as usize)
         };
-        let n = (lines.len() as u16).min(most);
+        let n = lines.len().min(most) as u16;
         inner.height -= n;
         for (i, l) in lines.iter().take(n as usize).enumerate() {
             frame.buffer_mut().set_stringn(

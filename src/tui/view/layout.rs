@@ -15,7 +15,8 @@
 //!
 //! The form is 30 columns wide below 100 columns, 34 from there; the status takes 8 rows below
 //! 32 rows, 10 from there. An expanded chart (`f`) takes the form's columns too, and below 32
-//! rows the status gives it three of its rows. Popups (help, picker, choices) are centred over
+//! rows the status gives it three of its rows; the status under a sweep or a map (`v`, `M`) gives
+//! it two, for its legend and axes. Popups (help, picker, choices) are centred over
 //! everything.
 
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -38,9 +39,9 @@ pub struct Areas {
     pub footer: Rect,
 }
 
-/// The regions of a screen (the chart expanded or not), or None when it is smaller than
-/// `MIN_SIZE`.
-pub fn areas(area: Rect, expanded: bool) -> Option<Areas> {
+/// The regions of a screen (the chart expanded or not; the status folded under a sweep or a
+/// map or not), or None when it is smaller than `MIN_SIZE`.
+pub fn areas(area: Rect, expanded: bool, folded: bool) -> Option<Areas> {
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
         return None;
     }
@@ -57,10 +58,12 @@ pub fn areas(area: Rect, expanded: bool) -> Option<Areas> {
     };
     let [form, right] =
         Layout::horizontal([Constraint::Length(form_width), Constraint::Min(40)]).areas(main);
-    let status_height = match (area.height >= 32, expanded) {
-        (true, _) => 10,
-        (false, false) => 8,
-        (false, true) => 5,
+    let status_height = match (area.height >= 32, expanded, folded) {
+        (true, _, _) => 10,
+        (false, true, _) => 5,
+        // four lines: the operating point's a, b, mu* (and the cursor's readout when on)
+        (false, false, true) => 6,
+        (false, false, false) => 8,
     };
     let [chart, status] =
         Layout::vertical([Constraint::Min(8), Constraint::Length(status_height)]).areas(right);

@@ -90,7 +90,8 @@ pub fn shown(app: &App) -> Shown<'_> {
 /// Draws the whole screen.
 pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     let area = frame.area();
-    let Some(mut areas) = layout::areas(area, app.ui.expanded) else {
+    let folded = app.explore.view.is_some();
+    let Some(mut areas) = layout::areas(area, app.ui.expanded, folded) else {
         too_small(frame, area);
         return;
     };

@@ -26,7 +26,7 @@ const BAR: u16 = 10;
 /// The letter of a line and what it means.
 pub fn line_key(kind: LineKind) -> (char, &'static str) {
     match kind {
-        LineKind::ThetaZero => ('0', "theta = 0 line (theta > 0: friction wins; < 0: wear)"),
+        LineKind::ThetaZero => ('0', "theta = 0 line (> 0: friction wins, < 0: wear)"),
         LineKind::Validity(m) if m.name() == "wide" => ('W', "wide model's validity limit"),
         LineKind::Validity(_) => ('N', "narrow (Winkler) model's validity limit"),
         LineKind::CompleteContact => ('C', "complete contact lost"),
@@ -73,7 +73,16 @@ pub fn draw(
         .iter()
         .filter(|l| !l.segments.is_empty())
         .collect();
-    let legend = 1 + lines_used.len() as u16;
+    // each line's meaning wrapped beside its letter (never cut mid-word on a narrow chart)
+    let text_width = (area.width as usize).saturating_sub(2);
+    let meanings: Vec<(char, Vec<String>)> = lines_used
+        .iter()
+        .map(|l| {
+            let (glyph, what) = line_key(l.kind);
+            (glyph, crate::tui::view::wrap(what, text_width))
+        })
+        .collect();
+    let legend = 1 + meanings.iter().map(|(_, w)| w.len() as u16).sum::<u16>();
     let h = area.height.saturating_sub(2 + legend).max(3);
     let w = area.width - LEFT - BAR - 1;
     let (x0, y0) = (area.x + LEFT, area.y);
@@ -234,20 +243,17 @@ pub fn draw(
     let mut y = y0 + h + 2;
     let words = format!("colour: {}   + now", bt.title);
     buf.set_stringn(area.x, y, words, area.width as usize, Style::default());
-    for line in &lines_used {
-        y += 1;
-        if y >= area.y + area.height {
-            break;
+    for (glyph, wrapped) in &meanings {
+        for (k, text) in wrapped.iter().enumerate() {
+            y += 1;
+            if y >= area.y + area.height {
+                return;
+            }
+            if k == 0 {
+                buf.set_string(area.x, y, glyph.to_string(), ink);
+            }
+            buf.set_stringn(area.x + 2, y, text, text_width, Style::default());
         }
-        let (glyph, what) = line_key(line.kind);
-        buf.set_string(area.x, y, glyph.to_string(), ink);
-        buf.set_stringn(
-            area.x + 2,
-            y,
-            what,
-            area.width as usize - 2,
-            Style::default(),
-        );
     }
 }
 
