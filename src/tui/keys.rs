@@ -266,7 +266,7 @@ pub const BINDINGS: [Binding; 22] = [
     binding(
         &[(ch('i'), Action::About)],
         "i", "about this preset: its name and whole description (Up/Down, PgUp/PgDn scroll; Esc closes)",
-        ("", "", "", 0), None,
+        ("i", "about", "", 5), None,
     ),
     binding(
         &[(ch('?'), Action::Help)],

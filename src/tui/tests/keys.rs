@@ -160,19 +160,19 @@ fn footers_fit_and_name_every_key_of_the_problem() {
     // gives the others)
     assert_eq!(
         footer(Problem::Plane, 80),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 80),
-        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Plane, 120),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 120),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u i ? help q quit"
     );
 }
 
