@@ -81,7 +81,9 @@ pub struct Plot {
     /// Shaded x ranges.
     pub shaded: Vec<Shade>,
     /// Parts of curves drawn dim (where the model's own validity check fails), each with the
-    /// index of the curve whose colour it takes; named once in the legend by `dim_label`.
+    /// index of the curve whose colour it takes; named once in the legend by `dim_label`, or
+    /// where curves are told apart by their marks (no colour) each curve's by the name of its
+    /// parts ("wide fails").
     pub dim: Vec<(usize, Series)>,
     /// The legend's name of the dim parts.
     pub dim_label: String,

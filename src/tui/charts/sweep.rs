@@ -115,7 +115,8 @@ pub fn figure(
                 _ if !run.is_empty() => dim.push((
                     i,
                     Series {
-                        name: String::new(),
+                        // the legend's name of this model's dim parts, where curves have marks
+                        name: model.map_or_else(String::new, |m| format!("{m} fails")),
                         points: std::mem::take(&mut run),
                     },
                 )),

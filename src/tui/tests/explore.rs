@@ -154,6 +154,11 @@ fn sweep_screens() {
     let axis = lines.iter().position(|l| l.contains(" └")).unwrap();
     assert!(axis - top >= 7, "{small}");
     assert!(small.contains(crate::tui::view::explore::LESSON_ELSEWHERE));
+    // without colour each model's failing part has its own mark, named in the legend
+    assert!(
+        small.contains(",, wide fails") && small.contains("'' narrow fails"),
+        "{small}"
+    );
     insta::assert_snapshot!("sweep_80x24", small);
     insta::assert_snapshot!("sweep_120x40", screen(&app, 120, 40, COLOUR));
     insta::assert_snapshot!("sweep_ascii_80x24", screen(&app, 80, 24, ASCII));

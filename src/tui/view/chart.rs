@@ -107,14 +107,26 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
         style: style.mark(),
         text: m.label.clone(),
     }));
-    if let Some((i, _)) = plot.dim.first() {
-        let ink = style.dim_ink(*i);
-        out.push(Entry {
+    // the dim parts: once, or without colour each curve's mark with its name ("'' narrow fails")
+    let mut owners: Vec<(usize, &str)> = plot.dim.iter().map(|(i, d)| (*i, &*d.name)).collect();
+    owners.sort_by_key(|o| o.0);
+    owners.dedup_by_key(|o| o.0);
+    let each = !style.braille() && plot.series.len() > 1 && owners.iter().all(|o| !o.1.is_empty());
+    if !each {
+        owners.truncate(1);
+    }
+    out.extend(owners.into_iter().map(|(i, name)| {
+        let ink = style.dim_ink(i);
+        Entry {
             sample: style.sample(ink),
             style: ink.style,
-            text: plot.dim_label.clone(),
-        });
-    }
+            text: if each {
+                name.to_string()
+            } else {
+                plot.dim_label.clone()
+            },
+        }
+    }));
     let (shade_glyph, shade_style) = style.shaded();
     out.extend(plot.shaded.iter().map(|s| Entry {
         sample: shade_glyph.to_string().repeat(2),

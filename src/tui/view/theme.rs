@@ -28,6 +28,10 @@ const SERIES: [Color; 6] = [
 /// The characters of the curves in character mode, one per curve.
 const GLYPHS: [char; 8] = ['*', '+', 'x', 'o', '#', '%', '&', '$'];
 
+/// The characters of the dim parts of curves (where a model's check fails), one per curve as
+/// `GLYPHS`: light marks, none of them a curve's or a mark line's (`:` with `--ascii`).
+const DIM_GLYPHS: [char; 8] = ['.', ',', '\'', ';', '`', '~', '"', '^'];
+
 /// The shades of the heatmap without colour, lightest first.
 pub const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
 
@@ -127,7 +131,7 @@ impl RenderOptions {
     /// the curve's colour, dim; without colour a '.' for every curve.
     pub fn dim_ink(self, i: usize) -> Ink {
         Ink {
-            glyph: '.',
+            glyph: DIM_GLYPHS[i % DIM_GLYPHS.len()],
             solid: false,
             style: self.series(i).add_modifier(Modifier::DIM),
         }
