@@ -68,7 +68,7 @@ fn wait_footer(text: &str) {
 
 /// The main screen's footer of the plane problem at 80 columns.
 const PLANE_80: &str =
-    "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u ? help q quit";
+    "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u i ? help q quit";
 
 fn resize(w: &str, h: &str) {
     tmux(&["resize-window", "-t", "e2e", "-x", w, "-y", h]);
@@ -108,22 +108,22 @@ fn a_session_in_tmux() {
     // the footers of both problems at 80 and 120 columns
     assert_eq!(footer(), PLANE_80);
     resize("120", "40");
-    wait_for("D groups o s e/E u ? help q quit");
+    wait_for("D groups o s e/E u i ? help q quit");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u i ? help q quit"
     );
     keys(&["p"]);
     wait_for("v M D groups");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u i ? help q quit"
     );
     resize("80", "24");
     wait_for("space +/- x c/C");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u i ? help q quit"
     );
     keys(&["u"]);
     wait_for("undo: problem spatial -> plane");
