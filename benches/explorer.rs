@@ -24,6 +24,7 @@ use wearlab::preset::{Preset, bundled};
 mod tui {
     pub mod actions;
     pub mod app;
+    pub mod backend;
     pub mod chart_keys;
     pub mod charts;
     pub mod effects;

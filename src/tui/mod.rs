@@ -4,6 +4,7 @@
 
 pub mod actions;
 pub mod app;
+pub mod backend;
 pub mod chart_keys;
 pub mod charts;
 pub mod effects;
@@ -23,11 +24,13 @@ use std::io;
 use std::path::PathBuf;
 use std::sync::mpsc::channel;
 
+use ratatui::Terminal;
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture};
 use ratatui::crossterm::execute;
 use wearlab::preset::Preset;
 
 use app::{App, Places};
+use backend::Compact;
 pub use event_loop::{Loop, Wake};
 use view::RenderOptions;
 
@@ -57,7 +60,16 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
         home: dirs::home_dir(),
         presets: user_preset_dir(),
     };
-    let terminal = ratatui::init();
+    // raw mode, the alternate screen and the panic hook that restores them; the terminal drawn
+    // on is our own, whose backend writes fewer bytes (backend.rs)
+    drop(ratatui::init());
+    let terminal = match Terminal::new(Compact::new(io::stdout())) {
+        Ok(t) => t,
+        Err(e) => {
+            ratatui::restore();
+            return Err(e);
+        }
+    };
     if options.mouse {
         execute!(io::stdout(), EnableMouseCapture)?;
     }

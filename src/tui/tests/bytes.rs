@@ -1,16 +1,17 @@
 //! What the explorer writes to the terminal (issue 10, over SSH): bytes of a full redraw, of each
-//! frame while time plays, and of a redraw with nothing changed, counted through ratatui's
-//! crossterm backend (the escape codes a terminal would receive), not timed.
+//! frame while time plays, and of a redraw with nothing changed, counted through the explorer's
+//! backend (backend.rs: the escape codes a terminal would receive; tests/replay.rs checks that
+//! they draw the buffer), not timed.
 
 use std::cell::Cell;
 use std::io::Write;
 use std::rc::Rc;
 
-use ratatui::backend::CrosstermBackend;
 use ratatui::layout::Rect;
 use ratatui::{Terminal, TerminalOptions, Viewport};
 
 use super::*;
+use crate::tui::backend::Compact;
 use crate::tui::event_loop::FRAME;
 
 /// A writer that counts what goes through it.
@@ -28,22 +29,17 @@ impl Write for Counter {
 }
 
 /// A terminal of w x h cells whose output is counted.
-fn terminal(w: u16, h: u16) -> (Terminal<CrosstermBackend<Counter>>, Counter) {
+fn terminal(w: u16, h: u16) -> (Terminal<Compact<Counter>>, Counter) {
     let counter = Counter::default();
     let options = TerminalOptions {
         viewport: Viewport::Fixed(Rect::new(0, 0, w, h)),
     };
-    let t = Terminal::with_options(CrosstermBackend::new(counter.clone()), options).unwrap();
+    let t = Terminal::with_options(Compact::new(counter.clone()), options).unwrap();
     (t, counter)
 }
 
 /// Bytes written by one draw of the app.
-fn draw(
-    t: &mut Terminal<CrosstermBackend<Counter>>,
-    c: &Counter,
-    app: &App,
-    s: RenderOptions,
-) -> usize {
+fn draw(t: &mut Terminal<Compact<Counter>>, c: &Counter, app: &App, s: RenderOptions) -> usize {
     let before = c.0.get();
     t.draw(|f| view(app, s, f)).unwrap();
     c.0.get() - before
@@ -73,9 +69,9 @@ fn playing(file: &str, frames: usize, s: RenderOptions) -> (usize, Vec<usize>) {
 #[test]
 fn playing_the_pressure_map_writes_under_60_kb_a_second() {
     let per_second = 1000 / FRAME.as_millis() as usize;
-    // measured over 20 frames (README): dispersion 2.4 kB a frame on average, at most 4.9 kB,
-    // wave-thick-layer 2.7 and 5.6, jgh-egg-box 3.0 and 5.3, contact-lost 2.9 and 5.5: at most
-    // 28 kB/s at five frames a second
+    // measured over 20 frames (README): dispersion 1.9 kB a frame on average, at most 3.8 kB,
+    // wave-thick-layer 1.6 and 3.1, jgh-egg-box 2.2 and 3.7, contact-lost 1.3 and 2.4: at most
+    // 19 kB/s at five frames a second
     for file in [
         "dispersion.toml",
         "wave-thick-layer.toml",
@@ -88,12 +84,12 @@ fn playing_the_pressure_map_writes_under_60_kb_a_second() {
             worst * per_second < 60_000,
             "{file}: {frames:?} at {per_second}/s"
         );
-        // a full redraw of the map screen (10.8-12.6 kB): 4.7 kB of frame, form, footer, status
-        // and colour bar, and a 50 x 26 map with a colour code wherever the colours change
-        assert!(full < 13_000, "{file}: {full}");
-        // in 24-bit colour, whose codes are longer: 16.8-30.2 kB
+        // a full redraw of the map screen (9.3-11.0 kB): 3.8 kB of frame, form, footer, status
+        // and colour bar, and a 52 x 26 map with a colour code wherever a colour changes
+        assert!(full < 11_000, "{file}: {full}");
+        // in 24-bit colour, whose codes are longer: 15.2-25.6 kB
         let (full, _) = playing(file, 0, TRUECOLOR);
-        assert!(full < 31_000, "{file} in 24-bit colour: {full}");
+        assert!(full < 26_000, "{file} in 24-bit colour: {full}");
     }
 }
 
@@ -111,9 +107,10 @@ fn a_full_redraw_of_a_chart_screen_is_under_8_kb_and_nothing_changed_writes_noth
         settle(&mut app, cmds);
         let (mut t, c) = terminal(120, 40);
         let full = draw(&mut t, &c, &app, COLOUR);
+        // measured 4.1-5.2 kB
         assert!(full < 8_000, "{file} chart {chart}: {full} bytes");
-        // the same screen again: the colour and attribute resets and the hidden cursor only
+        // the same screen again: the hidden cursor only (6 bytes)
         let again = draw(&mut t, &c, &app, COLOUR);
-        assert!(again <= 32, "{file}: {again}");
+        assert!(again <= 6, "{file}: {again}");
     }
 }

@@ -10,6 +10,7 @@ mod groups;
 mod keys;
 mod legend;
 mod partial;
+mod replay;
 mod screens;
 mod stale;
 mod ticks;

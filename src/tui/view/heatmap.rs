@@ -6,6 +6,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 
+use crate::tui::backend::colour_bytes;
 use crate::tui::charts::Map;
 use crate::tui::charts::Scale;
 use crate::tui::charts::palette::{LEVELS, level};
@@ -75,6 +76,7 @@ pub fn draw(
         DEFAULT => Color::Reset,
         l => style.heat(l as usize),
     };
+    let weight: Vec<u32> = (0..CODES as u8).map(|c| colour_bytes(colour(c))).collect();
     for row in 0..h {
         let halves = (0..w).map(|col| (sample(col, 2 * row), sample(col, 2 * row + 1)));
         if !style.color {
@@ -90,10 +92,7 @@ pub fn draw(
             continue;
         }
         let codes: Vec<(u8, u8)> = halves.map(|(a, b)| (code(a), code(b))).collect();
-        for (col, (glyph, fg, bg)) in fewest_bytes(&codes, ESCAPE[style.truecolor as usize])
-            .into_iter()
-            .enumerate()
-        {
+        for (col, (glyph, fg, bg)) in fewest_bytes(&codes, &weight).into_iter().enumerate() {
             buf[(area.x + col as u16, area.y + row)]
                 .set_char(glyph)
                 .set_style(Style::default().fg(colour(fg)).bg(colour(bg)));
@@ -178,32 +177,40 @@ pub fn draw(
 const EMPTY_CODE: u8 = LEVELS as u8;
 /// The colour code of the terminal's default colour, for a colour no glyph shows.
 const DEFAULT: u8 = EMPTY_CODE + 1;
-/// A colour not chosen yet (inside the search only).
-const FREE: u8 = DEFAULT + 1;
-/// Colour codes, with `FREE`.
-const CODES: usize = FREE as usize + 1;
-/// Bytes of a colour escape (ratatui's crossterm backend writes the foreground and background
-/// together whenever one changes): 17-19 in 256 colours, 24-36 in 24-bit colour.
-const ESCAPE: [u32; 2] = [18, 32];
+/// Colour codes.
+const CODES: usize = DEFAULT as usize + 1;
 /// The extra weight of a cell drawn in a form that depends on its neighbours (measured on four
 /// map presets at 120x40 in 256 colours: 0 gives the same full draw within 2 % and writes 2-28 %
 /// more while time plays, 5 writes 3-7 % more for a full draw and 4-14 % less while playing).
 const APART: u32 = 2;
 
+/// Bytes of the escape that changes the colours (foreground, background) from `a` to `b`, as
+/// the terminal backend writes it: the changed ones in one code, `weight` the bytes of a
+/// colour's parameter.
+fn escape(weight: &[u32], a: (u8, u8), b: (u8, u8)) -> u32 {
+    let w = |c: u8| weight[c as usize];
+    match (a.0 != b.0, a.1 != b.1) {
+        (false, false) => 0,
+        (true, false) => 3 + w(b.0),
+        (false, true) => 3 + w(b.1),
+        (true, true) => 4 + w(b.0) + w(b.1),
+    }
+}
+
 /// How to draw a row of text cells, each two half cells of colour codes (top, bottom), with the
 /// fewest bytes: each cell's glyph, foreground and background code. The terminal backend writes
-/// a colour escape only where a cell's pair of colours differs from the cell written before, so
-/// a cell of one colour is a space on that background or a full block in that foreground,
-/// whichever keeps its neighbours' colours, and a cell of two colours is `▀` or `▄` (the same
-/// two colours swapped). A search over the pair of colours after each cell (a shortest path);
-/// a colour that no glyph shows is chosen later, to be the one the next cells need.
-fn fewest_bytes(row: &[(u8, u8)], escape: u32) -> Vec<(char, u8, u8)> {
+/// only the colours that differ from the cell written before (backend.rs), so a cell of one
+/// colour is a space on that background or a full block in that foreground, keeping the other
+/// colour of its neighbours, and a cell of two colours is `▀` or `▄` (the same two colours
+/// swapped). A search over the pair of colours after each cell (a shortest path); `weight`: the
+/// bytes of each code's colour parameter.
+fn fewest_bytes(row: &[(u8, u8)], weight: &[u32]) -> Vec<(char, u8, u8)> {
     const STATES: usize = CODES * CODES;
     let index = |(f, b): (u8, u8)| f as usize * CODES + b as usize;
     let state = |i: usize| ((i / CODES) as u8, (i % CODES) as u8);
-    // the glyph, the (foreground, background) it needs (None: any) and its weight: its bytes,
-    // and more for the forms that depend on the neighbours (a cell whose colours did not change
-    // then keeps its form while time plays, and is not written again)
+    // the glyph, the (foreground, background) it needs (None: the one before) and its weight:
+    // its bytes, and more for the forms that depend on the neighbours (a cell whose colours did
+    // not change then keeps its form while time plays, and is not written again)
     let options = |(a, b): (u8, u8)| -> Vec<(char, Option<u8>, Option<u8>, u32)> {
         if a == b {
             vec![
@@ -221,52 +228,32 @@ fn fewest_bytes(row: &[(u8, u8)], escape: u32) -> Vec<(char, u8, u8)> {
     // a row starts after text in the default colours
     let mut cost = vec![u32::MAX; STATES];
     cost[index((DEFAULT, DEFAULT))] = 0;
-    // per cell and state after it: the state before, the option taken, whether it escaped
-    let mut from = vec![[(0u16, 0u8, false); STATES]; row.len()];
+    // per cell and state after it: the state before and the option taken
+    let mut from = vec![[(0u16, 0u8); STATES]; row.len()];
     for (i, &cell) in row.iter().enumerate() {
         let mut next = vec![u32::MAX; STATES];
         let options = options(cell);
         for (s, &c) in cost.iter().enumerate().filter(|(_, c)| **c < u32::MAX) {
             let (f, b) = state(s);
-            for (k, &(_, need_f, need_b, weight)) in options.iter().enumerate() {
-                let fits =
-                    |have: u8, need: Option<u8>| need.is_none_or(|n| have == n || have == FREE);
-                let escaped = !(fits(f, need_f) && fits(b, need_b));
-                let after = if escaped {
-                    (need_f.unwrap_or(FREE), need_b.unwrap_or(FREE))
-                } else {
-                    (need_f.unwrap_or(f), need_b.unwrap_or(b))
-                };
-                let bytes = c + weight + if escaped { escape } else { 0 };
+            for (k, &(_, need_f, need_b, glyph)) in options.iter().enumerate() {
+                let after = (need_f.unwrap_or(f), need_b.unwrap_or(b));
+                let bytes = c + glyph + escape(weight, (f, b), after);
                 if bytes < next[index(after)] {
                     next[index(after)] = bytes;
-                    from[i][index(after)] = (s as u16, k as u8, escaped);
+                    from[i][index(after)] = (s as u16, k as u8);
                 }
             }
         }
         cost = next;
     }
-    // back from the cheapest end: the states after each cell, then the free colours
+    // back from the cheapest end
     let mut s = (0..STATES).min_by_key(|&s| cost[s]).unwrap_or(0);
-    let mut path = vec![(' ', (DEFAULT, DEFAULT), false); row.len()];
-    for i in (0..row.len()).rev() {
-        let (before, k, escaped) = from[i][s];
-        path[i] = (options(row[i])[k as usize].0, state(s), escaped);
-        s = before as usize;
-    }
-    let mut later = (DEFAULT, DEFAULT);
     let mut cells = vec![(' ', DEFAULT, DEFAULT); row.len()];
     for i in (0..row.len()).rev() {
-        let (glyph, (f, b), _) = path[i];
-        // a free colour is the next cell's when no escape comes between, else the default
-        let chosen = |have: u8, next: u8| if have == FREE { next } else { have };
-        let (f, b) = (chosen(f, later.0), chosen(b, later.1));
-        cells[i] = (glyph, f, b);
-        later = if path[i].2 {
-            (DEFAULT, DEFAULT)
-        } else {
-            (f, b)
-        };
+        let (before, k) = from[i][s];
+        let (f, b) = state(s);
+        cells[i] = (options(row[i])[k as usize].0, f, b);
+        s = before as usize;
     }
     cells
 }
@@ -275,13 +262,21 @@ fn fewest_bytes(row: &[(u8, u8)], escape: u32) -> Vec<(char, u8, u8)> {
 mod tests {
     use super::*;
 
-    /// Bytes of a row as the terminal backend writes it: each glyph, and a colour escape (of
-    /// weight `ESCAPE[0]`) wherever a cell's colours differ from the cell before.
+    /// The bytes of a 256-colour level's parameter (`38;5;n`, n of two digits) and of the
+    /// default's (`39`).
+    const WEIGHT: [u32; CODES] = {
+        let mut w = [7; CODES];
+        w[DEFAULT as usize] = 2;
+        w
+    };
+
+    /// Bytes of a row as the terminal backend writes it: each glyph, and the escape of the
+    /// colours that differ from the cell before.
     fn bytes(cells: &[(char, u8, u8)]) -> u32 {
         let mut last = (DEFAULT, DEFAULT);
         let mut sum = 0;
         for &(glyph, f, b) in cells {
-            sum += glyph.len_utf8() as u32 + if (f, b) != last { ESCAPE[0] } else { 0 };
+            sum += glyph.len_utf8() as u32 + escape(&WEIGHT, last, (f, b));
             last = (f, b);
         }
         sum
@@ -307,7 +302,7 @@ mod tests {
             })
             .collect();
         for row in [ramp, noisy, holes] {
-            let cells = fewest_bytes(&row, ESCAPE[0]);
+            let cells = fewest_bytes(&row, &WEIGHT);
             for (&(top, bottom), &(glyph, f, b)) in row.iter().zip(&cells) {
                 let shown = match glyph {
                     ' ' => (b, b),
