@@ -5,7 +5,7 @@ use wearlab::engine::Output;
 
 use crate::tui::app::{App, Command, HeatScale, Pin};
 use crate::tui::charts::contact::Fields;
-use crate::tui::charts::range::{Frame, frames, plotted};
+use crate::tui::charts::range::{Frame, constant, frames, plotted};
 use crate::tui::charts::{Figure, Plot, Scale};
 use crate::tui::keys::Action;
 use crate::tui::view::shown;
@@ -189,6 +189,11 @@ fn log_y(app: &mut App) {
     let scales: Vec<String> = frames(&plots, &[], toggled)
         .iter()
         .map(|f| match f.y_scale {
+            Scale::Linear if toggled && constant(f).is_some() => format!(
+                "{} stays linear (one value, {})",
+                f.plot.y.label,
+                wearlab::units::format_si(constant(f).unwrap_or_default(), f.plot.y.unit)
+            ),
             Scale::Linear => format!("{} linear", f.plot.y.label),
             Scale::Log => format!("{} logarithmic", f.plot.y.label),
             Scale::SymLog(c) => format!(

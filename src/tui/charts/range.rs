@@ -58,7 +58,8 @@ fn setting(plot: &Plot, y: bool) -> impl Iterator<Item = &(f64, f64)> {
 }
 
 /// The y scale of a plot: its own, or when `toggled` the other one: a linear axis becomes
-/// logarithmic where every value is positive, else symmetric-log; a log axis becomes linear.
+/// logarithmic where every value is positive, else symmetric-log (but stays linear where every
+/// value is the same: a log axis spreads nothing); a log axis becomes linear.
 pub fn y_scale(plot: &Plot, pins: &[&Plot], toggled: bool) -> Scale {
     if !toggled {
         return plot.y.scale;
@@ -72,7 +73,10 @@ pub fn y_scale(plot: &Plot, pins: &[&Plot], toggled: bool) -> Scale {
                     .flat_map(|p| setting(p, true))
                     .map(|p| p.1)
             };
-            if ys().all(|v| v > 0.0) {
+            let first = ys().find(|v| v.is_finite());
+            if first.is_none_or(|a| ys().filter(|v| v.is_finite()).all(|v| v == a)) {
+                Scale::Linear
+            } else if ys().all(|v| v > 0.0) {
                 Scale::Log
             } else {
                 Scale::symlog_for(ys())
@@ -125,19 +129,7 @@ pub fn frames<'a>(plots: &'a [Plot], pins: &[&'a [Plot]], toggled: bool) -> Vec<
         .map(|(i, plot)| {
             let pins = pinned(i);
             let y_scale = y_scale(plot, &pins, toggled);
-            let ys = std::iter::once(plot)
-                .chain(pins.iter().copied())
-                .flat_map(|p| {
-                    let marks = p.y_marks.iter().map(|m| m.at);
-                    let xs = p.x.scale;
-                    setting(p, true)
-                        .filter(|q| xs.to_plot(q.0).is_some())
-                        .map(|q| q.1)
-                        .chain(marks)
-                        .filter_map(|v| y_scale.to_plot(v))
-                        .collect::<Vec<_>>()
-                });
-            let y = bounds(ys);
+            let y = bounds(y_values(plot, &pins, y_scale).into_iter());
             Frame {
                 plot,
                 pins,
@@ -147,6 +139,32 @@ pub fn frames<'a>(plots: &'a [Plot], pins: &[&'a [Plot]], toggled: bool) -> Vec<
             }
         })
         .collect()
+}
+
+/// The y values (plot coordinates) that set a plot's y range: its focus curves and markers
+/// where x can be drawn, its horizontal marks, and the same of its pins.
+fn y_values(plot: &Plot, pins: &[&Plot], y_scale: Scale) -> Vec<f64> {
+    std::iter::once(plot)
+        .chain(pins.iter().copied())
+        .flat_map(|p| {
+            let marks = p.y_marks.iter().map(|m| m.at);
+            let xs = p.x.scale;
+            setting(p, true)
+                .filter(|q| xs.to_plot(q.0).is_some())
+                .map(|q| q.1)
+                .chain(marks)
+                .filter_map(|v| y_scale.to_plot(v))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// The one value (plot coordinate) of a frame whose y values are all the same (mu*(t) of a
+/// frictionless punch, 0 all along), else None.
+pub fn constant(frame: &Frame) -> Option<f64> {
+    let ys = y_values(frame.plot, &frame.pins, frame.y_scale);
+    let first = *ys.first()?;
+    ys.iter().all(|&v| v == first).then_some(first)
 }
 
 /// Liang-Barsky: the part of segment a-b inside the rectangle xs x ys, if any.

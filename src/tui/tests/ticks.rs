@@ -164,3 +164,30 @@ fn scales_map_back_and_forth() {
     assert_eq!(Scale::SymLog(1.0).to_plot(0.0), Some(0.0));
     assert!(Scale::SymLog(1.0).to_plot(-5.0).unwrap() < 0.0);
 }
+
+#[test]
+fn a_constant_curve_gets_one_tick_at_its_value_and_stays_linear_under_y() {
+    use ratatui::crossterm::event::KeyCode;
+
+    use super::{PLAIN, app, press, screen, settle};
+    use crate::tui::charts::{Chart, SpatialChart};
+    // jgh-egg-box has no friction: mu*(t) = 0 all along (and the line mu = 0 on it); it sat
+    // between ticks -1 and 1, and y put it between -5 and 5 on a symmetric-log axis
+    let mut app = app("jgh-egg-box.toml");
+    app.ui.chart = Chart::Spatial(SpatialChart::History);
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    for toggled in [false, true] {
+        let s = screen(&app, 80, 24, PLAIN);
+        assert!(s.contains("  0┤●****") || s.contains("   0┤●****"), "{s}");
+        assert!(!s.contains("-1┤") && !s.contains("-5┤"), "{s}");
+        if !toggled {
+            press(&mut app, KeyCode::Char('y'));
+        }
+    }
+    let said = app.ui.message.clone().unwrap().text;
+    assert!(
+        said.contains("A logarithmic") && said.contains("mu* stays linear (one value, 0)"),
+        "{said}"
+    );
+}

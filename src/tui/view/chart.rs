@@ -182,7 +182,18 @@ fn lay_out(
         .map(|(i, ((f, share), &rows))| {
             let h = axis::plot_height(*share, rows, i + 1 == frames.len());
             let max = (h as usize / 2).clamp(2, 8);
-            ticks(f.y, f.y_scale, &f.plot.y.label, f.plot.y.unit, max)
+            match crate::tui::charts::range::constant(f) {
+                // a constant: one tick, at it (among fine ones, the nearest), so that it reads
+                // "0┤●───" rather than sitting between -1 and 1
+                Some(v) => {
+                    let mut t = ticks(f.y, f.y_scale, &f.plot.y.label, f.plot.y.unit, 9);
+                    let near = |p: &(f64, String)| (p.0 - v).abs();
+                    t.ticks.sort_by(|a, b| near(a).total_cmp(&near(b)));
+                    t.ticks.truncate(1);
+                    t
+                }
+                None => ticks(f.y, f.y_scale, &f.plot.y.label, f.plot.y.unit, max),
+            }
         })
         .collect();
     let label_width = y_ticks
