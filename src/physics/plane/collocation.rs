@@ -11,23 +11,21 @@
 //! K = R2 + mu chi B12, and each row is divided by its largest entry. Unscaled, LU with partial
 //! pivoting gives a growth factor of 1e11 at (a+b)/h = 56 with k m = 0.5 and loses 5 digits
 //! (plane.md section 6 reports 1e15 for strong wear); scaled, the growth stayed below 2 in every
-//! case tried, so LU is the rule and Householder QR the fallback when the growth exceeds 1e6. The factors are
-//! kept and reused at nearby widths by iterative refinement (residual with the new matrix,
-//! correction with the old factors: O(N^2) per width instead of O(N^3)), and rebuilt when the
-//! refinement stops contracting.
+//! case tried, so LU is the rule and Householder QR the fallback when the growth exceeds 1e6
+//! (`strip_factors`). The factors are kept and reused at nearby widths by iterative refinement
+//! (residual with the new matrix, correction with the old factors: O(N^2) per width instead of
+//! O(N^3)), and rebuilt when the refinement stops contracting.
 
+use std::rc::Rc;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use nalgebra::{DMatrix, DVector, Dyn, LU, QR};
+use nalgebra::{DMatrix, DVector};
 
 use crate::physics::plane::PlaneInputs;
 use crate::physics::plane::strip::{ColumnKernel, Kernels};
+use crate::physics::plane::strip_factors::Factors;
 use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
 
-/// LU is used while max|U|/max|A| stays below this; QR above.
-const MAX_GROWTH: f64 = 1e6;
-/// Refinement steps before the factors are rebuilt.
-const MAX_REFINEMENTS: usize = 12;
 /// Rules kept by `Rules::cached`.
 const CACHED_RULES: usize = 12;
 
@@ -154,103 +152,33 @@ impl Collocation {
     }
 }
 
-/// A factorization of the matrix at some width.
-enum Factors {
-    Lu(LU<f64, Dyn, Dyn>),
-    Qr(QR<f64, Dyn, Dyn>),
-}
-
-impl Factors {
-    /// LU when its growth factor is moderate, else QR; None when the matrix is singular.
-    fn new(a: DMatrix<f64>) -> Option<Factors> {
-        let scale = a.amax();
-        let lu = a.clone().lu();
-        if lu.is_invertible() && lu.u().amax() < MAX_GROWTH * scale {
-            return Some(Factors::Lu(lu));
-        }
-        let qr = a.qr();
-        qr.is_invertible().then_some(Factors::Qr(qr))
-    }
-
-    fn solve(&self, b: &DVector<f64>) -> Option<DVector<f64>> {
-        let y = match self {
-            Factors::Lu(lu) => lu.solve(b),
-            Factors::Qr(qr) => qr.solve(b),
-        }?;
-        y.iter().all(|v| v.is_finite()).then_some(y)
-    }
-
-    /// Solves a y = b by refinement from these factors (of a nearby matrix), starting at `guess`:
-    /// None when a step does not contract the correction by half (above round-off) or more than
-    /// MAX_REFINEMENTS steps are needed. Stops when the next correction, estimated from the
-    /// contraction so far, is below `tolerance` of y. Returns y and the steps taken.
-    fn refine(
-        &self,
-        a: &DMatrix<f64>,
-        b: &DVector<f64>,
-        mut y: DVector<f64>,
-        tolerance: f64,
-    ) -> Option<(DVector<f64>, usize)> {
-        let mut last = f64::INFINITY;
-        for steps in 1..=MAX_REFINEMENTS {
-            let dy = self.solve(&residual(a, &y, b))?;
-            y += &dy;
-            let (step, size) = (dy.amax(), y.amax());
-            // the contraction per step, unknown after the first
-            let ratio = if last.is_finite() { step / last } else { 0.0 };
-            if step <= 1e-15 * size
-                || (last.is_finite() && ratio < 0.5 && step * ratio <= tolerance * size)
-            {
-                return Some((y, steps));
-            }
-            if ratio >= 0.5 {
-                // stalled: converged if at round-off, else these factors are too far off
-                return (step <= 1e-13 * size).then_some((y, steps));
-            }
-            last = step;
-        }
-        None
-    }
-}
-
-/// b - a y, column by column over contiguous slices (so that it vectorizes).
-fn residual(a: &DMatrix<f64>, y: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
-    let mut r = b.clone();
-    let rows = a.nrows();
-    for (column, yi) in a.as_slice().chunks_exact(rows).zip(y.iter()) {
-        for (ri, aki) in r.as_mut_slice().iter_mut().zip(column) {
-            *ri -= aki * yi;
-        }
-    }
-    r
-}
-
 /// The collocation system of one set of inputs and rules, keeping the last factorization.
 pub struct System<'a> {
     inputs: PlaneInputs,
     kernels: &'a dyn Kernels,
     /// Relative accuracy of solutions by refinement.
     tolerance: f64,
-    /// R2 + mu chi B12 over a column, for the inputs' mu.
-    regular: ColumnKernel<'a>,
+    /// R2 + mu chi B12 over a column, for the inputs' mu (shared by the systems of one search).
+    regular: Rc<ColumnKernel<'a>>,
     rules: Arc<Rules>,
     factors: Option<Factors>,
     /// The last collocation (root finders evaluate their answer again).
     last: Option<Collocation>,
     /// The last four solutions (width, scaled unknowns), newest first.
     history: Vec<(f64, DVector<f64>)>,
-    /// 1/(pi (t_i - xi_k)), the Cauchy part of the matrix, once computed.
-    cauchy: Option<DMatrix<f64>>,
     /// Scratch: one column of kernel arguments and values, and the rows' largest entries.
     scratch: (Vec<f64>, Vec<f64>, Vec<f64>),
 }
 
 impl<'a> System<'a> {
-    /// The system for these inputs with these rules (their theta must be the inputs'); solutions
-    /// by refinement stop when the next correction is estimated below `tolerance` (relative).
+    /// The system for these inputs with these rules (their theta must be the inputs') and the
+    /// regular kernel `regular` over columns (`Kernels::regular_columns` of the inputs' mu);
+    /// solutions by refinement stop when the next correction is estimated below `tolerance`
+    /// (relative).
     pub fn new(
         inputs: &PlaneInputs,
         kernels: &'a dyn Kernels,
+        regular: &Rc<ColumnKernel<'a>>,
         rules: Arc<Rules>,
         tolerance: f64,
     ) -> System<'a> {
@@ -259,12 +187,11 @@ impl<'a> System<'a> {
             inputs: *inputs,
             kernels,
             tolerance,
-            regular: kernels.regular_columns(inputs.friction.coefficient),
+            regular: Rc::clone(regular),
             rules,
             factors: None,
             last: None,
             history: Vec::new(),
-            cauchy: None,
             scratch: (vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]),
         }
     }
@@ -282,31 +209,23 @@ impl<'a> System<'a> {
         let half = 0.5 * l;
         let (nodes, points) = (&self.rules.rule.nodes, &self.rules.points);
         let inv_pi = std::f64::consts::FRAC_1_PI;
-        // 1/(pi (t_i - xi_k)) does not depend on l: computed once per system
-        let cauchy = self.cauchy.get_or_insert_with(|| {
-            DMatrix::from_fn(n + 1, n, |k, i| inv_pi / (nodes[i] - points[k]))
-        });
         let mut a = DMatrix::<f64>::from_element(n + 1, n + 1, inv_pi);
         let (zs, ks, row_max) = &mut self.scratch;
         let regular = &self.regular;
         row_max.fill(inv_pi);
         let (z_scale, k_scale) = (half / h, inv_pi * half / h);
-        let columns = a.as_mut_slice().chunks_exact_mut(n + 1);
-        for ((column, t), cauchy) in columns
-            .zip(nodes)
-            .zip(cauchy.as_slice().chunks_exact(n + 1))
-        {
+        for (column, t) in a.as_mut_slice().chunks_exact_mut(n + 1).zip(nodes) {
             for (z, xi) in zs.iter_mut().zip(points) {
                 *z = (t - xi) * z_scale;
             }
             regular(zs, ks);
-            for (((entry, c), k), big) in column
+            for (((entry, xi), k), big) in column
                 .iter_mut()
-                .zip(cauchy)
+                .zip(points)
                 .zip(&*ks)
                 .zip(row_max.iter_mut())
             {
-                *entry = c + k_scale * k;
+                *entry = inv_pi / (t - xi) + k_scale * k;
                 *big = big.max(entry.abs());
             }
         }

@@ -14,6 +14,7 @@ pub mod narrow;
 pub mod operating_point;
 pub mod profile;
 pub mod strip;
+mod strip_factors;
 pub mod sweep;
 pub mod validity;
 pub mod wide;
