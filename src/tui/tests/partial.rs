@@ -195,3 +195,27 @@ fn the_help_explains_the_partial_contact_status() {
         assert!(help.contains(symbol), "{symbol} not in the help:\n{help}");
     }
 }
+
+#[test]
+fn the_time_of_complete_contact_heads_the_rates_only_above_them() {
+    // the rates of the closed form hold after complete contact: "complete after ..., then:"
+    // heads their rows at both sizes (at 120 columns "after complete contact:" followed phi in
+    // the header, as if it were phi's); where no row fits under it (80x24 with the message on
+    // two lines) the time is said without ", then:"
+    for file in ["contact-lost.toml", "rubber-running-in.toml"] {
+        let mut app = solved(file);
+        app.doc.path = Some(format!("presets/{file}").into());
+        app.ui.message = None;
+        for (w, h) in [(80, 24), (120, 40)] {
+            let s = screen(&app, w, h, PLAIN);
+            assert!(s.contains("complete after t = "), "{s}");
+            assert!(!s.contains("phi  after"), "{s}");
+            let lines: Vec<&str> = s.lines().collect();
+            for (i, l) in lines.iter().enumerate() {
+                if l.contains(", then:") {
+                    assert!(lines[i + 1].contains("1/beta"), "{w}x{h}: {s}");
+                }
+            }
+        }
+    }
+}

@@ -23,8 +23,9 @@ pub fn percent(fraction: f64) -> String {
 }
 
 /// The head of the status for the state on the cell, and whether the state shown is partial
-/// (the harmonics' closed-form rates then hold only after complete contact) and `then` was said:
-/// with `then`, the time of complete contact ends in ", then:", heading the harmonics' rows.
+/// (the harmonics' closed-form rates then hold only after complete contact) and whether `then`
+/// was said: with `then`, the time of complete contact ends in ", then:", heading the
+/// harmonics' rows (without, where no row fits under it).
 pub fn head(
     c: &CellOutput,
     closed: &SpatialSolution,

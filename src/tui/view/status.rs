@@ -165,16 +165,20 @@ fn spatial(
         "n", "1/beta", "c", "phi"
     );
     // while partial, the closed-form rates are what each harmonic does once contact is complete:
-    // said after the header ("  +NN more" and the words), else by the line of the time of
-    // complete contact (", then:"), else above the header
+    // said by the line of the time of complete contact (", then:"), else on a line of its own
+    // above the header (never after the header, where it read as phi's)
     let after = "after complete contact:";
-    let narrow = header.chars().count() + 11 + 2 + after.len() > width;
     // the state on the period cell, unless the closed form holds from t = 0
-    let (mut lines, partial, said) = match contact::stepped(out) {
-        Some(c) => contact_status::head(c, s, style, width, narrow),
+    let head = |then| match contact::stepped(out) {
+        Some(c) => contact_status::head(c, s, style, width, then),
         None => (closed(out, style, width), false, false),
     };
-    let own_line = partial && narrow && !said;
+    let (mut lines, partial, mut said) = head(true);
+    if said && lines.len() + 1 >= height {
+        // no row fits under ", then:": the time is said without it
+        (lines, _, said) = head(false);
+    }
+    let own_line = partial && !said;
     let blocks: Vec<Vec<String>> = s
         .harmonics
         .iter()
@@ -212,15 +216,7 @@ fn spatial(
     if own_line {
         lines.push(Line::styled(after, style.heading()));
     }
-    let after = if partial && !narrow {
-        format!("  {after}")
-    } else {
-        String::new()
-    };
-    lines.push(Line::styled(
-        format!("{header}{more}{after}"),
-        style.heading(),
-    ));
+    lines.push(Line::styled(format!("{header}{more}"), style.heading()));
     for block in &blocks[first..first + count] {
         lines.extend(block.iter().cloned().map(Line::from));
     }
