@@ -148,6 +148,11 @@ fn mark_labels_sit_over_their_marks_or_are_left_out() {
     plot.x_marks = vec![mark(1.0, "complete")];
     let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
     assert_eq!(mark_labels(f, area), [(32, "complete")]);
+    // "now" three columns right of a validity mark: both named, "now" first (thin-strip-winkler's
+    // sweep at 80x24 named "narrow ok>" and left "now" out); columns 0.4 -> 16, 0.48 -> 19
+    plot.x_marks = vec![mark(0.4, "narrow ok>"), mark(0.48, "now")];
+    let f = &frames(std::slice::from_ref(&plot), &[], false)[0];
+    assert_eq!(mark_labels(f, area), [(7, "narrow ok>"), (18, "now")]);
 }
 
 /// Spatial chart 4 of the default preset: the curve's legend text carries a remark with its own

@@ -210,8 +210,10 @@ pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions,
 }
 
 /// The labels of the vertical marks on the x axis line of plot area `p`, left to right: each
-/// over its own mark's column (centred, else shifted clear of the plot's end or of a label before
-/// it, as long as it still covers the column), a column apart; one that cannot be is left out, never put elsewhere.
+/// covering its own mark's column (centred where it can be, else shifted as little as it takes
+/// to stay inside the plot and a column clear of the labels placed before it); "now" is placed
+/// first, so that the operating point is always named; one that cannot be is left out, never
+/// put elsewhere.
 pub fn mark_labels<'a>(frame: &'a Frame, p: Rect) -> Vec<(u16, &'a str)> {
     let mut marks: Vec<(u16, &str)> = frame
         .plot
@@ -222,22 +224,28 @@ pub fn mark_labels<'a>(frame: &'a Frame, p: Rect) -> Vec<(u16, &'a str)> {
             Some((p.x + column(frac(v, frame.x), p.width), m.label.as_str()))
         })
         .collect();
-    marks.sort_by_key(|m| m.0);
-    let mut free = p.x;
-    let mut out = Vec::new();
+    marks.sort_by_key(|m| (m.1 != "now", m.0));
+    let end = p.x + p.width;
+    let mut out: Vec<(u16, &str)> = Vec::new();
     for (centre, label) in marks {
         let len = label.chars().count() as u16;
-        let end = p.x + p.width;
-        let start = centre
-            .saturating_sub(len / 2)
-            .min(end.saturating_sub(len))
-            .max(free);
-        if start > centre || start + len <= centre || start + len > end {
-            continue;
+        let centred = centre.saturating_sub(len / 2);
+        let clear = |start: u16| {
+            start >= p.x
+                && start + len <= end
+                && out
+                    .iter()
+                    .all(|&(s, l)| start + len < s || s + (l.chars().count() as u16) < start)
+        };
+        // the starts that cover the column, nearest the centred one first
+        let mut starts: Vec<u16> =
+            (centre.saturating_sub(len.saturating_sub(1))..=centre).collect();
+        starts.sort_by_key(|s| s.abs_diff(centred));
+        if let Some(start) = starts.into_iter().find(|&s| clear(s)) {
+            out.push((start, label));
         }
-        out.push((start, label));
-        free = start + len + 1;
     }
+    out.sort_by_key(|l| l.0);
     out
 }
 

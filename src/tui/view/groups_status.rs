@@ -11,7 +11,7 @@ use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status::{pack, prose, visible, with_validity};
+use crate::tui::view::status::{mu_star, pack, prose, visible, with_validity};
 use crate::tui::view::theme::RenderOptions;
 
 /// The status panel's title: it says when the values are groups.
@@ -23,12 +23,12 @@ pub fn title(app: &App) -> &'static str {
     }
 }
 
-/// "symbol = value", mu* with the preset's mu beside it.
+/// "symbol = value", mu* with six decimals and the preset's mu beside it.
 fn item(g: &Group, mu: f64) -> String {
-    let text = format!("{} = {}", g.symbol, format_si(g.value, ""));
     match g.name {
-        "mu_star" => format!("{text} (mu {mu})"),
-        _ => text,
+        // as in the dimensional status: its difference from mu is often a few 1e-5
+        "mu_star" => mu_star(g.value, mu),
+        _ => format!("{} = {}", g.symbol, format_si(g.value, "")),
     }
 }
 

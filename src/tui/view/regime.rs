@@ -146,7 +146,8 @@ pub fn draw(
             }
         }
     }
-    if let Some(p) = at(map.current[0], map.current[1]) {
+    let now = at(map.current[0], map.current[1]);
+    if let Some(p) = now {
         buf[p].set_char('+').set_style(ink);
     }
     if let Some((i, j)) = cell {
@@ -241,7 +242,9 @@ pub fn draw(
     }
     // the legend: the colour's quantity, then each line drawn
     let mut y = y0 + h + 2;
-    let words = format!("colour: {}   + now", bt.title);
+    // the preset's own point may lie outside the ranges (mu = 0 on a log axis)
+    let where_now = if now.is_some() { "" } else { ": off the map" };
+    let words = format!("colour: {}   + now{where_now}", bt.title);
     buf.set_stringn(area.x, y, words, area.width as usize, Style::default());
     for (glyph, wrapped) in &meanings {
         for (k, text) in wrapped.iter().enumerate() {

@@ -98,6 +98,12 @@ fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
     Some(items)
 }
 
+/// "mu* = 0.299822 (mu 0.3)": six decimals, so that mu* - mu reads off to 1e-6 (it is often
+/// a few 1e-5).
+pub fn mu_star(value: f64, mu: f64) -> String {
+    format!("mu* = {value:.6} (mu {mu})")
+}
+
 /// A sentence wrapped to the panel, in one style.
 pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
     wrap(text, width)
@@ -123,10 +129,7 @@ fn plane(
     items.extend([
         format!("Q2 = {}", format_si(s.normal_force, "N/m")),
         format!("psi = {}", format_si(s.psi, "N/m")),
-        format!(
-            "mu* = {:.6} (mu {})",
-            s.mu_star, s.inputs.friction.coefficient
-        ),
+        mu_star(s.mu_star, s.inputs.friction.coefficient),
         format!("I-J residual {:.1e}", p.energy.residual),
     ]);
     with_validity(&items, p, check, style, width, height)
@@ -230,10 +233,7 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
     let s = &st.solution;
     let items = [
         format!("t = {}", format_si(s.time, "s")),
-        format!(
-            "mu* = {:.6} (mu {})",
-            s.mu_star, s.inputs.friction.coefficient
-        ),
+        mu_star(s.mu_star, s.inputs.friction.coefficient),
         format!("psi = {}", format_si(s.psi, "Pa")),
     ];
     let mut lines: Vec<Line> = pack(&items, width, "")
