@@ -1,7 +1,9 @@
 //! The strip of any thickness (docs/physics/plane.md section 6): kernel table, Gauss–Jacobi rules, one
-//! operating point at (a+b)/h of about 1, 5, 20 and 56, 100-point sweeps, and `wearlab solve` of a
-//! preset at (a+b)/h = 56 as a whole process, and of the wide default preset (start-up: reading,
-//! checking, solving and writing the JSON of a wide preset).
+//! operating point at (a+b)/h of about 1, 5, 20, 56 and 86, 100-point sweeps, the growth of the
+//! cost per point with the node count (`strip_growth`: 100-point sweeps over loads P to 1.3 P at
+//! those five (a+b)/h), and `wearlab solve` of a preset at (a+b)/h = 56 as a whole process, and of
+//! the wide default preset (start-up: reading, checking, solving and writing the JSON of a wide
+//! preset).
 //! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, mu = 0.3, k m = 0.5 on h = 1e-5 m (the strip preset's
 //! material; P = 1e5 N/m is the SciPy reference's README case).
 //! Measured in CPU time (this process's, plus its children's for `wearlab_solve`): on the shared
@@ -55,10 +57,18 @@ fn table_and_rules(c: &mut Criterion<CpuTime>) {
     });
 }
 
+/// Loads [N/m] for (a+b)/h = 1.04, 4.97, 19.97, 56.28 and 85.89 (N = 48, 64, 128, 272, 400).
+const POINTS: [(&str, f64); 5] = [
+    ("1h", 5.5),
+    ("5h", 300.0),
+    ("20h", 1.05e4),
+    ("56h", 1e5),
+    ("86h", 2.4e5),
+];
+
 fn operating_points(c: &mut Criterion<CpuTime>) {
     strip::kernels_for(0.3);
-    // loads for (a+b)/h = 1.04, 4.97, 19.97, 56.28
-    for (name, load) in [("1h", 5.5), ("5h", 300.0), ("20h", 1.05e4), ("56h", 1e5)] {
+    for (name, load) in POINTS {
         let at = inputs(0.3, load);
         c.bench_function(&format!("strip_point/{name}"), |b| {
             b.iter(|| solve(black_box(&at), Model::Strip).unwrap())
@@ -95,6 +105,23 @@ fn sweeps(c: &mut Criterion<CpuTime>) {
     }
 }
 
+fn growth(c: &mut Criterion<CpuTime>) {
+    strip::kernels_for(0.3);
+    let at = inputs(0.3, 1e3);
+    // (a+b)/h grows by some 10 % over each sweep: one or two node counts
+    for (name, load) in POINTS {
+        let loads = SweepRange {
+            min: load,
+            max: 1.3 * load,
+            points: 100,
+            spacing: Spacing::Log,
+        };
+        c.bench_function(&format!("strip_growth/{name}"), |b| {
+            b.iter(|| sweep(black_box(&at), Model::Strip, &loads))
+        });
+    }
+}
+
 fn whole_process(c: &mut Criterion<CpuTime>) {
     // the strip preset at P = 1e5 N/m ((a+b)/h = 56) with a 2-point sweep, as a user runs it
     let preset = std::fs::read_to_string("presets/hard-coating-strip.toml")
@@ -126,6 +153,6 @@ criterion_group! {
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(3));
-    targets = table_and_rules, operating_points, sweeps, whole_process
+    targets = table_and_rules, operating_points, sweeps, growth, whole_process
 }
 criterion_main!(strip_benches);

@@ -81,31 +81,42 @@ impl Lu {
             .fold(0.0, f64::max)
     }
 
-    /// x with A x = b.
+    /// x with A x = b: forward and back substitution two columns of the factors at a time (one
+    /// pass over x per pair).
     fn solve(&self, b: &DVector<f64>) -> DVector<f64> {
-        let a = &self.packed;
-        let n = a.nrows();
+        let n = self.packed.nrows();
         let mut x = b.clone();
+        let xs = x.as_mut_slice();
         for (j, &p) in self.pivots.iter().enumerate() {
-            x.swap_rows(j, p);
+            xs.swap(j, p);
         }
-        let x = x.as_mut_slice();
-        for j in 0..n {
-            let xj = x[j];
-            for (xi, l) in x[j + 1..].iter_mut().zip(&a.column(j).as_slice()[j + 1..]) {
-                *xi -= l * xj;
+        let data = self.packed.as_slice();
+        let column = |j: usize| &data[j * n..(j + 1) * n];
+        let mut j = 0;
+        while j + 1 < n {
+            let (c0, c1) = (column(j), column(j + 1));
+            xs[j + 1] -= c0[j + 1] * xs[j];
+            let (x0, x1) = (xs[j], xs[j + 1]);
+            for ((xi, l0), l1) in xs[j + 2..].iter_mut().zip(&c0[j + 2..]).zip(&c1[j + 2..]) {
+                *xi -= l0 * x0 + l1 * x1;
             }
+            j += 2;
         }
-        for j in (0..n).rev() {
-            let column = a.column(j);
-            let column = column.as_slice();
-            x[j] /= column[j];
-            let xj = x[j];
-            for (xi, u) in x[..j].iter_mut().zip(&column[..j]) {
-                *xi -= u * xj;
+        let mut j = n;
+        while j >= 2 {
+            let (c0, c1) = (column(j - 2), column(j - 1));
+            xs[j - 1] /= c1[j - 1];
+            xs[j - 2] = (xs[j - 2] - c1[j - 2] * xs[j - 1]) / c0[j - 2];
+            let (x0, x1) = (xs[j - 2], xs[j - 1]);
+            for ((xi, u0), u1) in xs[..j - 2].iter_mut().zip(c0).zip(c1) {
+                *xi -= u0 * x0 + u1 * x1;
             }
+            j -= 2;
         }
-        DVector::from_column_slice(x)
+        if j == 1 {
+            xs[0] /= data[0];
+        }
+        x
     }
 }
 
@@ -219,11 +230,20 @@ impl Factors {
     }
 }
 
-/// b - a y, column by column over contiguous slices (so that it vectorizes).
+/// b - a y, two columns at a time over contiguous slices (so that it vectorizes, one pass over
+/// the result per pair).
 fn residual(a: &DMatrix<f64>, y: &DVector<f64>, b: &DVector<f64>) -> DVector<f64> {
     let mut r = b.clone();
     let rows = a.nrows();
-    for (column, yi) in a.as_slice().chunks_exact(rows).zip(y.iter()) {
+    let mut pairs = a.as_slice().chunks_exact(2 * rows);
+    let mut ys = y.as_slice().chunks_exact(2);
+    for (columns, y2) in (&mut pairs).zip(&mut ys) {
+        let (c0, c1) = columns.split_at(rows);
+        for ((ri, a0), a1) in r.as_mut_slice().iter_mut().zip(c0).zip(c1) {
+            *ri -= a0 * y2[0] + a1 * y2[1];
+        }
+    }
+    for (column, yi) in pairs.remainder().chunks_exact(rows).zip(ys.remainder()) {
         for (ri, aki) in r.as_mut_slice().iter_mut().zip(column) {
             *ri -= aki * yi;
         }
