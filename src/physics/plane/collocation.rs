@@ -201,6 +201,11 @@ impl<'a> System<'a> {
         self.rules.len()
     }
 
+    /// The last collocation solved, if any.
+    pub fn last(&self) -> Option<&Collocation> {
+        self.last.as_ref()
+    }
+
     /// The scaled, row-equilibrated matrix and right side at width l (module note).
     fn assemble(&mut self, l: f64) -> (DMatrix<f64>, DVector<f64>) {
         let n = self.rules.len();
