@@ -10,7 +10,7 @@ use wearlab::physics::spatial::partial::sweep::LoadCurve;
 use wearlab::preset::Preset;
 use wearlab::units::format_si;
 
-use crate::tui::charts::{Axis, Figure, Map, Mark, NoFigure, Plot, Scale, Series, axis, mu_line};
+use crate::tui::charts::{Axis, Figure, Map, Mark, NoFigure, Plot, Scale, Series, axis};
 
 /// What the map and the line draw at t.
 pub enum Fields<'a> {
@@ -140,7 +140,7 @@ pub fn running_in(preset: &Preset, c: &CellOutput) -> Result<Figure, NoFigure> {
     );
     mu.markers = now(|s| s.outputs.mu_star);
     mu.x_marks = mark;
-    mu.y_marks = vec![mu_line(preset.friction.coefficient)];
+    mu.against_mu(preset.friction.coefficient);
     Ok(Figure::Plots(vec![fraction, mu]))
 }
 
@@ -184,7 +184,7 @@ pub fn load_curve(
         name: "now".into(),
         points: vec![(preset.spatial.mean_pressure, s.outputs.mu_star)],
     });
-    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    plot.against_mu(preset.friction.coefficient);
     plot.shaded = super::spatial::gaps(&curve.mean_pressure, &curve.mu_star, "P <= 0");
     Ok(Figure::Plots(vec![plot]))
 }

@@ -87,6 +87,9 @@ pub struct Plot {
     pub dim: Vec<(usize, Series)>,
     /// The legend's name of the dim parts.
     pub dim_label: String,
+    /// Differences of y below this (absolute, the y unit) are round-off: y values that differ by
+    /// no more are drawn as the one value they round to (0: only equal values are).
+    pub resolution: f64,
 }
 
 impl Plot {
@@ -103,9 +106,22 @@ impl Plot {
             shaded: Vec::new(),
             dim: Vec::new(),
             dim_label: String::new(),
+            resolution: 0.0,
         }
     }
+
+    /// A plot of mu* (or mu* - mu): the line at mu, and differences under `MU_STAR_RESOLUTION`
+    /// taken as round-off.
+    fn against_mu(&mut self, mu: f64) {
+        self.y_marks = vec![mu_line(mu)];
+        self.resolution = MU_STAR_RESOLUTION;
+    }
 }
+
+/// mu* is a number of the order of mu (0.01 to 10) computed to about 12 significant digits
+/// (`units::CLEAN_DIGITS`): differences under 1e-12 are round-off, not physics (mu* of a
+/// frictionless punch in partial contact scatters by 1e-20 around 0).
+pub const MU_STAR_RESOLUTION: f64 = 1e-12;
 
 /// A scalar field over a rectangle, drawn as a heatmap.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,7 @@ use wearlab::physics::plane::OperatingPoint;
 use wearlab::physics::plane::sweep::Sweep;
 use wearlab::preset::Preset;
 
-use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, mu_line, zip};
+use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, zip};
 
 fn point(out: &PlaneOutput) -> Result<&OperatingPoint, NoFigure> {
     out.point
@@ -126,7 +126,7 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
         name: "now".into(),
         points: vec![(p.solution.inputs.load, p.solution.mu_star)],
     });
-    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    plot.against_mu(preset.friction.coefficient);
     Ok(Figure::Plots(vec![plot]))
 }
 

@@ -73,8 +73,7 @@ pub fn y_scale(plot: &Plot, pins: &[&Plot], toggled: bool) -> Scale {
                     .flat_map(|p| setting(p, true))
                     .map(|p| p.1)
             };
-            let first = ys().find(|v| v.is_finite());
-            if first.is_none_or(|a| ys().filter(|v| v.is_finite()).all(|v| v == a)) {
+            if flat(ys(), plot.resolution).is_some() {
                 Scale::Linear
             } else if ys().all(|v| v > 0.0) {
                 Scale::Log
@@ -129,7 +128,11 @@ pub fn frames<'a>(plots: &'a [Plot], pins: &[&'a [Plot]], toggled: bool) -> Vec<
         .map(|(i, plot)| {
             let pins = pinned(i);
             let y_scale = y_scale(plot, &pins, toggled);
-            let y = bounds(y_values(plot, &pins, y_scale).into_iter());
+            let ys = y_values(plot, &pins, y_scale);
+            let y = match flat(ys.iter().copied(), resolution(plot, y_scale)) {
+                Some(v) => bounds(std::iter::once(v)),
+                None => bounds(ys.into_iter()),
+            };
             Frame {
                 plot,
                 pins,
@@ -159,12 +162,40 @@ fn y_values(plot: &Plot, pins: &[&Plot], y_scale: Scale) -> Vec<f64> {
         .collect()
 }
 
-/// The one value (plot coordinate) of a frame whose y values are all the same (mu*(t) of a
-/// frictionless punch, 0 all along), else None.
+/// The one value of `values` when they all lie within `resolution` of each other: their middle
+/// rounded to a multiple of `resolution` (0 for mu* = 0 give or take 1e-20), or with resolution
+/// 0 the value itself when all are equal; else None (and None for no finite value).
+fn flat(values: impl Iterator<Item = f64>, resolution: f64) -> Option<f64> {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if !lo.is_finite() || hi - lo > resolution {
+        return None;
+    }
+    let mid = 0.5 * (lo + hi);
+    Some(if resolution > 0.0 {
+        (mid / resolution).round() * resolution
+    } else {
+        mid
+    })
+}
+
+/// A plot's resolution in plot coordinates: its own on a linear y axis, none on another (where a
+/// difference of values is not a distance).
+fn resolution(plot: &Plot, y_scale: Scale) -> f64 {
+    match y_scale {
+        Scale::Linear => plot.resolution,
+        _ => 0.0,
+    }
+}
+
+/// The one value (plot coordinate) of a frame whose y values are all the same, or the same to
+/// within the plot's resolution (mu*(t) of a frictionless punch, 0 all along), else None.
 pub fn constant(frame: &Frame) -> Option<f64> {
     let ys = y_values(frame.plot, &frame.pins, frame.y_scale);
-    let first = *ys.first()?;
-    ys.iter().all(|&v| v == first).then_some(first)
+    flat(ys.into_iter(), resolution(frame.plot, frame.y_scale))
 }
 
 /// Liang-Barsky: the part of segment a-b inside the rectangle xs x ys, if any.

@@ -6,9 +6,7 @@ use wearlab::preset::Preset;
 use wearlab::units::format_si;
 
 use crate::tui::charts::contact::{self, Fields};
-use crate::tui::charts::{
-    Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, mu_line, zip,
-};
+use crate::tui::charts::{Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, zip};
 
 /// Directions whose drift velocities differ by less than this fraction of the chart's range
 /// draw as one line (a Braille dot is a fortieth of a ten-row chart).
@@ -115,7 +113,7 @@ pub(super) fn history(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
         }],
     );
     mu.markers = Some(now(vec![(s.time, s.mu_star)]));
-    mu.y_marks = vec![mu_line(preset.friction.coefficient)];
+    mu.against_mu(preset.friction.coefficient);
     Ok(Figure::Plots(vec![amplitudes, mu]))
 }
 
@@ -156,7 +154,7 @@ pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
         name: "now".into(),
         points: vec![(st.solution.inputs.mean_pressure, st.solution.mu_star)],
     });
-    plot.y_marks = vec![mu_line(preset.friction.coefficient)];
+    plot.against_mu(preset.friction.coefficient);
     plot.shaded = gaps(&sw.mean_pressure, &sw.mu_star, "no complete contact");
     Ok(Figure::Plots(vec![plot]))
 }

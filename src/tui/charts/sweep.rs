@@ -12,7 +12,7 @@ use wearlab::explore::curve::{Curve, CurveSpec};
 use wearlab::physics::Spacing;
 use wearlab::preset::{Key, Problem};
 
-use crate::tui::charts::{Axis, Figure, Mark, Plot, Scale, Series, mu_line};
+use crate::tui::charts::{Axis, Figure, Mark, Plot, Scale, Series};
 
 /// The x axis of a parameter: its symbol and unit, log or linear as its range.
 pub fn x_axis(key: Key, spacing: Spacing) -> Axis {
@@ -123,18 +123,23 @@ pub fn figure(
                 _ => {}
             }
         }
+        // a model's check holds or fails; the spatial problem's contact is complete or partial
+        let (holds, fails) = match model {
+            Some(_) => ("ok", "fails"),
+            None => ("complete", "partial"),
+        };
         x_marks.extend(s.changes.iter().filter_map(|c| {
+            let verdict = if c.holds_after { holds } else { fails };
             Some(Mark {
                 at: x_at(c.at)?,
                 label: format!(
                     "{}{}",
                     model.map(|m| format!("{m} ")).unwrap_or_default(),
                     // "beyond" is towards larger x: on a falling group, leftwards
-                    match (c.holds_after, !grouped || s.group_rises_at(&curve.x, c.at)?) {
-                        (true, true) => "ok>",
-                        (false, true) => "fails>",
-                        (true, false) => "<ok",
-                        (false, false) => "<fails",
+                    if !grouped || s.group_rises_at(&curve.x, c.at)? {
+                        format!("{verdict}>")
+                    } else {
+                        format!("<{verdict}")
                     }
                 ),
             })
@@ -158,13 +163,16 @@ pub fn figure(
     plot.x_marks = x_marks;
     plot.dim = dim;
     plot.dim_label = dim_label(problem).into();
-    plot.y_marks = match quantity.name {
-        "mu_star" => vec![mu_line(mu)],
-        "mu_star_minus_mu" => vec![Mark {
-            at: 0.0,
-            label: "0: mu* = mu".into(),
-        }],
-        _ => Vec::new(),
-    };
+    match quantity.name {
+        "mu_star" => plot.against_mu(mu),
+        "mu_star_minus_mu" => {
+            plot.y_marks = vec![Mark {
+                at: 0.0,
+                label: "0: mu* = mu".into(),
+            }];
+            plot.resolution = super::MU_STAR_RESOLUTION;
+        }
+        _ => {}
+    }
     Figure::Plots(vec![plot])
 }
