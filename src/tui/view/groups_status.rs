@@ -126,6 +126,10 @@ fn spatial(
         })
         .collect();
     let room = height.saturating_sub(lines.len() + 1);
+    if room == 0 {
+        // no row fits: a header over nothing is left out (the dimensional status does the same)
+        return lines;
+    }
     let (from, count) = visible(&blocks, selected, room);
     let hidden = blocks.len() - count;
     if hidden > 0 {
