@@ -11,7 +11,7 @@ prints wearlab's, rules warm and, with `cold`, rebuilt for every solve); the rat
 SciPy/wearlab per round, and the median over rounds is reported. Both single-threaded (wearlab uses
 one thread; OpenBLAS is pinned to one by the environment above).
 Case: E = 1e10 Pa, nu = 0.3, h = 1e-5 m, R = 0.05 m, mu = 0.3, k m = 0.5; P chosen for
-(a+b)/h of about 1, 5, 20 and 56 (the last is the strip preset at P = 1e5 N/m).
+(a+b)/h of about 1, 5, 20, 56 and 86 (56 is the strip preset at P = 1e5 N/m).
 """
 import os
 import statistics
@@ -20,7 +20,7 @@ import sys
 import time
 
 E, NU, H, R, MU, KM = 1e10, 0.3, 1e-5, 0.05, 0.3, 0.5
-LOADS = [5.5, 300.0, 1.05e4, 1e5]
+LOADS = [5.5, 300.0, 1.05e4, 1e5, 2.4e5]
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TIMER = os.path.join(REPO, "target", "release", "examples", "strip_point")
 
