@@ -245,7 +245,7 @@ pub const BINDINGS: [Binding; 22] = [
     ),
     binding(
         &[(ch('o'), Action::Open)],
-        "o", "open a preset: bundled or your folder (asks first when there are unsaved edits)",
+        "o", "open a preset: bundled or your folder, each with its whole description (PgUp/PgDn scroll it; asks first when there are unsaved edits)",
         ("o", "open", "", 5), None,
     ),
     binding(
