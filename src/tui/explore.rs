@@ -249,7 +249,7 @@ pub fn move_cell(app: &mut App, action: Action) {
         }
         (Action::Cursor, None) => {
             app.say("cursor: [ ] move it along x, { } along y; the status reads the map there");
-            Some((nx / 2, ny / 2))
+            Some(own_cell(app, &spec).unwrap_or((nx / 2, ny / 2)))
         }
         (Action::MoveCursor(step), Some((i, j))) => {
             let by =
@@ -264,6 +264,32 @@ pub fn move_cell(app: &mut App, action: Action) {
             cell
         }
     };
+}
+
+/// The grid point nearest the preset's own point on the map shown (in each axis' spacing), when
+/// the point lies within the map: where `x` puts the cursor, so that its first read is the
+/// student's own point.
+fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
+    let (answer, _) = shown(app)?;
+    let wearlab::engine::explore::Explored::Map(map) = &answer.explored else {
+        return None;
+    };
+    let nearest = |values: &[f64], at: f64, log: bool| {
+        let place = |v: f64| if log { v.ln() } else { v };
+        let (lo, hi) = (*values.first()?, *values.last()?);
+        if !(lo.min(hi)..=lo.max(hi)).contains(&at) {
+            return None;
+        }
+        (0..values.len()).min_by(|&i, &j| {
+            let d = |k: usize| (place(values[k]) - place(at)).abs();
+            d(i).total_cmp(&d(j))
+        })
+    };
+    let log = |a: &Axis| a.range.spacing == wearlab::physics::Spacing::Log;
+    Some((
+        nearest(&map.x, map.current[0], log(&spec.x))?,
+        nearest(&map.y, map.current[1], log(&spec.y))?,
+    ))
 }
 
 /// What pins, the log y axis and the exports say in the sweep and map views: they work on the

@@ -192,6 +192,9 @@ fn map_screens() {
     insta::assert_snapshot!("map_80x24", screen(&app, 80, 24, PLAIN));
     insta::assert_snapshot!("map_120x40", screen(&app, 120, 40, COLOUR));
     press(&mut app, KeyCode::Char('x'));
+    // at the preset's own point: mu = 0.3, k = 2e-11 on 41 x 41 points over 0..1 and 0..2e-10
+    // (friction-or-wear-map.toml)
+    assert_eq!(app.explore.cell, Some((12, 4)));
     insta::assert_snapshot!("map_cursor_120x40", screen(&app, 120, 40, ASCII));
 }
 

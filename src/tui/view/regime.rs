@@ -146,9 +146,15 @@ pub fn draw(
             }
         }
     }
+    // the preset's own point: '+', but 'o' among the ASCII shades, of which '+' is one
+    let own = if !style.color && style.ascii {
+        'o'
+    } else {
+        '+'
+    };
     let now = at(map.current[0], map.current[1]);
     if let Some(p) = now {
-        buf[p].set_char('+').set_style(ink);
+        buf[p].set_char(own).set_style(ink);
     }
     if let Some((i, j)) = cell {
         if let Some(p) = at(map.x[i.min(nx - 1)], map.y[j.min(ny - 1)]) {
@@ -244,7 +250,7 @@ pub fn draw(
     let mut y = y0 + h + 2;
     // the preset's own point may lie outside the ranges (mu = 0 on a log axis)
     let where_now = if now.is_some() { "" } else { ": off the map" };
-    let words = format!("colour: {}   + now{where_now}", bt.title);
+    let words = format!("colour: {}   {own} now{where_now}", bt.title);
     buf.set_stringn(area.x, y, words, area.width as usize, Style::default());
     for (glyph, wrapped) in &meanings {
         for (k, text) in wrapped.iter().enumerate() {
