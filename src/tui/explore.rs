@@ -293,16 +293,22 @@ fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
 }
 
 /// What pins, the log y axis and the exports say in the sweep and map views: they work on the
-/// charts (Tab); the sweep's numbers come from `wearlab sweep` (the command, with this view's
-/// axes).
+/// charts (Tab); the sweep's numbers come from `wearlab sweep` (the command, with the preset's
+/// file when it holds what is on screen, and this view's axes).
 pub fn not_here(app: &App) -> String {
     let axes: Vec<String> = match wanted(app).map(|w| w.job) {
         Some(Opening::Curve(c)) => vec![vary(&c.axis)],
         Some(Opening::Map(m)) => vec![vary(&m.x), vary(&m.y)],
         None => Vec::new(),
     };
+    // the file, when it holds what is on screen; else the edits must be saved first
+    let preset = match &app.doc.path {
+        Some(path) if !app.doc.dirty => path.display().to_string(),
+        _ => "PRESET (s saves the edits to one)".into(),
+    };
+    // the command first: where the message line cuts, it cuts the words after it
     format!(
-        "pins, y and exports work on the charts (Tab); these numbers as CSV: wearlab sweep PRESET {}",
+        "these numbers as CSV: wearlab sweep {preset} {} (pins, y and exports work on the charts: Tab)",
         axes.join(" ")
     )
 }

@@ -269,7 +269,7 @@ impl SpatialChart {
             },
             Self::Dispersion => Def {
                 title: "dispersion: drift velocity",
-                help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards.",
+                help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards (X* marked where c changes sign). Where the three directions differ by less than a line width the legend says so ('one line') and a second plot draws the 45 and 75 degree curves' differences from the 0 degree one.",
                 overlays: false,
                 build: spatial::dispersion,
             },

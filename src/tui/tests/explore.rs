@@ -237,6 +237,7 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
             press(&mut app, KeyCode::Char('e'));
             let said = app.ui.message.clone().unwrap().text;
             let vary = said.split("--vary ").nth(1).expect(&said);
+            let vary = vary.split_whitespace().next().unwrap();
             let back = wearlab::explore::Axis::parse(&app.doc.preset, vary, 1).unwrap();
             assert_eq!(back, shown, "{}: {vary}", b.file);
             let (_, range) = vary.split_once('=').unwrap();
@@ -279,4 +280,20 @@ fn the_cursor_starts_at_the_operating_point() {
     press(&mut history, KeyCode::Char('x'));
     let s = screen(&history, 120, 40, PLAIN);
     assert!(s.contains("cursor t = 0 s:"), "{s}");
+}
+
+#[test]
+fn e_in_a_sweep_names_the_file_only_while_it_holds_what_is_shown() {
+    let mut app = app("coating-thickness-sweep.toml");
+    app.doc.path = Some("presets/coating-thickness-sweep.toml".into());
+    press(&mut app, KeyCode::Char('e'));
+    let said = app.ui.message.clone().unwrap().text;
+    assert!(
+        said.starts_with("these numbers as CSV: wearlab sweep presets/coating-thickness-sweep.toml --vary material.thickness=0.000001:0.01:40:log"),
+        "{said}"
+    );
+    app.doc.dirty = true;
+    press(&mut app, KeyCode::Char('e'));
+    let said = app.ui.message.clone().unwrap().text;
+    assert!(said.contains("wearlab sweep PRESET (s saves"), "{said}");
 }
