@@ -1,9 +1,11 @@
 //! Every key of the explorer in one place: the bindings of the main screen (key, action, help
-//! line, footer item) and the keys of the prompts. Key handling, the `?` help, the footer and
-//! README's key table are all drawn from these tables.
+//! line, footer item) here, the keys of the prompts in `prompt_keys` (re-exported). Key handling,
+//! the `?` help, the footers and README's key table are all drawn from these tables.
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use wearlab::preset::Problem;
+
+pub use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action, prompt_footer};
 
 /// What a key on the main screen does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,7 +79,7 @@ pub struct Key {
     pub ctrl: bool,
 }
 
-const fn key(code: KeyCode) -> Key {
+pub(crate) const fn key(code: KeyCode) -> Key {
     Key {
         code,
         shift: false,
@@ -85,7 +87,7 @@ const fn key(code: KeyCode) -> Key {
     }
 }
 
-const fn ch(c: char) -> Key {
+pub(crate) const fn ch(c: char) -> Key {
     key(KeyCode::Char(c))
 }
 
@@ -290,99 +292,6 @@ pub fn lookup(ev: &KeyEvent) -> Option<(&'static Binding, Action)> {
     })
 }
 
-/// What a key does in a prompt (typing a value, a choice list, the help or the preset's
-/// description, the picker, the save
-/// prompt, a yes/no question).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PromptAction {
-    /// Move up in a list, or scroll up.
-    Up,
-    /// Move down, or scroll down.
-    Down,
-    /// A page up.
-    PageUp,
-    /// A page down.
-    PageDown,
-    /// Apply / open / save.
-    Accept,
-    /// Close without doing anything.
-    Cancel,
-    /// Delete the last character typed.
-    Backspace,
-    /// Answer yes.
-    Yes,
-    /// Answer no.
-    No,
-    /// The previous choice of a form's row.
-    Left,
-    /// The next choice of a form's row.
-    Right,
-}
-
-/// The kinds of prompt, for their key lists.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Prompt {
-    /// Typing text (a value, a file name).
-    Text,
-    /// Choosing from a list (a choice row).
-    List,
-    /// Choosing a preset, its description scrolling.
-    Picker,
-    /// Reading the help or the preset's description.
-    Help,
-    /// A yes/no question.
-    Question,
-    /// A form of several rows (the sweep's and the map's axes).
-    Form,
-}
-
-/// The keys of each prompt with their footer text ("" for a key the footer does not name).
-#[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 34] = [
-    (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
-    (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-    (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
-    (Prompt::List, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
-    (Prompt::List, ch('k'), PromptAction::Up, ""),
-    (Prompt::List, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::List, ch('j'), PromptAction::Down, ""),
-    (Prompt::List, key(KeyCode::Enter), PromptAction::Accept, "⏎ take"),
-    (Prompt::List, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-    (Prompt::Picker, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
-    (Prompt::Picker, ch('k'), PromptAction::Up, ""),
-    (Prompt::Picker, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::Picker, ch('j'), PromptAction::Down, ""),
-    (Prompt::Picker, key(KeyCode::PageUp), PromptAction::PageUp, "PgUp PgDn text"),
-    (Prompt::Picker, key(KeyCode::PageDown), PromptAction::PageDown, ""),
-    (Prompt::Picker, key(KeyCode::Enter), PromptAction::Accept, "⏎ open"),
-    (Prompt::Picker, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-    (Prompt::Help, key(KeyCode::Up), PromptAction::Up, "↑↓ PgUp PgDn scroll"),
-    (Prompt::Help, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::Help, key(KeyCode::PageUp), PromptAction::PageUp, ""),
-    (Prompt::Help, key(KeyCode::PageDown), PromptAction::PageDown, ""),
-    (Prompt::Help, key(KeyCode::Esc), PromptAction::Cancel, "Esc or ? close"),
-    (Prompt::Help, ch('?'), PromptAction::Cancel, ""),
-    (Prompt::Help, ch('q'), PromptAction::Cancel, ""),
-    (Prompt::Question, ch('y'), PromptAction::Yes, "y yes"),
-    (Prompt::Question, ch('n'), PromptAction::No, "n no"),
-    (Prompt::Question, key(KeyCode::Esc), PromptAction::No, "Esc no"),
-    (Prompt::Form, key(KeyCode::Up), PromptAction::Up, "↑↓ row"),
-    (Prompt::Form, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::Form, key(KeyCode::Left), PromptAction::Left, "←→ choose"),
-    (Prompt::Form, key(KeyCode::Right), PromptAction::Right, ""),
-    (Prompt::Form, key(KeyCode::Backspace), PromptAction::Backspace, "type ⌫"),
-    (Prompt::Form, key(KeyCode::Enter), PromptAction::Accept, "⏎ show"),
-    (Prompt::Form, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-];
-
-/// What a key does in a prompt, if anything.
-pub fn prompt_action(prompt: Prompt, ev: &KeyEvent) -> Option<PromptAction> {
-    PROMPT_KEYS
-        .iter()
-        .find(|(p, k, _, _)| *p == prompt && k.matches(ev))
-        .map(|(_, _, a, _)| *a)
-}
-
 /// True for Ctrl-C, which quits from every mode.
 pub fn is_ctrl_c(ev: &KeyEvent) -> bool {
     CTRL_C.matches(ev)
@@ -420,15 +329,4 @@ pub fn footer(problem: Problem, width: usize) -> String {
         .flat_map(|shortened| [render(shortened, "  "), render(shortened, " ")])
         .find(fits)
         .unwrap_or_else(|| render(u8::MAX, " "))
-}
-
-/// The footer of a prompt: its keys, then Ctrl-C.
-pub fn prompt_footer(prompt: Prompt) -> String {
-    PROMPT_KEYS
-        .iter()
-        .filter(|(p, _, _, text)| *p == prompt && !text.is_empty())
-        .map(|(_, _, _, text)| *text)
-        .chain(["Ctrl-C quit"])
-        .collect::<Vec<_>>()
-        .join("  ")
 }
