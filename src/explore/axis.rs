@@ -128,9 +128,10 @@ impl Axis {
 
     /// The range the explorer offers first for `key`: a decade either side of the value (of the
     /// parameter's typical magnitude when the value is 0), log, clamped to the limit; a phase
-    /// runs linearly over pi either side. Both ends are `units::clean` (at most 12 significant
-    /// digits), so the form's text and the `--vary` command read back to this very range; below
-    /// an excluded maximum (nu < 1/2) the top end is a thousandth under it (0.4995).
+    /// runs linearly over pi either side. Both ends are rounded outwards to three significant
+    /// digits (5.79e-13 to 5.8e-11 about k = 5.793239928544991e-12), so the form's text and the
+    /// `--vary` command are short and read back to this very range; below an excluded maximum
+    /// (nu < 1/2) the top end is a thousandth under it (0.4995).
     pub fn default_for(preset: &Preset, key: Key) -> Result<Axis, String> {
         let param = key.param();
         let (Some(limit), Some(typical)) = (param.limit(), param.typical()) else {
@@ -147,8 +148,8 @@ impl Axis {
             };
             (centre / 10.0, centre * 10.0, Spacing::Log)
         };
-        let lo = clean(lo).max(limit.min);
-        let hi = clean(hi).min(limit.max);
+        let lo = outward(lo, false).max(limit.min);
+        let hi = outward(hi, true).min(limit.max);
         let hi = if limit.accepts(hi) {
             hi
         } else {
@@ -156,4 +157,23 @@ impl Axis {
         };
         Axis::new(preset, key, [lo, hi], CURVE_POINTS, spacing)
     }
+}
+
+/// `v` rounded to three significant digits away from the middle of a range: down for its lower
+/// end (`up` false), up for its upper end; a value already at three digits stays as it is.
+fn outward(v: f64, up: bool) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    let step = 10f64.powi(v.abs().log10().floor() as i32 - 2);
+    let n = v / step;
+    let whole = n.round();
+    let n = if (n - whole).abs() <= 1e-9 * whole.abs() {
+        whole
+    } else if up {
+        n.ceil()
+    } else {
+        n.floor()
+    };
+    clean(n * step)
 }
