@@ -8,7 +8,8 @@ use wearlab::preset::{self, BUNDLED, Preset, SaveTarget};
 
 use crate::tui::app::{Msg, PickerEntry};
 
-/// The picker's entries: the bundled presets, then the `.toml` files of the user's folder.
+/// The picker's entries: the bundled presets, then the `.toml` files of the user's folder, each
+/// titled by its file and its name ("my lab.toml: Hertz check: ...").
 pub fn list_presets(user_dir: Option<&Path>) -> Msg {
     let entry = |title_if_broken: &str, source, path, preset: Result<Preset, String>| PickerEntry {
         title: preset
@@ -34,7 +35,11 @@ pub fn list_presets(user_dir: Option<&Path>) -> Msg {
         for path in files {
             let p = preset::load(&path).map_err(|e| e.to_string());
             let source = path.display().to_string();
-            out.push(entry("(unreadable)", source, Some(path), p));
+            let mut e = entry("(unreadable)", source, Some(path.clone()), p);
+            // the file first: a saved copy of a bundled preset keeps its name
+            let file = path.file_name().unwrap_or_default().to_string_lossy();
+            e.title = format!("{file}: {}", e.title);
+            out.push(e);
         }
     }
     Msg::PresetsListed(out)

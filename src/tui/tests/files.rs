@@ -297,3 +297,23 @@ fn the_picker_shows_every_description_whole() {
         }
     }
 }
+
+#[test]
+fn a_preset_of_the_users_folder_is_listed_by_its_file_and_its_name() {
+    // a saved copy of a bundled preset keeps the bundled name: the list says which file it is
+    let dir = tempfile::tempdir().unwrap();
+    let text = wearlab::preset::BUNDLED[1].text;
+    std::fs::write(dir.path().join("my lab.toml"), text).unwrap();
+    std::fs::write(dir.path().join("broken.toml"), "schema = ").unwrap();
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(Some(dir.path())) else {
+        panic!()
+    };
+    let titles: Vec<&str> = entries.iter().map(|e| e.title.as_str()).collect();
+    let bundled_name = bundled("hertz-check.toml").name;
+    assert!(titles.contains(&bundled_name.as_str()), "{titles:?}");
+    assert!(
+        titles.contains(&format!("my lab.toml: {bundled_name}").as_str()),
+        "{titles:?}"
+    );
+    assert!(titles.contains(&"broken.toml: (unreadable)"), "{titles:?}");
+}
