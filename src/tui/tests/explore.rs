@@ -297,3 +297,26 @@ fn e_in_a_sweep_names_the_file_only_while_it_holds_what_is_shown() {
     let said = app.ui.message.clone().unwrap().text;
     assert!(said.contains("wearlab sweep PRESET (s saves"), "{said}");
 }
+
+#[test]
+fn the_help_explains_the_view_on_screen() {
+    // in the sweep or map view the help's chart section is about that view, not about the chart
+    // under it ("This chart (1/4): pressure and shear" while the sweep was shown)
+    let text = |app: &App| {
+        crate::tui::view::popups::help_lines(app, PLAIN, 78)
+            .iter()
+            .map(|l| l.to_string())
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let sweep = app("coating-thickness-sweep.toml");
+    let s = text(&sweep);
+    assert!(
+        s.contains("This view: the sweep chart (v)") && !s.contains("This chart"),
+        "{s}"
+    );
+    let map = app("friction-or-wear-map.toml");
+    assert!(text(&map).contains("This view: the regime map (M)"));
+    let charts = app("polymer-coating.toml");
+    assert!(text(&charts).contains("This chart (1/4): pressure and shear"));
+}

@@ -47,6 +47,26 @@ pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
     }
 }
 
+/// The help's text on the sweep chart (`?` while it is shown).
+pub const SWEEP_HELP: &str = "A quantity against one input over the range chosen with v (the form \
+    says what each field allows): the preset's model first, the other plane models overlaid (the \
+    first curve sets the y range; a curve outside it is named with its range). Where a model's own \
+    validity check fails its curve is drawn dim (spatial: where the contact is partial), without \
+    colour in a mark of its own that the legend names; where the verdict changes the x axis is \
+    marked ('wide ok>', 'narrow fails>', 'complete>'), and the input's current value 'now'. x \
+    shows a cursor (at now), [ ] { } move it, and the status reads every curve there. D puts the \
+    input's dimensionless group on the x axis where it has one. e says the wearlab sweep command \
+    of the same numbers; Tab goes back to the charts.";
+
+/// The help's text on the regime map (`?` while it is shown).
+pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours (viridis, or \
+    shades without colour) read on the bar at the right; coarse first, then refined pass by pass. \
+    Letters draw the library's lines: 0 where theta = 0 (friction wins where theta > 0, wear where \
+    it is < 0), W and N where the wide and the narrow model's validity checks change, C where \
+    complete contact is lost; + is the preset's own point (o among --ascii shades). x shows a \
+    cursor (at the preset's point), [ ] move it along x, { } along y, and the status reads both \
+    inputs, the quantity, theta and the verdicts there. Tab goes back to the charts.";
+
 /// What the chart says instead of the preset's "Look at:" paragraph where the paragraph does not
 /// fit whole.
 pub const LESSON_ELSEWHERE: &str = "Look at: i shows the preset's notes on this view";

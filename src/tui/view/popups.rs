@@ -7,6 +7,8 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::tui::app::App;
+use crate::tui::explore::View;
+use crate::tui::view::explore;
 use crate::tui::view::layout::centered;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
@@ -39,10 +41,19 @@ pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'st
     }
     let chart = app.ui.chart;
     let (i, n) = chart.position();
+    // what the chart area shows: the sweep or the map over the charts when one is on
+    let (title, text) = match app.explore.view {
+        Some(View::Sweep) => ("This view: the sweep chart (v)".into(), explore::SWEEP_HELP),
+        Some(View::Map) => ("This view: the regime map (M)".into(), explore::MAP_HELP),
+        None => (
+            format!("This chart ({i}/{n}): {}", chart.title()),
+            chart.help(),
+        ),
+    };
     lines.push(Line::from(""));
-    lines.push(heading(format!("This chart ({i}/{n}): {}", chart.title())));
+    lines.push(heading(title));
     lines.extend(
-        wrap(chart.help(), width.saturating_sub(2))
+        wrap(text, width.saturating_sub(2))
             .into_iter()
             .map(|t| Line::from(format!("  {t}"))),
     );
