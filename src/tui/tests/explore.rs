@@ -320,3 +320,16 @@ fn the_help_explains_the_view_on_screen() {
     let charts = app("polymer-coating.toml");
     assert!(text(&charts).contains("This chart (1/4): pressure and shear"));
 }
+
+#[test]
+fn the_legend_names_only_the_dim_parts_that_show() {
+    // polymer-coating's mu*(P) sweep: the narrow curve is off scale (0.3..0.3003 above the wide
+    // one's range), its failing part with it; the legend named it (",, narrow fails") all the same
+    let mut app = solved("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('v'));
+    let cmds = press(&mut app, KeyCode::Enter);
+    explored(&mut app, &cmds);
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("mu* narrow: off scale"), "{s}");
+    assert!(!s.contains("narrow fails"), "{s}");
+}

@@ -107,8 +107,17 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
         style: style.mark(),
         text: m.label.clone(),
     }));
-    // the dim parts: once, or without colour each curve's mark with its name ("'' narrow fails")
-    let mut owners: Vec<(usize, &str)> = plot.dim.iter().map(|(i, d)| (*i, &*d.name)).collect();
+    // the dim parts that show (a curve off scale shows none): once, or without colour each
+    // curve's mark with its name ("'' narrow fails")
+    let shows = |d: &crate::tui::charts::Series| {
+        plotted(&d.points, xs, ys)
+            .iter()
+            .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1))
+    };
+    let mut owners: Vec<(usize, &str)> = (plot.dim.iter())
+        .filter(|(_, d)| shows(d))
+        .map(|(i, d)| (*i, &*d.name))
+        .collect();
     owners.sort_by_key(|o| o.0);
     owners.dedup_by_key(|o| o.0);
     let each = !style.braille() && plot.series.len() > 1 && owners.iter().all(|o| !o.1.is_empty());
