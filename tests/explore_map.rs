@@ -269,7 +269,7 @@ fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution()
     // a + b of the solution at that point divided by the h swept there
     let p = preset("coating-thickness-sweep.toml");
     let spec = CurveSpec {
-        axis: axis(&p, "material.thickness", [1e-5, 1e-3], 3, Spacing::Log),
+        axis: axis(&p, "material.thickness", [1e-5, 1e-3], 4, Spacing::Log),
         quantity: QuantityKey::parse("mu_star", &p).unwrap(),
         models: vec![Model::Wide, Model::Narrow],
     };
@@ -286,6 +286,17 @@ fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution()
                 "{got} vs {expected}"
             );
         }
+        // "now" on the group axis: the width of the preset's own operating point (h = 100 um,
+        // between the sweep points 46 and 215 um) over its h, not a value interpolated between them
+        let mut own = p.clone();
+        own.plane.model = s.model.unwrap();
+        let here = wearlab::explore::point::solve(&own).unwrap();
+        let expected = width.value(&here).unwrap() / p.get(spec.axis.key).unwrap();
+        let got = s.current_group.unwrap();
+        assert!(
+            (got - expected).abs() <= 1e-14 * expected,
+            "now: {got} vs {expected}"
+        );
     }
     // an input without a group keeps its dimensional axis
     let e = CurveSpec {
@@ -294,4 +305,5 @@ fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution()
     };
     let c = curve(&p, &e, &AtomicBool::new(false)).unwrap();
     assert!(c.group.is_none() && c.series[0].group.iter().all(Option::is_none));
+    assert!(c.series[0].current_group.is_none());
 }

@@ -55,6 +55,10 @@ pub struct Series {
     /// The swept input's group (`Curve::group`) at each x, from this model's solution there; None
     /// where there is no solution or the curve has no group.
     pub group: Vec<Option<f64>>,
+    /// The group at the preset's own value of the input (`Curve::current`), from this model's
+    /// solution there: where "now" lies on the group axis (the operating point's own group, not
+    /// one interpolated between sweep points); None as for `group`.
+    pub current_group: Option<f64>,
 }
 
 impl Series {
@@ -163,6 +167,23 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
         })
         .collect();
     let answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
+    let current = preset.get(spec.axis.key).ok()?;
+    let current_groups: Vec<Option<f64>> = match group {
+        Some(g) => models
+            .par_iter()
+            .map(|m| {
+                if cancel.load(Ordering::Relaxed) {
+                    return None;
+                }
+                Some(
+                    solve_at(preset, &axes, &[current], *m)
+                        .ok()
+                        .and_then(|p| g.value(&p).ok()),
+                )
+            })
+            .collect::<Option<_>>()?,
+        None => vec![None; models.len()],
+    };
     let mut series = Vec::new();
     for (m, model) in models.iter().enumerate() {
         let own = &answers[m * x.len()..(m + 1) * x.len()];
@@ -174,10 +195,11 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
             holds,
             changes,
             group: own.iter().map(|a| a.2).collect(),
+            current_group: current_groups[m],
         });
     }
     Some(Curve {
-        current: preset.get(spec.axis.key).ok()?,
+        current,
         x,
         series,
         group,

@@ -5,8 +5,9 @@
 //! current value of the parameter is marked "now". In the dimensionless view (`D`) the x axis is
 //! the swept input's group (`Curve::group`, computed by the library at each point), each curve
 //! drawn through its points in the sweep's order (a parametric curve where the group is not
-//! monotone), the marks placed at the group interpolated between the neighbouring points; an
-//! input without a group keeps its dimensional axis, titled so.
+//! monotone), "now" at the operating point's own group and the verdict changes at the group
+//! interpolated between the neighbouring points; an input without a group keeps its dimensional
+//! axis, titled so.
 
 use wearlab::explore::curve::{Curve, CurveSpec};
 use wearlab::physics::Spacing;
@@ -94,7 +95,12 @@ pub fn figure(
         };
         let point = |k: usize| Some((x_of(k)?, *s.y[k].as_ref().ok()?));
         if i == 0 {
-            x_marks.extend(x_at(curve.current).map(|at| Mark {
+            let now = if grouped {
+                s.current_group
+            } else {
+                Some(curve.current)
+            };
+            x_marks.extend(now.map(|at| Mark {
                 at,
                 label: "now".into(),
             }));
