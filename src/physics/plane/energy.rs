@@ -30,6 +30,12 @@ pub struct Energy {
     pub residual: f64,
 }
 
+/// The residual's round-off floor (dimensionless): I and J are sums of some hundreds of
+/// quadrature terms, each exact to about 1.1e-16 (f64's unit round-off), so a residual below this
+/// says I = J to the precision of the arithmetic and its digits carry no information (they move
+/// with the last bits of the solution).
+pub const RESIDUAL_ROUND_OFF: f64 = 1e-14;
+
 /// p.v. integral of q(s)/(s - x) over [lo, hi] for lo < x < hi.
 fn hilbert(rule: &GaussRule, lo: f64, hi: f64, x: f64, q: &impl Fn(f64) -> f64) -> f64 {
     let qx = q(x);

@@ -15,6 +15,7 @@ pub mod operating_point;
 pub mod profile;
 pub mod strip;
 mod strip_factors;
+mod strip_kernels;
 pub mod sweep;
 pub mod validity;
 pub mod wide;

@@ -8,6 +8,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 use wearlab::engine::{Answer, Output, SpatialOutput};
 use wearlab::physics::plane::OperatingPoint;
+use wearlab::physics::plane::energy::RESIDUAL_ROUND_OFF;
 use wearlab::physics::plane::validity::StripCheck;
 use wearlab::units::format_si;
 
@@ -130,9 +131,18 @@ fn plane(
         format!("Q2 = {}", format_si(s.normal_force, "N/m")),
         format!("psi = {}", format_si(s.psi, "N/m")),
         mu_star(s.mu_star, s.inputs.friction.coefficient),
-        format!("I-J residual {:.1e}", p.energy.residual),
+        residual(p.energy.residual),
     ]);
     with_validity(&items, p, check, style, width, height)
+}
+
+/// The energy identity's residual, or "< 1e-14" at round-off (whose digits mean nothing).
+fn residual(r: f64) -> String {
+    if r < RESIDUAL_ROUND_OFF {
+        format!("I-J residual < {RESIDUAL_ROUND_OFF:.0e}")
+    } else {
+        format!("I-J residual {r:.1e}")
+    }
 }
 
 /// A plane status: `items` packed into lines, then the validity lines in the room left (the
