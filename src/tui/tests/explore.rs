@@ -181,6 +181,15 @@ fn sweep_screens_in_groups() {
     let cursor = screen(&app, 120, 40, PLAIN);
     assert!(cursor.contains("cursor (a+b)/h =") && cursor.contains("(strip: h = "));
     insta::assert_snapshot!("sweep_groups_cursor_120x40", cursor);
+    // at 80x24 the status folds to four lines, one per curve: the swept input is on the
+    // cursor's own line, not cut off after the curves
+    let small = screen(&app, 80, 24, PLAIN);
+    let line = small
+        .lines()
+        .find(|l| l.contains("cursor (a+b)/h ="))
+        .unwrap();
+    assert!(line.contains("(strip: h = "), "{small}");
+    insta::assert_snapshot!("sweep_groups_cursor_80x24", small);
 }
 
 #[test]

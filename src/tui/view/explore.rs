@@ -204,10 +204,16 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
             let plots = sweep_plots(app)?;
             let frames = frames(&plots, &[], false);
             let mut items = read(&frames, cursor);
-            items[0] = format!("cursor {}:", items[0]);
-            if app.explore.dimensionless {
-                items.extend(input_at(app, &frames, cursor));
-            }
+            // the swept input beside the group, on the first line: the status folds to four
+            // lines below 32 rows, and at 80 columns each curve takes a line of its own
+            let input = app
+                .explore
+                .dimensionless
+                .then(|| input_at(app, &frames, cursor))
+                .flatten()
+                .map(|v| format!(" {v}"))
+                .unwrap_or_default();
+            items[0] = format!("cursor {}{input}:", items[0]);
             Some(items)
         }
         View::Map => {
