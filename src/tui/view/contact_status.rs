@@ -8,7 +8,7 @@ use wearlab::physics::spatial::SpatialSolution;
 use wearlab::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
 use wearlab::units::format_si;
 
-use crate::tui::view::status::pack;
+use crate::tui::view::status::{mu_star, pack};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
 
@@ -62,7 +62,7 @@ pub fn head(
         ));
     }
     values.extend([
-        format!("mu* = {:.8} (mu {mu})", o.mu_star),
+        mu_star(o.mu_star, mu),
         format!("psi = {}", format_si(o.psi, "Pa")),
     ]);
     let mut lines: Vec<Line> = pack(&first, width, "")
