@@ -5,6 +5,8 @@ page faults of new multi-MB arrays), "reused" writes them into arrays allocated 
 `field_into` does). CPU time of this process (time.process_time), best of 7 repeats.
 
 Usage: OPENBLAS_NUM_THREADS=1 python3 benches/reference/spatial_field.py SCIPY_REFERENCE_DIR
+Prefix it and the bench with MALLOC_MMAP_THRESHOLD_=33554432 MALLOC_TRIM_THRESHOLD_=268435456 for
+glibc to keep freed memory: fresh results then cost no page faults in either (README, Speed).
 The cases are those of benches/spatial_field.rs (8 harmonics on 128 x 128, 32 on 512 x 512).
 Not used by the Rust build or tests."""
 import sys, time, timeit
