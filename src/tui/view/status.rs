@@ -215,8 +215,8 @@ fn spatial(
         .collect();
     // the header says how many rows do not fit
     let room = height.saturating_sub(lines.len() + 1 + usize::from(own_line));
-    if partial && room == 0 {
-        // no row fits: the rates of a later state are left out rather than headed alone
+    if room == 0 {
+        // no row fits: a header over nothing (with "+N more") is left out, as in the groups
         return lines;
     }
     let (first, count) = visible(&blocks, selected, room);
