@@ -207,6 +207,28 @@ fn map_screens() {
     insta::assert_snapshot!("map_cursor_120x40", screen(&app, 120, 40, ASCII));
 }
 
+#[test]
+fn the_map_cursor_reads_mu_star_with_six_decimals() {
+    // a map of mu* (not mu* - mu): the cursor gives mu* as the status does, six decimals, so
+    // that mu* - mu reads off (friction-or-wear-map's mu* is 0.2998 to four digits, beside 0.3)
+    let mut preset = bundled("friction-or-wear-map.toml");
+    let mu_star = wearlab::explore::QuantityKey::parse("mu_star", &preset).unwrap();
+    let section = preset.explore.as_mut().unwrap();
+    section.quantity = mu_star;
+    for axis in &mut section.axes {
+        axis.range.points = 5;
+    }
+    let mut app = App::new(preset, None, Places::default());
+    let cmds = app.start();
+    settle(&mut app, cmds.clone());
+    explored(&mut app, &cmds);
+    press(&mut app, KeyCode::Char('x'));
+    let items = crate::tui::view::explore::readout(&app).unwrap();
+    let read = items.iter().find(|i| i.starts_with("mu* = ")).unwrap();
+    let decimals = read.trim_start_matches("mu* = ").split('.').nth(1).unwrap();
+    assert_eq!(decimals.len(), 6, "{items:?}");
+}
+
 /// The significant digits of a number as written ("0.0035" 2, "2.5e-10" 2, "-3.14159265359" 12).
 fn significant_digits(text: &str) -> usize {
     let mantissa = text.split(['e', 'E']).next().unwrap_or("");

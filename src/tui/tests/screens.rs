@@ -198,7 +198,10 @@ fn cursor_pin_expand_log_y_and_ascii_markers() {
     // at 80x24 the status keeps three lines: no room for a harmonic's row, so no header over
     // nothing ("n k [rad/m] 1/beta ... +1 more"), as in the groups status
     let small = screen(&map, 80, 24, PLAIN);
-    assert!(!small.contains("1/beta") && !small.contains("more"), "{small}");
+    assert!(
+        !small.contains("1/beta") && !small.contains("more"),
+        "{small}"
+    );
     both("mode_expand", &map, PLAIN);
     // a(P) of the Hertz check on log axes: a straight line of slope 1/2
     let mut hertz = solved("hertz-check.toml");

@@ -273,6 +273,8 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
     let s = map.sample(i, j)?;
     let q = spec.quantity;
     let value = match &s.value {
+        // mu* with six decimals, as the status gives it (0.299802, not 0.2998 beside mu = 0.3)
+        Ok(v) if q.quantity().name == "mu_star" => format!("{v:.6}"),
         Ok(v) => format_si(*v, q.quantity().unit),
         Err(why) => format!("none ({why})"),
     };
