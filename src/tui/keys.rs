@@ -205,7 +205,7 @@ pub const BINDINGS: [Binding; 22] = [
     ),
     binding(
         &[(ch('+'), Action::AddHarmonic), (ch('-'), Action::RemoveHarmonic)],
-        "+ / -", "add a harmonic / remove the selected one (or the last)",
+        "+ / -", "add a harmonic / remove the selected one, or the last",
         ("+/-", "harmonic", "", 3), Some(Problem::Spatial),
     ),
     binding(
