@@ -167,6 +167,38 @@ fn sweep_screens() {
 }
 
 #[test]
+fn one_legend_entry_for_the_dim_parts_of_several_models_takes_no_models_colour() {
+    // coating-thickness-sweep in colour: the wide and the narrow model both fail somewhere,
+    // named once ("dim: the model's validity check fails"); its sample was the wide model's
+    // colour, as if only the wide model's parts were dim
+    let mut app = app("coating-thickness-sweep.toml");
+    let cmds = app.start();
+    settle(&mut app, cmds.clone());
+    explored(&mut app, &cmds);
+    let mut terminal = Terminal::new(TestBackend::new(80, 24)).unwrap();
+    terminal.draw(|f| view(&app, COLOUR, f)).unwrap();
+    let buffer = terminal.backend().buffer();
+    let text = terminal.backend().to_string();
+    let row = text
+        .lines()
+        .position(|l| l.contains("── dim: the model"))
+        .unwrap();
+    let line: Vec<char> = text
+        .lines()
+        .nth(row)
+        .unwrap()
+        .trim_matches('"')
+        .chars()
+        .collect();
+    let column = (0..line.len())
+        .find(|&c| line[c..].starts_with(&['─', '─', ' ', 'd']))
+        .unwrap();
+    let sample = &buffer[(column as u16, row as u16)];
+    assert_eq!(sample.fg, ratatui::style::Color::Reset, "{sample:?}");
+    assert!(sample.modifier.contains(ratatui::style::Modifier::DIM));
+}
+
+#[test]
 fn sweep_screens_in_groups() {
     let mut app = app("coating-thickness-sweep.toml");
     let cmds = app.start();

@@ -121,6 +121,8 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
     owners.sort_by_key(|o| o.0);
     owners.dedup_by_key(|o| o.0);
     let each = !style.braille() && plot.series.len() > 1 && owners.iter().all(|o| !o.1.is_empty());
+    // one entry for the dim parts of several curves: its sample in no curve's colour
+    let shared = !each && owners.len() > 1;
     if !each {
         owners.truncate(1);
     }
@@ -128,7 +130,7 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
         let ink = style.dim_ink(i);
         Entry {
             sample: style.sample(ink),
-            style: ink.style,
+            style: if shared { style.mark() } else { ink.style },
             text: if each {
                 name.to_string()
             } else {
