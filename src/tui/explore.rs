@@ -296,10 +296,21 @@ fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
 /// charts (Tab); the sweep's numbers come from `wearlab sweep` (the command, with the preset's
 /// file when it holds what is on screen, and this view's axes).
 pub fn not_here(app: &App) -> String {
-    let axes: Vec<String> = match wanted(app).map(|w| w.job) {
+    let job = wanted(app).map(|w| w.job);
+    let axes: Vec<String> = match &job {
         Some(Opening::Curve(c)) => vec![vary(&c.axis)],
         Some(Opening::Map(m)) => vec![vary(&m.x), vary(&m.y)],
         None => Vec::new(),
+    };
+    // the command solves the preset's model only: where other models are overlaid, it gives
+    // that model's curve, not every number on screen
+    let what = match &job {
+        Some(Opening::Curve(c))
+            if app.doc.preset.problem == Problem::Plane && c.models.len() > 1 =>
+        {
+            format!("the {} curve", app.doc.preset.plane.model.name())
+        }
+        _ => "these numbers".to_string(),
     };
     // the file, when it holds what is on screen; else the edits must be saved first
     let preset = match &app.doc.path {
@@ -308,7 +319,7 @@ pub fn not_here(app: &App) -> String {
     };
     // the command first: where the message line cuts, it cuts the words after it
     format!(
-        "these numbers as CSV: wearlab sweep {preset} {} (pins, y and exports work on the charts: Tab)",
+        "{what} as CSV: wearlab sweep {preset} {} (pins, y and exports work on the charts: Tab)",
         axes.join(" ")
     )
 }

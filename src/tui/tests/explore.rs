@@ -352,7 +352,8 @@ fn e_in_a_sweep_names_the_file_only_while_it_holds_what_is_shown() {
     press(&mut app, KeyCode::Char('e'));
     let said = app.ui.message.clone().unwrap().text;
     assert!(
-        said.starts_with("these numbers as CSV: wearlab sweep presets/coating-thickness-sweep.toml --vary material.thickness=0.000001:0.01:40:log"),
+        // the strip model's: the command solves the preset's model, not the overlaid ones
+        said.starts_with("the strip curve as CSV: wearlab sweep presets/coating-thickness-sweep.toml --vary material.thickness=0.000001:0.01:40:log"),
         "{said}"
     );
     app.doc.dirty = true;
