@@ -1,8 +1,9 @@
-//! The ranges charts are drawn over, and the status panel's packing and scrolling.
+//! The ranges charts are drawn over, the status panel's packing and scrolling, and wrapping.
 
 use crate::tui::charts::range::{bounds, frames};
 use crate::tui::charts::{Axis, Plot, Scale, Series};
 use crate::tui::view::status::{pack, visible};
+use crate::tui::view::wrap;
 
 fn axis(unit: &'static str, scale: Scale) -> Axis {
     Axis {
@@ -171,4 +172,17 @@ fn the_readout_names_the_curve_alone_with_the_digits_of_its_axis() {
     // a wide axis keeps six significant digits
     assert_eq!(value(0.31234567, "", Some(0.05)), "0.312346");
     assert_eq!(value(0.31234567, "", None), "0.312346");
+}
+
+#[test]
+fn wrapping_keeps_a_number_with_its_unit_and_a_key_pair_whole() {
+    // contact-lost's description at 80 columns read "(5" / "MPa)", the help "[" / "] move"
+    let text = "under a quarter of its mean pressure (5 MPa). at h = 1 um; chart, [ ] move it";
+    let lines = wrap(text, 38);
+    assert_eq!(lines[0], "under a quarter of its mean pressure");
+    assert_eq!(lines[1], "(5 MPa). at h = 1 um; chart, [ ] move");
+    assert_eq!(wrap("to h = 1 um", 8), ["to h =", "1 um"]);
+    assert_eq!(wrap("chart, [ ] move", 8), ["chart,", "[ ] move"]);
+    // a word that is no unit, after a number, may start the next line
+    assert_eq!(wrap("k = 2 is", 5), ["k = 2", "is"]);
 }

@@ -142,11 +142,22 @@ fn too_small(frame: &mut Frame, area: Rect) {
     frame.render_widget(Paragraph::new(text).alignment(Alignment::Center), rect);
 }
 
-/// Wraps `text` into lines of at most `width` columns at spaces.
+/// Wraps `text` into lines of at most `width` columns at spaces, never between a number and its
+/// unit ("5 MPa", "1 um") nor inside a key pair ("[ ]", "{ }").
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut words: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match words.last_mut() {
+            Some(last) if glued(last, word) => {
+                last.push(' ');
+                last.push_str(word);
+            }
+            _ => words.push(word.to_string()),
+        }
+    }
     let mut lines = Vec::new();
     let mut line = String::new();
-    for word in text.split_whitespace() {
+    for word in &words {
         if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
             lines.push(std::mem::take(&mut line));
         }
@@ -159,6 +170,23 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// Whether `next` stays on the line of `word`: a unit after a number, "]" after "[", "}" after
+/// "{".
+fn glued(word: &str, next: &str) -> bool {
+    const UNITS: [&str; 9] = ["m", "s", "Pa", "N/m", "m/s", "rad", "rad/m", "1/Pa", "%"];
+    const PREFIXES: [&str; 10] = ["", "f", "p", "n", "u", "m", "k", "M", "G", "T"];
+    if (word == "[" && next.starts_with(']')) || (word == "{" && next.starts_with('}')) {
+        return true;
+    }
+    let number = word.trim_start_matches(['(', '~']).parse::<f64>().is_ok();
+    let unit = next.trim_end_matches([')', ',', '.', ';', ':']);
+    number
+        && UNITS.iter().any(|u| {
+            unit.strip_suffix(u)
+                .is_some_and(|prefix| PREFIXES.contains(&prefix))
+        })
 }
 
 /// The note a title carries about the result under it ("" for the current, complete one).
