@@ -24,9 +24,13 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::Tick => tick(app),
         Msg::Answer(answer) => on_answer(app, *answer),
         Msg::PresetsListed(entries) => {
+            // on the preset shown, while it is unedited (its description is what `i` gave)
+            let selected = (entries.iter())
+                .position(|e| e.preset.as_ref().ok() == Some(&app.doc.preset))
+                .unwrap_or(0);
             app.ui.mode = Mode::Picker {
                 entries,
-                selected: 0,
+                selected,
                 scroll: 0,
             };
             Vec::new()

@@ -38,6 +38,22 @@ fn o_lists_the_presets_and_asks_before_dropping_unsaved_edits() {
 }
 
 #[test]
+fn the_picker_opens_on_the_preset_shown() {
+    // dispersion.toml opened: o highlighted the first bundled preset (polymer-coating)
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+        panic!()
+    };
+    let mut app = app("dispersion.toml");
+    update(&mut app, Msg::PresetsListed(entries.clone()));
+    let Mode::Picker { selected, .. } = &app.ui.mode else {
+        panic!()
+    };
+    assert_eq!(entries[*selected].source, "bundled: dispersion.toml");
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("bundled: dispersion.toml"), "{s}");
+}
+
+#[test]
 fn a_broken_preset_in_the_picker_shows_its_error_and_keeps_the_state() {
     let mut app = app("polymer-coating.toml");
     let before = app.doc.preset.clone();
