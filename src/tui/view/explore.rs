@@ -64,7 +64,7 @@ pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours
     Letters draw the library's lines: 0 where theta = 0 (friction wins where theta > 0, wear where \
     it is < 0), W and N where the wide and the narrow model's validity checks change, C where \
     complete contact is lost; + is the preset's own point (o among --ascii shades). x shows a \
-    cursor (at the preset's point), [ ] move it along x, { } along y, and the status reads both \
+    cursor, X (at the grid point nearest the preset's), [ ] move it along x, { } along y, and the status reads both \
     inputs, the quantity, theta and the verdicts there. Tab goes back to the charts.";
 
 /// What the chart says instead of the preset's "Look at:" paragraph where the paragraph does not

@@ -250,7 +250,12 @@ pub fn draw(
     let mut y = y0 + h + 2;
     // the preset's own point may lie outside the ranges (mu = 0 on a log axis)
     let where_now = if now.is_some() { "" } else { ": off the map" };
-    let words = format!("colour: {}   {own} now{where_now}", bt.title);
+    let mut words = format!("colour: {}   {own} now{where_now}", bt.title);
+    // the cursor's mark, named where it fits whole
+    let cursor = "   X cursor";
+    if cell.is_some() && words.chars().count() + cursor.len() <= area.width as usize {
+        words.push_str(cursor);
+    }
     buf.set_stringn(area.x, y, words, area.width as usize, Style::default());
     for (glyph, wrapped) in &meanings {
         for (k, text) in wrapped.iter().enumerate() {
