@@ -297,6 +297,8 @@ fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution()
             (got - expected).abs() <= 1e-14 * expected,
             "now: {got} vs {expected}"
         );
+        // and the curve's value there is the operating point's own mu*
+        assert_eq!(s.current_y, Some(spec.quantity.value(&here).unwrap()));
     }
     // an input without a group keeps its dimensional axis
     let e = CurveSpec {

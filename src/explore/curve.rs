@@ -55,6 +55,10 @@ pub struct Series {
     /// The swept input's group (`Curve::group`) at each x, from this model's solution there; None
     /// where there is no solution or the curve has no group.
     pub group: Vec<Option<f64>>,
+    /// The quantity at the preset's own value of the input (`Curve::current`), from this model's
+    /// solution there (the operating point itself, which may lie between the points of `y`);
+    /// None where there is no solution.
+    pub current_y: Option<f64>,
     /// The group at the preset's own value of the input (`Curve::current`), from this model's
     /// solution there: where "now" lies on the group axis (the operating point's own group, not
     /// one interpolated between sweep points); None as for `group`.
@@ -150,40 +154,37 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
     let jobs: Vec<(usize, f64)> = (0..models.len())
         .flat_map(|m| x.iter().map(move |v| (m, *v)))
         .collect();
+    let answer = |solved: Result<Point, String>| -> Answer {
+        match solved {
+            Ok(p) => (
+                spec.quantity.value(&p),
+                Some(holds(&p)),
+                group.and_then(|g| g.value(&p).ok()),
+            ),
+            Err(why) => (Err(why), None, None),
+        }
+    };
     let answers: Vec<Option<Answer>> = jobs
         .into_par_iter()
         .map(|(m, v)| {
             if cancel.load(Ordering::Relaxed) {
                 return None;
             }
-            Some(match solve_at(preset, &axes, &[v], models[m]) {
-                Ok(p) => (
-                    spec.quantity.value(&p),
-                    Some(holds(&p)),
-                    group.and_then(|g| g.value(&p).ok()),
-                ),
-                Err(why) => (Err(why), None, None),
-            })
+            Some(answer(solve_at(preset, &axes, &[v], models[m])))
         })
         .collect();
     let answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
+    // each model at the preset's own value: where "now" lies and what the curve reads there
     let current = preset.get(spec.axis.key).ok()?;
-    let current_groups: Vec<Option<f64>> = match group {
-        Some(g) => models
-            .par_iter()
-            .map(|m| {
-                if cancel.load(Ordering::Relaxed) {
-                    return None;
-                }
-                Some(
-                    solve_at(preset, &axes, &[current], *m)
-                        .ok()
-                        .and_then(|p| g.value(&p).ok()),
-                )
-            })
-            .collect::<Option<_>>()?,
-        None => vec![None; models.len()],
-    };
+    let at_current: Vec<Answer> = models
+        .par_iter()
+        .map(|m| {
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            Some(answer(solve_at(preset, &axes, &[current], *m)))
+        })
+        .collect::<Option<_>>()?;
     let mut series = Vec::new();
     for (m, model) in models.iter().enumerate() {
         let own = &answers[m * x.len()..(m + 1) * x.len()];
@@ -195,7 +196,8 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
             holds,
             changes,
             group: own.iter().map(|a| a.2).collect(),
-            current_group: current_groups[m],
+            current_y: at_current[m].0.as_ref().ok().copied(),
+            current_group: at_current[m].2,
         });
     }
     Some(Curve {

@@ -46,11 +46,10 @@ fn group_axis(spec: &CurveSpec, curve: &Curve) -> Axis {
 pub fn input_along_group(curve: &Curve) -> Option<Series> {
     curve.group?;
     let s = curve.series.first()?;
+    let point = |k: usize| Some((s.group[k]?, curve.x[k]));
     Some(Series {
         name: String::new(),
-        points: (0..curve.x.len())
-            .filter_map(|k| Some((s.group[k]?, curve.x[k])))
-            .collect(),
+        points: through_now(curve, point, s.current_group.map(|g| (g, curve.current))),
     })
 }
 
@@ -60,6 +59,36 @@ pub fn dim_label(problem: Problem) -> &'static str {
         Problem::Plane => "dim: the model's validity check fails",
         Problem::Spatial => "dim: partial contact (not complete)",
     }
+}
+
+/// Points of a series in the sweep's order with `now` (from the operating point, solved at the
+/// preset's own value) among them where it lies strictly between two points of the sweep, so that the
+/// curve and the cursor there give the operating point's own value, not one interpolated.
+fn through_now(
+    curve: &Curve,
+    point: impl Fn(usize) -> Option<(f64, f64)>,
+    now: Option<(f64, f64)>,
+) -> Vec<(f64, f64)> {
+    let x = &curve.x;
+    let mut points: Vec<(f64, f64)> = (0..x.len()).filter_map(&point).collect();
+    let (lo, hi) = x
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(*v), hi.max(*v))
+        });
+    if let Some(now) = now
+        && lo < curve.current
+        && curve.current < hi
+        && !x.contains(&curve.current)
+    {
+        let rising = x.last() >= x.first();
+        let before = (0..x.len())
+            .filter(|&k| (x[k] < curve.current) == rising)
+            .filter_map(&point)
+            .count();
+        points.insert(before, now);
+    }
+    points
 }
 
 /// The figure of a computed curve.
@@ -110,7 +139,14 @@ pub fn figure(
                 Some(m) => format!("{symbol} {m}"),
                 None => symbol.clone(),
             },
-            points: (0..curve.x.len()).filter_map(point).collect(),
+            points: through_now(curve, point, {
+                let x = if grouped {
+                    s.current_group
+                } else {
+                    Some(curve.current)
+                };
+                x.zip(s.current_y)
+            }),
         });
         // each run of points where the verdict fails, as its own dim piece
         let mut run: Vec<(f64, f64)> = Vec::new();
