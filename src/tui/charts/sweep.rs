@@ -123,12 +123,13 @@ pub fn figure(
             }
         };
         let point = |k: usize| Some((x_of(k)?, *s.y[k].as_ref().ok()?));
+        // where the operating point lies on this series' x axis
+        let now = if grouped {
+            s.current_group
+        } else {
+            Some(curve.current)
+        };
         if i == 0 {
-            let now = if grouped {
-                s.current_group
-            } else {
-                Some(curve.current)
-            };
             x_marks.extend(now.map(|at| Mark {
                 at,
                 label: "now".into(),
@@ -139,14 +140,7 @@ pub fn figure(
                 Some(m) => format!("{symbol} {m}"),
                 None => symbol.clone(),
             },
-            points: through_now(curve, point, {
-                let x = if grouped {
-                    s.current_group
-                } else {
-                    Some(curve.current)
-                };
-                x.zip(s.current_y)
-            }),
+            points: through_now(curve, point, now.zip(s.current_y)),
         });
         // each run of points where the verdict fails, as its own dim piece
         let mut run: Vec<(f64, f64)> = Vec::new();

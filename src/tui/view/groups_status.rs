@@ -11,7 +11,7 @@ use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status::{mu_star, pack, prose, visible, with_validity};
+use crate::tui::view::status::{mu_star, pack, per_output, prose, visible, with_validity};
 use crate::tui::view::theme::RenderOptions;
 
 /// The status panel's title: it says when the values are groups.
@@ -41,14 +41,12 @@ pub fn lines(
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
-    match output {
-        Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref(), style, width, height),
-            Err(e) => vec![Line::styled(e.to_string(), style.error())],
-        },
-        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
-        Output::Spatial(Ok(out)) => spatial(out, selected, style, width, height),
-    }
+    per_output(
+        output,
+        style,
+        |p, check| plane(p, check, style, width, height),
+        |out| spatial(out, selected, style, width, height),
+    )
 }
 
 fn plane(

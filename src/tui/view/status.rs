@@ -67,20 +67,37 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
         .collect();
     let height = (inner.height as usize).saturating_sub(lines.len());
     let selected = app.row().harmonic_index();
-    lines.extend(match &answer.output {
-        _ if app.explore.dimensionless => {
-            groups_status::lines(&answer.output, selected, style, width, height)
-        }
-        Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref(), style, width, height),
-            Err(e) => vec![Line::styled(e.to_string(), style.error())],
-        },
-        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
-        Output::Spatial(Ok(out)) => spatial(out, selected, style, width, height),
+    lines.extend(if app.explore.dimensionless {
+        groups_status::lines(&answer.output, selected, style, width, height)
+    } else {
+        per_output(
+            &answer.output,
+            style,
+            |p, check| plane(p, check, style, width, height),
+            |out| spatial(out, selected, style, width, height),
+        )
     });
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
+    }
+}
+
+/// The status lines of an output: a failed solve in words, else the lines `plane` or `spatial`
+/// make of it (the dimensional status and the dimensionless view differ only there).
+pub fn per_output(
+    output: &Output,
+    style: RenderOptions,
+    plane: impl FnOnce(&OperatingPoint, Option<&StripCheck>) -> Vec<Line<'static>>,
+    spatial: impl FnOnce(&SpatialOutput) -> Vec<Line<'static>>,
+) -> Vec<Line<'static>> {
+    match output {
+        Output::Plane(out) => match &out.point {
+            Ok(p) => plane(p, out.strip_check.as_ref()),
+            Err(e) => vec![Line::styled(e.to_string(), style.error())],
+        },
+        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
+        Output::Spatial(Ok(out)) => spatial(out),
     }
 }
 
