@@ -33,7 +33,8 @@ struct Cli {
     command: Option<Command>,
     /// Preset file to open (default: the built-in default preset).
     preset: Option<PathBuf>,
-    /// Draw charts with ASCII dots instead of Braille (for terminals without Braille glyphs).
+    /// Draw the whole screen in ASCII: borders, axes, curves, marks and keys (for terminals
+    /// without Unicode).
     #[arg(long)]
     ascii: bool,
     /// Capture the mouse (off by default, so the terminal's own selection keeps working).

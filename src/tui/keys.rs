@@ -5,6 +5,8 @@
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use wearlab::preset::Problem;
 
+use crate::tui::view::RenderOptions;
+
 pub use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action, prompt_footer};
 
 /// What a key on the main screen does.
@@ -186,7 +188,7 @@ pub const BINDINGS: [Binding; 22] = [
         &[(key(KeyCode::Tab), Action::NextChart), (key(KeyCode::BackTab), Action::PrevChart),
           (shift(KeyCode::BackTab), Action::PrevChart)],
         "Tab, Shift-Tab", "next / previous chart",
-        ("Tab", "chart", "chart", 0), None,
+        ("Tab", "chart", "", 9), None,
     ),
     binding(
         &[(ch('p'), Action::SwitchProblem)],
@@ -299,8 +301,8 @@ pub fn is_ctrl_c(ev: &KeyEvent) -> bool {
 
 /// The footer of the main screen for a problem, fitted to `width` columns: items two spaces
 /// apart, else one space apart; while neither fits, items take their shorter word in the order
-/// of their rank.
-pub fn footer(problem: Problem, width: usize) -> String {
+/// of their rank. Its characters are `style`'s (`RenderOptions::text`), so it is fitted as drawn.
+pub fn footer(problem: Problem, width: usize, style: RenderOptions) -> String {
     let items: Vec<_> = BINDINGS
         .iter()
         .filter(|b| b.only.is_none_or(|p| p == problem) && !b.footer.0.is_empty())
@@ -315,11 +317,12 @@ pub fn footer(problem: Problem, width: usize) -> String {
                 } else {
                     long
                 };
-                if word.is_empty() {
+                let item = if word.is_empty() {
                     k.to_string()
                 } else {
                     format!("{k} {word}")
-                }
+                };
+                style.text(&item).into_owned()
             })
             .collect::<Vec<_>>()
             .join(sep)

@@ -12,7 +12,7 @@ use crate::tui::explore::View;
 
 /// Computes the explorer's requests among `commands` as its thread would (every map pass, then
 /// the end) and delivers the answers.
-fn explored(app: &mut App, commands: &[Command]) {
+pub(super) fn explored(app: &mut App, commands: &[Command]) {
     for c in commands {
         let Command::Explore(generation, request) = c else {
             continue;

@@ -5,6 +5,7 @@ use std::collections::HashSet;
 use wearlab::physics::plane::Model;
 use wearlab::preset::Problem;
 
+use super::{ASCII, PLAIN};
 use crate::tui::keys::{Action, BINDINGS, Prompt, footer, lookup, prompt_footer};
 
 /// Every action, for the test that each one is bound.
@@ -138,7 +139,7 @@ fn readme_key_table_is_the_key_table() {
 fn footers_fit_and_name_every_key_of_the_problem() {
     for problem in [Problem::Plane, Problem::Spatial] {
         for width in [80, 120] {
-            let text = footer(problem, width);
+            let text = footer(problem, width, PLAIN);
             assert!(text.chars().count() <= width, "{width}: {text}");
             assert!(
                 text.ends_with("? help  q quit") || text.ends_with("? help q quit"),
@@ -159,19 +160,24 @@ fn footers_fit_and_name_every_key_of_the_problem() {
     // read as a user would (80 columns keeps the words of the keys a newcomer needs; the help
     // gives the others)
     assert_eq!(
-        footer(Problem::Plane, 80),
+        footer(Problem::Plane, 80, PLAIN),
         "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u i ? help q quit"
     );
     assert_eq!(
-        footer(Problem::Spatial, 80),
+        footer(Problem::Spatial, 80, PLAIN),
         "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u i ? help q quit"
     );
     assert_eq!(
-        footer(Problem::Plane, 120),
+        footer(Problem::Plane, 120, PLAIN),
         "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u i ? help q quit"
     );
+    // with --ascii the arrows and Enter take more columns: the footer still fits 80 with its end
     assert_eq!(
-        footer(Problem::Spatial, 120),
+        footer(Problem::Spatial, 80, ASCII),
+        "^v <> nudge Enter Tab p space +/- x c/C f y v M D o s e/E u i ? help q quit"
+    );
+    assert_eq!(
+        footer(Problem::Spatial, 120, PLAIN),
         "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u i ? help q quit"
     );
 }

@@ -2,6 +2,7 @@
 //! help, footer and README, the charts' export against their builders, results labelled by their
 //! own inputs, the loop, and screen snapshots (TestBackend + insta).
 
+mod ascii;
 mod bytes;
 mod charts;
 mod explore;

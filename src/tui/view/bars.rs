@@ -30,7 +30,7 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
 /// The message line: a question being asked, the file name being typed, the last message, or
 /// the preset's name.
 fn message(app: &App, style: RenderOptions) -> (String, Style) {
-    match &app.ui.mode {
+    let (text, st) = match &app.ui.mode {
         Mode::SaveAs(buffer) => (
             format!("save as (a name, or a path such as ~/lab.toml): {buffer}_"),
             Style::default(),
@@ -61,7 +61,8 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
                 (format!("{name}{edited}"), Style::default())
             }
         },
-    }
+    };
+    (style.text(&text).into_owned(), st)
 }
 
 /// How many lines the message takes on a screen `width` wide: two when it does not fit on one
@@ -85,13 +86,14 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
     if lines.len() > rows {
         lines.truncate(rows);
         let last = &mut lines[rows - 1];
-        while last.chars().count() + 2 > width {
+        let more = style.text(" …");
+        while last.chars().count() + more.chars().count() > width {
             match last.rfind(' ') {
                 Some(i) => last.truncate(i),
                 None => last.clear(),
             }
         }
-        last.push_str(" …");
+        last.push_str(&more);
     }
     let lines: Vec<Line> = lines.into_iter().map(Line::from).collect();
     frame.render_widget(Paragraph::new(lines).style(st), area);
@@ -100,8 +102,8 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
 /// Draws the keys of the main screen or of the prompt being answered.
 pub fn draw_footer(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let text = match prompt(&app.ui.mode) {
-        None => keys::footer(app.doc.preset.problem, area.width as usize),
-        Some(p) => keys::prompt_footer(p),
+        None => keys::footer(app.doc.preset.problem, area.width as usize, style),
+        Some(p) => style.text(&keys::prompt_footer(p)).into_owned(),
     };
     frame.render_widget(Paragraph::new(text).style(style.footer()), area);
 }

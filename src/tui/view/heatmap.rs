@@ -128,7 +128,7 @@ pub fn draw(
         buf.set_stringn(
             bx + 1,
             area.y + row,
-            format!("┤{label}"),
+            format!("{}{label}", style.bar_tick()),
             (BAR - 1) as usize,
             Style::default(),
         );

@@ -122,6 +122,7 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         Mode::Form(form) => explore::form(form, style, frame, area),
         _ => {}
     }
+    style.to_ascii(frame.buffer_mut());
 }
 
 fn too_small(frame: &mut Frame, area: Rect) {
@@ -190,12 +191,13 @@ fn glued(word: &str, next: &str) -> bool {
 }
 
 /// The note a title carries about the result under it ("" for the current, complete one).
-pub fn note(shown: &Shown) -> String {
-    match shown {
+pub fn note(shown: &Shown, style: RenderOptions) -> String {
+    let note = match shown {
         Shown::Nothing | Shown::Current(_, true) => "  solving…".into(),
         Shown::Current(_, false) => String::new(),
         Shown::Previous(_, label) => format!("  [{label}] solving…"),
-    }
+    };
+    style.text(&note).into_owned()
 }
 
 fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
@@ -206,7 +208,7 @@ fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame,
     let (i, n) = chart.position();
     let block = Block::default()
         .borders(Borders::ALL)
-        .title(format!(" {i}/{n} {}{} ", chart.title(), note(shown)))
+        .title(format!(" {i}/{n} {}{} ", chart.title(), note(shown, style)))
         .title_bottom(Line::from(" Tab: next chart ").right_aligned());
     let inner = block.inner(area);
     frame.render_widget(block, area);

@@ -241,7 +241,7 @@ pub fn draw(
         buf.set_stringn(
             bx + 1,
             y0 + row,
-            format!("┤{label}"),
+            format!("{}{label}", style.bar_tick()),
             (BAR - 2) as usize,
             Style::default(),
         );

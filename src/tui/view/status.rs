@@ -46,7 +46,7 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     let block = Block::default().borders(Borders::ALL).title(format!(
         " {}{} ",
         groups_status::title(app),
-        note(shown)
+        note(shown, style)
     ));
     let inner = block.inner(area);
     frame.render_widget(block, area);

@@ -1,5 +1,8 @@
 //! Colours and styles, with the fallbacks for NO_COLOR and `--ascii`.
 
+use std::borrow::Cow;
+
+use ratatui::buffer::Buffer;
 use ratatui::style::{Color, Modifier, Style};
 
 use crate::tui::charts::palette;
@@ -8,7 +11,8 @@ use crate::tui::view::raster::Ink;
 /// How to draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RenderOptions {
-    /// Plain ASCII markers instead of Braille.
+    /// ASCII only, on the whole screen: borders, ticks, arrows and marks (`ASCII_FORMS`), curves
+    /// in characters instead of Braille, shades in characters.
     pub ascii: bool,
     /// Colours allowed (NO_COLOR unset).
     pub color: bool,
@@ -38,7 +42,108 @@ pub const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
 /// The shades with `--ascii`, lightest first.
 pub const ASCII_SHADES: [char; 10] = [' ', '.', ':', '-', '=', '+', '*', '#', '%', '@'];
 
+/// The ASCII form of every non-ASCII character the explorer draws (`--ascii`): the one place
+/// that decides it. Forms of one character replace a drawn cell; the longer ones (keys, "...")
+/// replace text before it is laid out (`RenderOptions::text`). A character missing here is
+/// drawn as `?`.
+const ASCII_FORMS: [(char, &str); 32] = [
+    ('─', "-"),
+    ('│', "|"),
+    ('┌', "+"),
+    ('┐', "+"),
+    ('└', "+"),
+    ('┘', "+"),
+    ('├', "+"),
+    ('┤', "+"),
+    ('┬', "+"),
+    ('┴', "+"),
+    ('┼', "+"),
+    ('┊', ":"),
+    ('┈', "-"),
+    ('●', "@"),
+    ('·', "."),
+    ('◀', "<"),
+    ('▶', ">"),
+    ('↑', "^"),
+    ('↓', "v"),
+    ('←', "<"),
+    ('→', ">"),
+    ('–', "-"),
+    ('—', "-"),
+    ('ő', "o"),
+    ('µ', "u"),
+    ('░', "."),
+    ('▒', ":"),
+    ('▓', "#"),
+    ('…', "..."),
+    ('⏎', "Enter"),
+    ('⌫', "Bksp"),
+    ('⇧', "Shift"),
+];
+
+/// The ASCII form of `c` (`ASCII_FORMS`; `?` for a character it lacks).
+fn ascii_form(c: char) -> &'static str {
+    ASCII_FORMS
+        .iter()
+        .find(|(u, _)| *u == c)
+        .map_or("?", |(_, a)| a)
+}
+
 impl RenderOptions {
+    /// `text` as drawn: with `--ascii` every non-ASCII character in its ASCII form.
+    pub fn text<'a>(self, text: &'a str) -> Cow<'a, str> {
+        if !self.ascii || text.is_ascii() {
+            return Cow::Borrowed(text);
+        }
+        Cow::Owned(
+            text.chars()
+                .map(|c| {
+                    if c.is_ascii() {
+                        c.to_string()
+                    } else {
+                        ascii_form(c).to_string()
+                    }
+                })
+                .collect(),
+        )
+    }
+
+    /// With `--ascii`, every drawn cell in ASCII: each character whose form is one character
+    /// replaced by it (blocks of the colour map by a space in their colour); text with longer
+    /// forms was replaced before it was laid out (`text`), and stays as drawn.
+    pub fn to_ascii(self, buf: &mut Buffer) {
+        if !self.ascii {
+            return;
+        }
+        for cell in &mut buf.content {
+            let mut chars = cell.symbol().chars();
+            let (Some(c), None) = (chars.next(), chars.next()) else {
+                if !cell.symbol().is_ascii() {
+                    cell.set_char('?');
+                }
+                continue;
+            };
+            match c {
+                _ if c.is_ascii() => {}
+                // a half block shows its background's half; a full block its foreground
+                '▀' | '▄' => {
+                    cell.set_char(' ');
+                }
+                '█' => {
+                    let fg = cell.fg;
+                    cell.set_char(' ').set_bg(fg);
+                }
+                _ => {
+                    let form = ascii_form(c);
+                    let mut one = form.chars();
+                    if let (Some(a), None) = (one.next(), one.next()) {
+                        cell.set_char(a);
+                    }
+                }
+            }
+        }
+    }
+
     /// Errors and warnings: red, or bold without colour.
     pub fn error(self) -> Style {
         if self.color {
@@ -178,6 +283,12 @@ impl RenderOptions {
         } else {
             Style::default().add_modifier(Modifier::BOLD)
         }
+    }
+
+    /// The tick beside a colour bar, before its value: with `--ascii` a space, as every ASCII
+    /// tick would read as a shade of the bar or a sign ("++0", "-+-0.5").
+    pub fn bar_tick(self) -> char {
+        if self.ascii { ' ' } else { '┤' }
     }
 
     /// The cursor's character on cells without data.
