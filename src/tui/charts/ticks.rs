@@ -297,11 +297,15 @@ fn logarithmic([a, b]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
             .filter(|v| (a - 1e-9..=b + 1e-9).contains(&v.log10()))
             .collect()
     };
-    // 1-2-5 within the decades when they fit (easier to read off than bare decades), else
+    // 1-2-5 within the decades when they fit (easier to read off than bare decades), else 1-3
+    // (half decades) over at most two decades where that gives more than the decades, else
     // decades, else 1-2-3-5-7 within less than a decade
     let fine = within(&[1.0, 2.0, 5.0]);
+    let half = within(&[1.0, 3.0]);
     let values = if b - a <= 3.0 && fine.len() >= 2 && fine.len() <= max {
         fine
+    } else if b - a <= 2.0 && half.len() > decades.len().max(1) && half.len() <= max {
+        half
     } else if decades.len() >= 2 {
         decades.iter().map(|&d| 10f64.powi(d)).collect()
     } else if let Some(v) = [&[1.0, 2.0, 5.0][..], &[1.0, 2.0, 3.0, 5.0, 7.0][..]]

@@ -3,6 +3,7 @@
 //! own inputs, the loop, and screen snapshots (TestBackend + insta).
 
 mod ascii;
+mod axes;
 mod bytes;
 mod charts;
 mod explore;

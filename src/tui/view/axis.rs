@@ -95,13 +95,13 @@ fn frac(v: f64, [lo, hi]: [f64; 2]) -> f64 {
 }
 
 /// The x tick labels and the axis title placed on a row `width` wide whose plot starts at
-/// column `left`: the labels that fit (column, text), none overlapping another, and the title's
-/// column: at the row's end, else at its start, else at the end over the last labels.
-fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(u16, String)>, u16) {
+/// column `left`: the labels that fit (tick index, column, text), none overlapping another, and
+/// the title's column: at the row's end, else at its start, else at the end over the last labels.
+fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(usize, u16, String)>, u16) {
     let plot_width = width.saturating_sub(left);
-    let mut labels: Vec<(u16, String)> = Vec::new();
+    let mut labels: Vec<(usize, u16, String)> = Vec::new();
     let mut free = 0u16;
-    for (pos, label) in &t.ticks {
+    for (i, (pos, label)) in t.ticks.iter().enumerate() {
         let len = label.chars().count() as u16;
         let centre = left + column(frac(*pos, range), plot_width);
         let start = centre.saturating_sub(len / 2).max(free);
@@ -109,52 +109,77 @@ fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(u16, Stri
             continue;
         }
         free = start + len + 2;
-        labels.push((start, label.clone()));
+        labels.push((i, start, label.clone()));
     }
     let title = t.title.chars().count() as u16;
-    let end = |l: &(u16, String)| l.0 + l.1.chars().count() as u16;
+    let end = |l: &(usize, u16, String)| l.1 + l.2.chars().count() as u16;
     let right = width.saturating_sub(title);
     if labels.last().is_none_or(|l| end(l) < right) {
         return (labels, right);
     }
-    if labels.first().is_some_and(|l| l.0 > title) {
+    if labels.first().is_some_and(|l| l.1 > title) {
         return (labels, 0);
     }
     labels.retain(|l| end(l) < right);
     (labels, right)
 }
 
-/// The x ticks of the shared axis: as many labels as fit on the label row with the axis title
-/// (a label under the title is left out; "(log)" is left out of the title when that shows more
-/// labels: the labels show it).
+/// The x ticks of the shared axis, each labelled: of the candidate tick sets, the one showing
+/// the most labels on the label row with the axis title, where the labels left out (for want of
+/// room) are only at the ends of the set, never between two shown; the title states its scale
+/// ("(log)", or "log" where that shows more labels) unless that leaves fewer than two labels;
+/// of equals the full title, then the finer set (a log axis keeps 1-2-5 over bare values). The ticks left out are not drawn either: no tick
+/// without its value.
 pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
     let x = &frame.plot.x;
     let width = plot_width + left;
-    let candidates = |short: bool| {
+    // the title as it comes ("k [rad/m] (log)"), with the scale shorter ("k [rad/m] log"),
+    // without it ("k [rad/m]")
+    let candidates = |form: u8| {
         (2..=(plot_width as usize / 6).max(2))
             .rev()
             .map(move |max| {
                 let mut t = ticks(frame.x, x.scale, &x.label, x.unit, max);
-                if short {
-                    for suffix in [" (log)", " (symlog)"] {
-                        if let Some(s) = t.title.strip_suffix(suffix) {
-                            t.title = s.to_string();
-                        }
+                for scale in ["log", "symlog"] {
+                    let long = format!(" ({scale})");
+                    if let Some(s) = t.title.strip_suffix(&long).filter(|_| form > 0) {
+                        t.title = match form {
+                            1 => format!("{s} {scale}"),
+                            _ => s.to_string(),
+                        };
                     }
                 }
-                t
+                (t, form)
             })
     };
-    let shown = |t: &Ticks| place_x(t, frame.x, left, width).0.len();
-    let all = |t: &Ticks| shown(t) == t.ticks.len();
-    // the most labels; of equals, all of them shown, then the full title
-    candidates(false)
-        .chain(candidates(true))
-        .fold(None, |best: Option<Ticks>, t| match best {
-            Some(b) if (shown(&b), all(&b)) >= (shown(&t), all(&t)) => Some(b),
-            _ => Some(t),
+    let kept = |t: &Ticks| -> Vec<usize> {
+        let (labels, _) = place_x(t, frame.x, left, width);
+        labels.into_iter().map(|l| l.0).collect()
+    };
+    // the labels shown, if they are a run of the set (none missing between two shown)
+    let run = |t: &Ticks| -> Option<Vec<usize>> {
+        let k = kept(t);
+        k.windows(2).all(|w| w[1] == w[0] + 1).then_some(k)
+    };
+    let key =
+        |(t, form): &(Ticks, u8)| run(t).map(|k| (*form < 2 && k.len() >= 2, k.len(), *form == 0));
+    let best = candidates(0)
+        .chain(candidates(1))
+        .chain(candidates(2))
+        .fold(None, |best: Option<(Ticks, u8)>, c| match best {
+            Some(b) if key(&b) >= key(&c) => Some(b),
+            _ => Some(c),
         })
-        .unwrap_or_else(|| ticks(frame.x, x.scale, &x.label, x.unit, 2))
+        .map(|(t, _)| t)
+        .unwrap_or_else(|| ticks(frame.x, x.scale, &x.label, x.unit, 2));
+    let k = kept(&best);
+    Ticks {
+        ticks: (best.ticks.iter().enumerate())
+            .filter(|(i, _)| k.contains(i))
+            .map(|(_, t)| t.clone())
+            .collect(),
+        title: best.title,
+    }
 }
 
 /// Shades the plot's shaded x ranges (under everything else).
@@ -184,6 +209,14 @@ pub fn shade(frame: &Frame, g: &Geometry, style: RenderOptions, buf: &mut Buffer
     }
 }
 
+/// The rows of a plot `height` rows high that its horizontal reference lines take.
+pub fn y_mark_rows(frame: &Frame, height: u16) -> Vec<u16> {
+    (frame.plot.y_marks.iter())
+        .filter_map(|m| frame.y_scale.to_plot(m.at))
+        .map(|v| row(frac(v, frame.y), height))
+        .collect()
+}
+
 /// Draws the reference lines on the cells without data.
 pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions, buf: &mut Buffer) {
     let p = g.plot;
@@ -195,11 +228,8 @@ pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions,
                 .set_style(style.mark());
         }
     };
-    for m in &frame.plot.y_marks {
-        if let Some(v) = frame.y_scale.to_plot(m.at) {
-            let r = row(frac(v, frame.y), p.height);
-            (0..p.width).for_each(|col| put(col, r, horizontal));
-        }
+    for r in y_mark_rows(frame, p.height) {
+        (0..p.width).for_each(|col| put(col, r, horizontal));
     }
     for m in &frame.plot.x_marks {
         if let Some(v) = frame.plot.x.scale.to_plot(m.at) {
@@ -283,7 +313,7 @@ pub fn frame(frame: &Frame, g: &Geometry, y: &Ticks, x: &Ticks, buf: &mut Buffer
         let left = p.x - g.header.x;
         let width = g.header.width;
         let (labels, title) = place_x(x, frame.x, left, width);
-        for (start, label) in labels {
+        for (_, start, label) in labels {
             buf.set_string(g.header.x + start, r, label, Style::default());
         }
         let len = x.title.chars().count() as u16;

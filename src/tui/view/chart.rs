@@ -237,7 +237,8 @@ fn lay_out(
 }
 
 /// The frames of a figure stacked in `area`, each legend placed: in the header, else in an
-/// empty corner, else in rows of its own, else in the corner covering the fewest data cells.
+/// empty corner, else in empty rows across the plot, else in rows of its own, else in the
+/// corner covering the fewest data cells.
 pub fn layout(
     frames: &[Frame],
     style: RenderOptions,
@@ -246,7 +247,8 @@ pub fn layout(
 ) -> Option<(Vec<Laid>, Ticks)> {
     let none = vec![0; frames.len()];
     let (mut laid, mut x_ticks) = lay_out(frames, style, extras, area, &none)?;
-    // where each legend goes: the header, an empty corner, rows of its own, the emptiest corner
+    // where each legend goes: the header, an empty corner, empty rows of the plot, rows of its
+    // own, the emptiest corner
     let mut extra = none.clone();
     for (i, l) in laid.iter_mut().enumerate() {
         let g = &l.geometry;
@@ -255,6 +257,13 @@ pub fn layout(
             l.place = Place::Header;
         } else if let Some(c) = legend::corner(&l.raster, g.local_plot(), &l.entries, false) {
             l.place = c;
+        } else if let Some(b) = legend::band(
+            &l.raster,
+            g.local_plot(),
+            &l.entries,
+            &axis::y_mark_rows(&frames[i], g.plot.height),
+        ) {
+            l.place = b;
         } else {
             let rows = legend::rows_needed(&l.entries, area.width as usize);
             if g.plot.height >= rows + 3 {
@@ -340,6 +349,14 @@ fn draw_one(
         }
         Place::Corner(x, y) => {
             legend::render_box(&laid.entries, buf, g.plot.x + x, g.plot.y + y);
+        }
+        Place::Band(y, rows) => {
+            let band = Rect {
+                y: g.plot.y + y,
+                height: rows,
+                ..g.plot
+            };
+            legend::render_lines(&laid.entries, buf, band);
         }
     }
 }

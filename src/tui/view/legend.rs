@@ -48,6 +48,8 @@ pub enum Place {
     Rows(u16),
     /// Inside the plot area at this corner (column, row of the plot area).
     Corner(u16, u16),
+    /// Inside the plot area as packed lines across its width: from this row, this many rows.
+    Band(u16, u16),
 }
 
 /// The columns the entries take in one line, two spaces apart.
@@ -104,12 +106,33 @@ pub fn corner(raster: &Raster, plot: Rect, entries: &[Entry], fallback: bool) ->
     }
 }
 
-/// Writes the entries as packed lines into `area` (header row or legend rows), right-aligned.
-pub fn render_lines(entries: &[Entry], buf: &mut Buffer, area: Rect) {
+/// Rows of the plot area that can hold the entries packed as lines, right-aligned as
+/// `render_lines` writes them, with no data cell and none of the rows `avoid` (reference
+/// lines) under them: the top rows, else the bottom ones, else the highest free ones; at least
+/// one row is left to the data.
+pub fn band(raster: &Raster, plot: Rect, entries: &[Entry], avoid: &[u16]) -> Option<Place> {
+    let lines = packed(entries, plot.width as usize);
+    let rows = lines.len() as u16;
+    if rows == 0 || rows >= plot.height {
+        return None;
+    }
+    let last = plot.height - rows;
+    [0, last].into_iter().chain(1..last).find_map(|y| {
+        let clear = lines.iter().enumerate().all(|(i, line)| {
+            let width = line_span(line).min(plot.width as usize) as u16;
+            let row = y + i as u16;
+            !avoid.contains(&row) && raster.count(Rect::new(plot.width - width, row, width, 1)) == 0
+        });
+        clear.then_some(Place::Band(y, rows))
+    })
+}
+
+/// The entries packed whole into lines of `width` columns, two spaces apart.
+fn packed(entries: &[Entry], width: usize) -> Vec<Vec<&Entry>> {
     let mut lines: Vec<Vec<&Entry>> = Vec::new();
-    let mut used = area.width as usize;
+    let mut used = width;
     for e in entries {
-        if used + 2 + e.width() > area.width as usize || lines.is_empty() {
+        if used + 2 + e.width() > width || lines.is_empty() {
             lines.push(Vec::new());
             used = e.width();
         } else {
@@ -117,9 +140,22 @@ pub fn render_lines(entries: &[Entry], buf: &mut Buffer, area: Rect) {
         }
         lines.last_mut().expect("pushed").push(e);
     }
-    for (row, line) in lines.iter().enumerate().take(area.height as usize) {
-        let width: usize = line.iter().map(|e| e.width()).sum::<usize>() + 2 * (line.len() - 1);
-        let mut x = area.x + (area.width as usize).saturating_sub(width) as u16;
+    lines
+}
+
+/// The columns a packed line takes.
+fn line_span(line: &[&Entry]) -> usize {
+    line.iter().map(|e| e.width()).sum::<usize>() + 2 * line.len().saturating_sub(1)
+}
+
+/// Writes the entries as packed lines into `area` (header row or legend rows), right-aligned.
+pub fn render_lines(entries: &[Entry], buf: &mut Buffer, area: Rect) {
+    for (row, line) in packed(entries, area.width as usize)
+        .iter()
+        .enumerate()
+        .take(area.height as usize)
+    {
+        let mut x = area.x + (area.width as usize).saturating_sub(line_span(line)) as u16;
         for e in line {
             e.render(buf, x, area.y + row as u16, area.x + area.width - x);
             x += e.width() as u16 + 2;

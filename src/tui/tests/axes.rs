@@ -1,0 +1,93 @@
+//! The x axis and the legends of every chart of every bundled preset at 80x24 and 120x40: a log
+//! axis says so, every x tick drawn has its value, and legends avoid the data where they can.
+
+use ratatui::crossterm::event::KeyCode;
+use ratatui::layout::Rect;
+
+use super::*;
+use crate::tui::charts::ticks::Scale;
+use crate::tui::charts::{Figure, range};
+use crate::tui::view::chart::{Extras, draw, layout};
+
+/// Checks the chart shown by `app` laid out in a terminal `w` x `h`; whether a legend covers
+/// a data cell (a plot too small for it anywhere else).
+fn check(app: &App, w: u16, h: u16, what: &str) -> bool {
+    let Some(answer) = &app.solve.shown else {
+        panic!("{what}: nothing solved")
+    };
+    let Ok(Figure::Plots(plots)) = app.ui.chart.build(answer) else {
+        return false;
+    };
+    let frames = range::frames(&plots, &[], false);
+    let areas = crate::tui::view::layout::areas(Rect::new(0, 0, w, h), false, false).unwrap();
+    let inner = Rect {
+        x: areas.chart.x + 1,
+        y: areas.chart.y + 1,
+        width: areas.chart.width - 2,
+        height: areas.chart.height - 2,
+    };
+    let (laid, x_ticks) = layout(&frames, PLAIN, &Extras::default(), inner).unwrap();
+    if matches!(frames[0].plot.x.scale, Scale::Log) {
+        assert!(x_ticks.title.contains("log"), "{what}: {}", x_ticks.title);
+    }
+    // every data cell still shows its curve once the whole chart is drawn (no legend over it)
+    let mut drawn = ratatui::buffer::Buffer::empty(inner);
+    draw(&frames, PLAIN, &Extras::default(), &mut drawn, inner);
+    let covers = laid.iter().any(|l| {
+        let p = l.geometry.plot;
+        let mut alone = ratatui::buffer::Buffer::empty(inner);
+        l.raster.render(&mut alone, p);
+        (0..p.width)
+            .flat_map(|c| (0..p.height).map(move |r| (c, r)))
+            .filter(|&(c, r)| l.raster.occupied(c, r))
+            .any(|(c, r)| drawn[(p.x + c, p.y + r)].symbol() != alone[(p.x + c, p.y + r)].symbol())
+    });
+    // every tick drawn is labelled: the screen's label row holds each label
+    let s = screen(app, w, h, PLAIN);
+    let row = s
+        .lines()
+        .find(|l| l.contains(&x_ticks.title))
+        .unwrap_or_else(|| panic!("{what}: no x title {}\n{s}", x_ticks.title));
+    for (_, label) in &x_ticks.ticks {
+        assert!(
+            row.contains(label.as_str()),
+            "{what}: {label} unlabelled\n{s}"
+        );
+    }
+    covers
+}
+
+#[test]
+fn every_x_tick_has_its_value_a_log_axis_says_so_and_legends_avoid_data() {
+    let mut covering = Vec::new();
+    for b in wearlab::preset::BUNDLED {
+        let mut app = app(b.file);
+        let cmds = app.start();
+        settle(&mut app, cmds);
+        if app.explore.view.is_some() {
+            press(&mut app, KeyCode::Tab);
+        }
+        for _ in 0..2 {
+            let (_, charts) = app.ui.chart.position();
+            for _ in 0..charts {
+                for (w, h) in [(80, 24), (120, 40)] {
+                    let what = format!("{} {} at {w}x{h}", b.file, app.ui.chart.title());
+                    if check(&app, w, h, &what) {
+                        covering.push(what);
+                    }
+                }
+                let cmds = press(&mut app, KeyCode::Tab);
+                settle(&mut app, cmds);
+            }
+            let cmds = press(&mut app, KeyCode::Char('p'));
+            settle(&mut app, cmds);
+        }
+    }
+    // the review: jgh-egg-box's dispersion chart at 80x24 had its legend over the curve of a
+    // plot of four rows; empty rows across the plot now hold it
+    assert!(
+        !covering.iter().any(|c| c.starts_with("jgh-egg-box")),
+        "{covering:#?}"
+    );
+    eprintln!("legends over data (no room elsewhere): {covering:#?}");
+}
