@@ -91,3 +91,28 @@ fn every_x_tick_has_its_value_a_log_axis_says_so_and_legends_avoid_data() {
     );
     eprintln!("legends over data (no room elsewhere): {covering:#?}");
 }
+
+#[test]
+fn a_legend_says_why_a_curve_it_names_cannot_be_seen() {
+    // the review: thin-strip-winkler's sweep named "++ mu* wide" while the wide model fails over
+    // the whole range (all of it drawn in its dim mark); hertz-check's b lies under a (mu = 0)
+    let mut app = solved("thin-strip-winkler.toml");
+    press(&mut app, KeyCode::Char('v'));
+    let cmds = press(&mut app, KeyCode::Enter);
+    super::explore::explored(&mut app, &cmds);
+    for (w, h) in [(80, 24), (120, 40)] {
+        let s = screen(&app, w, h, PLAIN);
+        assert!(s.contains(",, mu* wide: fails over the whole range"), "{s}");
+        assert!(
+            !s.contains("++ mu* wide") && !s.contains(",, wide fails"),
+            "{s}"
+        );
+    }
+    let mut app = solved("hertz-check.toml");
+    while app.ui.chart.title() != "contact edges against load" {
+        let cmds = press(&mut app, KeyCode::Tab);
+        settle(&mut app, cmds);
+    }
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("++ b (leading): under a (trailing)"), "{s}");
+}

@@ -12,6 +12,7 @@ use wearlab::units::format_si;
 use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::ticks::{Ticks, ticks};
 use crate::tui::view::axis::{self, Geometry};
+use crate::tui::view::hidden::{self, Hidden};
 use crate::tui::view::legend::{self, Entry, Place};
 use crate::tui::view::raster::Raster;
 use crate::tui::view::theme::RenderOptions;
@@ -60,17 +61,22 @@ fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
     raster
 }
 
-/// The legend entries of a frame: its curves (those off the y range named with their range),
-/// markers, reference lines, shaded ranges and pins.
-fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
+/// The legend entries of a frame in a plot area `size`: its curves (those off the y range named
+/// with their range, those that cannot be seen with why), markers, reference lines, shaded
+/// ranges and pins.
+fn entries(frame: &Frame, style: RenderOptions, pins: &[String], size: (u16, u16)) -> Vec<Entry> {
     let plot = frame.plot;
     let (xs, ys) = (plot.x.scale, frame.y_scale);
+    let hidden = hidden::hidden(frame, style, size);
     let mut out: Vec<Entry> = plot
         .series
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let ink = style.series_ink(i);
+            let ink = match hidden[i] {
+                Some(Hidden::Fails) => style.dim_ink(i),
+                _ => style.series_ink(i),
+            };
             let drawn = plotted(&s.points, xs, ys);
             let inside = drawn
                 .iter()
@@ -86,7 +92,11 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
                     format_si(hi, plot.y.unit)
                 )
             } else {
-                s.name.clone()
+                match hidden[i] {
+                    Some(Hidden::Fails) => format!("{}: fails over the whole range", s.name),
+                    Some(Hidden::Under(j)) => format!("{}: under {}", s.name, plot.series[j].name),
+                    None => s.name.clone(),
+                }
             };
             Entry {
                 sample: style.sample(ink),
@@ -115,7 +125,7 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String]) -> Vec<Entry> {
             .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1))
     };
     let mut owners: Vec<(usize, &str)> = (plot.dim.iter())
-        .filter(|(_, d)| shows(d))
+        .filter(|(i, d)| shows(d) && hidden[*i] != Some(Hidden::Fails))
         .map(|(i, d)| (*i, &*d.name))
         .collect();
     owners.sort_by_key(|o| o.0);
@@ -223,7 +233,8 @@ fn lay_out(
         .map(|(i, ((f, share), y_ticks))| {
             let geometry = Geometry::new(share, label_width, extra[i], i + 1 == frames.len());
             let raster = rasterize(f, style, geometry.plot);
-            let entries = entries(f, style, &extras.pins);
+            let size = (geometry.plot.width, geometry.plot.height);
+            let entries = entries(f, style, &extras.pins, size);
             Laid {
                 geometry,
                 y_ticks,

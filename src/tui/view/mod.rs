@@ -10,6 +10,7 @@ pub mod explore;
 pub mod form;
 pub mod groups_status;
 pub mod heatmap;
+pub mod hidden;
 pub mod layout;
 pub mod legend;
 pub mod picker;
