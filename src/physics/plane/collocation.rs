@@ -14,68 +14,26 @@
 //! case tried, so LU is the rule and Householder QR the fallback when the growth exceeds 1e6
 //! (`strip_factors`). The factors are kept and reused at nearby widths by iterative refinement
 //! (residual with the new matrix, correction with the old factors: O(N^2) per width instead of
-//! O(N^3)), and rebuilt when the refinement stops contracting.
+//! O(N^3)), and rebuilt when the refinement stops contracting. A system lent the coarse search's
+//! factors (`two_grid`, an operating point with many nodes) refines from those instead and
+//! factors its own matrix only where that does not converge.
 
 use std::rc::Rc;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Arc;
 
 use nalgebra::{DMatrix, DVector};
 
 use crate::physics::plane::PlaneInputs;
 use crate::physics::plane::strip::{ColumnKernel, Kernels};
-use crate::physics::plane::strip_factors::Factors;
-use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
+use crate::physics::plane::strip_factors::{Factors, refine};
+use crate::physics::plane::two_grid::Coarse;
 
-/// Rules kept by `Rules::cached`.
-const CACHED_RULES: usize = 12;
+pub use crate::physics::plane::strip_rules::Rules;
 
-/// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns at one theta.
-#[derive(Debug, PartialEq)]
-pub struct Rules {
-    theta: f64,
-    rule: GaussRule,
-    bary: Vec<f64>,
-    points: Vec<f64>,
-}
-
-impl Rules {
-    fn new(theta: f64, n: usize) -> Rules {
-        let rule = gauss_jacobi(n, 0.5 + theta, 0.5 - theta);
-        Rules {
-            theta,
-            bary: rule.barycentric_weights(),
-            points: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
-            rule,
-        }
-    }
-
-    /// The rules for theta and n, built once and kept (the last few used).
-    pub fn cached(theta: f64, n: usize) -> Arc<Rules> {
-        static CACHE: OnceLock<Mutex<Vec<Arc<Rules>>>> = OnceLock::new();
-        let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
-        let mut list = cache.lock().unwrap_or_else(|p| p.into_inner());
-        let hit = list
-            .iter()
-            .position(|r| r.theta.to_bits() == theta.to_bits() && r.len() == n);
-        let rules = match hit {
-            Some(i) => list.remove(i),
-            None => Arc::new(Rules::new(theta, n)),
-        };
-        list.insert(0, Arc::clone(&rules));
-        list.truncate(CACHED_RULES);
-        rules
-    }
-
-    /// The number of unknowns phi_i.
-    pub fn len(&self) -> usize {
-        self.rule.nodes.len()
-    }
-
-    /// Never empty (n >= 1); here for clippy's len_without_is_empty.
-    pub fn is_empty(&self) -> bool {
-        self.rule.nodes.is_empty()
-    }
-}
+/// Two-grid solves refine to round-off: they contract by some 1e-3 a step, so that stopping at an
+/// estimated 1e-14 left errors of that order in P(L), and the width search took one more width
+/// (one more assembly) to settle than after a factorization.
+const TWO_GRID_TOLERANCE: f64 = 1e-16;
 
 /// The collocation solution at one contact width.
 #[derive(Clone, Debug, PartialEq)]
@@ -104,7 +62,7 @@ pub struct Collocation {
 impl Collocation {
     /// The Jacobi nodes t_i in (-1, 1).
     pub fn nodes(&self) -> &[f64] {
-        &self.rules.rule.nodes
+        self.rules.nodes()
     }
 
     /// phi at t by barycentric interpolation through the nodes (four independent sums, so that
@@ -112,7 +70,7 @@ impl Collocation {
     pub fn phi_at(&self, t: f64) -> f64 {
         let (mut num, mut den) = ([0.0; 4], [0.0; 4]);
         let nodes = self.nodes().chunks_exact(4);
-        let bary = self.rules.bary.chunks_exact(4);
+        let bary = self.rules.bary().chunks_exact(4);
         let bary_phi = self.bary_phi.chunks_exact(4);
         let tails = (nodes.remainder(), bary.remainder(), bary_phi.remainder());
         for ((x, b), bp) in nodes.zip(bary).zip(bary_phi) {
@@ -162,6 +120,10 @@ pub struct System<'a> {
     regular: Rc<ColumnKernel<'a>>,
     rules: Arc<Rules>,
     factors: Option<Factors>,
+    /// The row scales (1/largest entry) of the matrix `factors` factored.
+    factored_scale: Vec<f64>,
+    /// The coarse factors of a two-grid solve (`two_grid`), used while `factors` is None.
+    coarse: Option<Rc<Coarse>>,
     /// The last collocation (root finders evaluate their answer again).
     last: Option<Collocation>,
     /// The last four solutions (width, scaled unknowns), newest first.
@@ -190,6 +152,8 @@ impl<'a> System<'a> {
             regular: Rc::clone(regular),
             rules,
             factors: None,
+            factored_scale: Vec::new(),
+            coarse: None,
             last: None,
             history: Vec::new(),
             scratch: (vec![0.0; n + 1], vec![0.0; n + 1], vec![0.0; n + 1]),
@@ -206,13 +170,30 @@ impl<'a> System<'a> {
         self.last.as_ref()
     }
 
+    /// Solve by two-grid refinement with `coarse` (the factors of a coarse system at a nearby
+    /// width) until that fails once; then factor this system's matrix.
+    pub fn set_coarse(&mut self, coarse: Rc<Coarse>) {
+        self.coarse = Some(coarse);
+    }
+
+    /// This system's factors, for a two-grid solve with more nodes (None before any solve).
+    pub fn into_coarse(self) -> Option<Coarse> {
+        Some(Coarse::new(self.factors?, self.rules, self.factored_scale))
+    }
+
+    /// Whether this system has factored its own matrix.
+    #[cfg(test)]
+    pub fn factored(&self) -> bool {
+        self.factors.is_some()
+    }
+
     /// The scaled, row-equilibrated matrix and right side at width l (module note).
     fn assemble(&mut self, l: f64) -> (DMatrix<f64>, DVector<f64>) {
         let n = self.rules.len();
         let inputs = &self.inputs;
         let h = inputs.material.thickness;
         let half = 0.5 * l;
-        let (nodes, points) = (&self.rules.rule.nodes, &self.rules.points);
+        let (nodes, points) = (self.rules.nodes(), self.rules.points());
         let inv_pi = std::f64::consts::FRAC_1_PI;
         let mut a = DMatrix::<f64>::from_element(n + 1, n + 1, inv_pi);
         let (zs, ks, row_max) = &mut self.scratch;
@@ -297,13 +278,22 @@ impl<'a> System<'a> {
             return Some(last.clone());
         }
         let (a, b) = self.assemble(l);
-        let reused = match (&self.factors, self.guess(l)) {
-            (Some(factors), Some(guess)) => factors.refine(&a, &b, guess, self.tolerance),
+        let guess = self.guess(l);
+        let reused = match (&self.factors, &self.coarse) {
+            (Some(factors), _) => guess.and_then(|g| factors.refine(&a, &b, g, self.tolerance)),
+            (None, Some(coarse)) => {
+                let (rules, scale) = (&self.rules, &self.scratch.2);
+                let start = guess.unwrap_or_else(|| DVector::zeros(b.len()));
+                refine(&a, &b, start, TWO_GRID_TOLERANCE.min(self.tolerance), |r| {
+                    coarse.precondition(rules, scale, r)
+                })
+            }
             _ => None,
         };
         let y = match reused {
             Some((y, _)) => y,
             None => {
+                self.factored_scale.clone_from(&self.scratch.2);
                 let factors = Factors::new(a)?;
                 let y = factors.solve(&b)?;
                 self.factors = Some(factors);
@@ -328,22 +318,21 @@ impl<'a> System<'a> {
         let half = 0.5 * l;
         let p0 = inputs.material.plane_modulus() * half / r;
         let c = half * y[n];
-        let rule = &self.rules.rule;
         let (mut q2, mut moment) = (0.0, 0.0);
-        for (v, t) in y.iter().zip(&rule.nodes) {
+        for (v, t) in y.iter().zip(self.rules.nodes()) {
             q2 += p0 * v;
             moment += p0 * v * (c + half * t);
         }
         let phi: Vec<f64> = y
             .iter()
-            .zip(&rule.weights)
+            .zip(self.rules.weights())
             .map(|(v, w)| p0 * v / w)
             .collect();
         let (q2, psi) = (half * q2, half * moment / r);
         let delta_g = l * c / r;
         let bary_phi = self
             .rules
-            .bary
+            .bary()
             .iter()
             .zip(&phi)
             .map(|(b, p)| b * p)
@@ -351,7 +340,7 @@ impl<'a> System<'a> {
         Collocation {
             l,
             c,
-            theta: self.rules.theta,
+            theta: self.rules.theta(),
             phi,
             q2,
             psi,

@@ -16,7 +16,9 @@ pub mod profile;
 pub mod strip;
 mod strip_factors;
 mod strip_kernels;
+mod strip_rules;
 pub mod sweep;
+mod two_grid;
 pub mod validity;
 pub mod wide;
 

@@ -205,29 +205,44 @@ impl Factors {
         &self,
         a: &DMatrix<f64>,
         b: &DVector<f64>,
-        mut y: DVector<f64>,
+        y: DVector<f64>,
         tolerance: f64,
     ) -> Option<(DVector<f64>, usize)> {
-        let mut last = f64::INFINITY;
-        for steps in 1..=MAX_REFINEMENTS {
-            let dy = self.solve(&residual(a, &y, b))?;
-            y += &dy;
-            let (step, size) = (dy.amax(), y.amax());
-            // the contraction per step, unknown after the first
-            let ratio = if last.is_finite() { step / last } else { 0.0 };
-            if step <= 1e-15 * size
-                || (last.is_finite() && ratio < 0.5 && step * ratio <= tolerance * size)
-            {
-                return Some((y, steps));
-            }
-            if ratio >= 0.5 {
-                // stalled: converged if at round-off, else these factors are too far off
-                return (step <= 1e-13 * size).then_some((y, steps));
-            }
-            last = step;
-        }
-        None
+        refine(a, b, y, tolerance, |r| self.solve(r))
     }
+}
+
+/// Solves a y = b by refinement from `guess` with `solve`, an approximate inverse of a (the
+/// factors of a nearby matrix, or a two-grid step): None when a step does not contract the
+/// correction by half (above round-off) or more than MAX_REFINEMENTS steps are needed. Stops when
+/// the next correction, estimated from the contraction so far, is below `tolerance` of y.
+/// Returns y and the steps taken.
+pub fn refine(
+    a: &DMatrix<f64>,
+    b: &DVector<f64>,
+    mut y: DVector<f64>,
+    tolerance: f64,
+    solve: impl Fn(&DVector<f64>) -> Option<DVector<f64>>,
+) -> Option<(DVector<f64>, usize)> {
+    let mut last = f64::INFINITY;
+    for steps in 1..=MAX_REFINEMENTS {
+        let dy = solve(&residual(a, &y, b))?;
+        y += &dy;
+        let (step, size) = (dy.amax(), y.amax());
+        // the contraction per step, unknown after the first
+        let ratio = if last.is_finite() { step / last } else { 0.0 };
+        if step <= 1e-15 * size
+            || (last.is_finite() && ratio < 0.5 && step * ratio <= tolerance * size)
+        {
+            return Some((y, steps));
+        }
+        if ratio >= 0.5 {
+            // stalled: converged if at round-off, else these factors are too far off
+            return (step <= 1e-13 * size).then_some((y, steps));
+        }
+        last = step;
+    }
+    None
 }
 
 /// b - a y, two columns at a time over contiguous slices (so that it vectorizes, one pass over

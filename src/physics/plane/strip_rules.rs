@@ -1,0 +1,95 @@
+//! The Gauss–Jacobi rules of the strip's collocation (`collocation`, docs/physics/plane.md section
+//! 6): nodes and weights for q2 = w phi, w = (1-t)^(1/2+theta) (1+t)^(1/2-theta), the collocation
+//! points (zeros of P_{N+1}^(-1/2-theta, -1/2+theta)), the barycentric weights of the nodes and,
+//! when a two-grid solve first asks, the Jacobi polynomial tables (`two_grid`); kept for the last
+//! few (theta, N) used.
+
+use std::sync::{Arc, Mutex, OnceLock};
+
+use crate::physics::plane::two_grid::Spectral;
+use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
+
+/// Rules kept by `Rules::cached`.
+const CACHED_RULES: usize = 12;
+
+/// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns at one theta.
+#[derive(Debug, PartialEq)]
+pub struct Rules {
+    theta: f64,
+    rule: GaussRule,
+    bary: Vec<f64>,
+    points: Vec<f64>,
+    /// The Jacobi polynomial tables of the two-grid solve, built when first asked for.
+    spectral: OnceLock<Spectral>,
+}
+
+impl Rules {
+    fn new(theta: f64, n: usize) -> Rules {
+        let rule = gauss_jacobi(n, 0.5 + theta, 0.5 - theta);
+        Rules {
+            theta,
+            bary: rule.barycentric_weights(),
+            points: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
+            rule,
+            spectral: OnceLock::new(),
+        }
+    }
+
+    /// The rules for theta and n, built once and kept (the last few used).
+    pub fn cached(theta: f64, n: usize) -> Arc<Rules> {
+        static CACHE: OnceLock<Mutex<Vec<Arc<Rules>>>> = OnceLock::new();
+        let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
+        let mut list = cache.lock().unwrap_or_else(|p| p.into_inner());
+        let hit = list
+            .iter()
+            .position(|r| r.theta.to_bits() == theta.to_bits() && r.len() == n);
+        let rules = match hit {
+            Some(i) => list.remove(i),
+            None => Arc::new(Rules::new(theta, n)),
+        };
+        list.insert(0, Arc::clone(&rules));
+        list.truncate(CACHED_RULES);
+        rules
+    }
+
+    /// The number of unknowns phi_i.
+    pub fn len(&self) -> usize {
+        self.rule.nodes.len()
+    }
+
+    /// Never empty (n >= 1); here for clippy's len_without_is_empty.
+    pub fn is_empty(&self) -> bool {
+        self.rule.nodes.is_empty()
+    }
+
+    /// The nodes t_i, increasing.
+    pub fn nodes(&self) -> &[f64] {
+        &self.rule.nodes
+    }
+
+    /// The Gauss–Jacobi weights W_i of the nodes.
+    pub fn weights(&self) -> &[f64] {
+        &self.rule.weights
+    }
+
+    /// The collocation points xi_k, increasing.
+    pub fn points(&self) -> &[f64] {
+        &self.points
+    }
+
+    /// The exponent shift theta.
+    pub fn theta(&self) -> f64 {
+        self.theta
+    }
+
+    /// The barycentric weights of the nodes.
+    pub fn bary(&self) -> &[f64] {
+        &self.bary
+    }
+
+    /// The Jacobi polynomial tables of these rules (`two_grid`).
+    pub fn spectral(&self) -> &Spectral {
+        self.spectral
+            .get_or_init(|| Spectral::new(self.theta, self.len(), &self.points))
+    }
+}
