@@ -119,6 +119,8 @@ pub struct System<'a> {
     /// R2 + mu chi B12 over a column, for the inputs' mu (shared by the systems of one search).
     regular: Rc<ColumnKernel<'a>>,
     rules: Arc<Rules>,
+    /// The scaled matrix at the last width assembled (its storage reused from width to width).
+    matrix: DMatrix<f64>,
     factors: Option<Factors>,
     /// The row scales (1/largest entry) of the matrix `factors` factored.
     factored_scale: Vec<f64>,
@@ -151,6 +153,7 @@ impl<'a> System<'a> {
             tolerance,
             regular: Rc::clone(regular),
             rules,
+            matrix: DMatrix::zeros(n + 1, n + 1),
             factors: None,
             factored_scale: Vec::new(),
             coarse: None,
@@ -187,15 +190,17 @@ impl<'a> System<'a> {
         self.factors.is_some()
     }
 
-    /// The scaled, row-equilibrated matrix and right side at width l (module note).
-    fn assemble(&mut self, l: f64) -> (DMatrix<f64>, DVector<f64>) {
+    /// The scaled, row-equilibrated matrix at width l (into `matrix`) and the right side (module
+    /// note).
+    fn assemble(&mut self, l: f64) -> DVector<f64> {
         let n = self.rules.len();
         let inputs = &self.inputs;
         let h = inputs.material.thickness;
         let half = 0.5 * l;
         let (nodes, points) = (self.rules.nodes(), self.rules.points());
         let inv_pi = std::f64::consts::FRAC_1_PI;
-        let mut a = DMatrix::<f64>::from_element(n + 1, n + 1, inv_pi);
+        let a = &mut self.matrix;
+        a.column_mut(n).fill(inv_pi);
         let (zs, ks, row_max) = &mut self.scratch;
         let regular = &self.regular;
         row_max.fill(inv_pi);
@@ -242,7 +247,7 @@ impl<'a> System<'a> {
                 *entry *= scale;
             }
         }
-        (a, b)
+        b
     }
 
     /// A first guess of the scaled unknowns at width l: the polynomial in l through the last
@@ -277,14 +282,14 @@ impl<'a> System<'a> {
         if let Some(last) = self.last.as_ref().filter(|c| c.l.to_bits() == l.to_bits()) {
             return Some(last.clone());
         }
-        let (a, b) = self.assemble(l);
-        let guess = self.guess(l);
+        let b = self.assemble(l);
+        let (a, guess) = (&self.matrix, self.guess(l));
         let reused = match (&self.factors, &self.coarse) {
-            (Some(factors), _) => guess.and_then(|g| factors.refine(&a, &b, g, self.tolerance)),
+            (Some(factors), _) => guess.and_then(|g| factors.refine(a, &b, g, self.tolerance)),
             (None, Some(coarse)) => {
                 let (rules, scale) = (&self.rules, &self.scratch.2);
                 let start = guess.unwrap_or_else(|| DVector::zeros(b.len()));
-                refine(&a, &b, start, TWO_GRID_TOLERANCE.min(self.tolerance), |r| {
+                refine(a, &b, start, TWO_GRID_TOLERANCE.min(self.tolerance), |r| {
                     coarse.precondition(rules, scale, r)
                 })
             }
@@ -294,7 +299,7 @@ impl<'a> System<'a> {
             Some((y, _)) => y,
             None => {
                 self.factored_scale.clone_from(&self.scratch.2);
-                let factors = Factors::new(a)?;
+                let factors = Factors::new(&self.matrix)?;
                 let y = factors.solve(&b)?;
                 self.factors = Some(factors);
                 y

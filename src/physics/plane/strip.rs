@@ -28,9 +28,10 @@ pub const MAX_NODES: usize = 1008;
 
 /// The fine node count from which an operating point is solved by two-grid refinement from the
 /// coarse search's factors (`two_grid`) instead of a factorization of its own: with fewer nodes
-/// the factorization costs less than the five to ten two-grid steps (measured: N = 192 took 15 %
-/// longer by two-grid, N = 272 8 % less, N = 400 15 % less).
-const TWO_GRID_FROM: usize = 256;
+/// the factorization costs less than the five to ten two-grid steps (thread CPU, allocator
+/// page faults kept out: two-grid 8 % slower at N = 128, 3 % at 160 and 192, 6 % faster at 240,
+/// 10-13 % at 336 and 400).
+const TWO_GRID_FROM: usize = 224;
 
 /// Relative accuracy of the linear solves by refinement at an operating point (the width is
 /// found to 1e-15) and along a sweep (whose loads are those of the solutions).
@@ -202,8 +203,10 @@ fn search<'a>(
             break;
         }
     }
+    // kept only where a fine system will use it (its memory freed as early as before otherwise)
+    let fine_nodes = node_count(1.01 * l / h).unwrap_or(0);
     let coarse = coarse
-        .filter(|_| coarse_done && two_grid)
+        .filter(|_| coarse_done && two_grid && fine_nodes >= TWO_GRID_FROM)
         .and_then(|sys| sys.into_inner().into_coarse())
         .map(Rc::new);
     if !coarse_done {

@@ -171,14 +171,14 @@ pub enum Factors {
 
 impl Factors {
     /// LU when its growth factor is moderate, else QR; None when the matrix is singular.
-    pub fn new(a: DMatrix<f64>) -> Option<Factors> {
+    pub fn new(a: &DMatrix<f64>) -> Option<Factors> {
         let scale = a.amax();
         if let Some(lu) = Lu::new(a.clone()) {
             if lu.growth() < MAX_GROWTH * scale {
                 return Some(Factors::Lu(lu));
             }
         }
-        let qr = a.qr();
+        let qr = a.clone().qr();
         qr.is_invertible().then_some(Factors::Qr(qr))
     }
 
@@ -316,7 +316,7 @@ mod tests {
         let mut singular = scrambled(20, 9);
         singular.column_mut(11).fill(0.0);
         assert!(Lu::new(singular.clone()).is_none());
-        assert!(Factors::new(singular).is_none());
+        assert!(Factors::new(&singular).is_none());
     }
 
     #[test]
@@ -334,7 +334,7 @@ mod tests {
         assert_eq!(lu.growth(), 2f64.powi(n as i32 - 1));
         let x = DVector::from_fn(n, |i, _| (i as f64).sin());
         let b = &a * &x;
-        let factors = Factors::new(a).unwrap();
+        let factors = Factors::new(&a).unwrap();
         assert!(!factors.is_lu());
         assert!((factors.solve(&b).unwrap() - &x).amax() < 1e-12);
     }

@@ -62,8 +62,26 @@ fn padded(values: &[f64]) -> Vec<f64> {
     out
 }
 
-/// sum_k u_k P_m(x_k) for m = 0..degrees (P by `rec`).
+/// sum_k u_k P_m(x_k) for m = 0..degrees (P by `rec`): on 4-wide vectors where the processor has
+/// AVX2 (the same operations in the same order, so the same numbers).
 fn project(xs: &[f64], u: &[f64], rec: &[[f64; 3]], degrees: usize) -> Vec<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has AVX2 (checked just above).
+        return unsafe { project_avx2(xs, u, rec, degrees) };
+    }
+    project_with(xs, u, rec, degrees)
+}
+
+/// `project` compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn project_avx2(xs: &[f64], u: &[f64], rec: &[[f64; 3]], degrees: usize) -> Vec<f64> {
+    project_with(xs, u, rec, degrees)
+}
+
+#[inline(always)]
+fn project_with(xs: &[f64], u: &[f64], rec: &[[f64; 3]], degrees: usize) -> Vec<f64> {
     let (xs, u) = (padded(xs), padded(u));
     // P_{m-1} and P_m at the points; each step overwrites P_{m-1} by P_{m+1} and swaps
     let (mut older, mut newer) = (vec![0.0; xs.len()], vec![1.0; xs.len()]);
@@ -85,8 +103,26 @@ fn project(xs: &[f64], u: &[f64], rec: &[[f64; 3]], degrees: usize) -> Vec<f64> 
     out
 }
 
-/// sum_m coefficients_m P_m(x) at each x (P by `rec`).
+/// sum_m coefficients_m P_m(x) at each x (P by `rec`), on 4-wide vectors where the processor
+/// has AVX2 (as `project`).
 fn evaluate(xs: &[f64], rec: &[[f64; 3]], coefficients: &[f64]) -> Vec<f64> {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the processor has AVX2 (checked just above).
+        return unsafe { evaluate_avx2(xs, rec, coefficients) };
+    }
+    evaluate_with(xs, rec, coefficients)
+}
+
+/// `evaluate` compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn evaluate_avx2(xs: &[f64], rec: &[[f64; 3]], coefficients: &[f64]) -> Vec<f64> {
+    evaluate_with(xs, rec, coefficients)
+}
+
+#[inline(always)]
+fn evaluate_with(xs: &[f64], rec: &[[f64; 3]], coefficients: &[f64]) -> Vec<f64> {
     let (mut older, mut newer) = (vec![0.0; xs.len()], vec![1.0; xs.len()]);
     let mut out = vec![coefficients[0]; xs.len()];
     for (&[a, b, c], &w) in rec.iter().zip(&coefficients[1..]) {
