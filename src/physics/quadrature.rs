@@ -56,25 +56,31 @@ struct Recurrence {
     abc: Vec<[f64; 3]>,
 }
 
+/// The coefficients [a_k, b_k, c_k], k = 1..=n, of `Recurrence`.
+pub(crate) fn jacobi_recurrence(n: usize, alpha: f64, beta: f64) -> Vec<[f64; 3]> {
+    let ab = alpha + beta;
+    (1..=n)
+        .map(|k| {
+            if k == 1 {
+                return [0.5 * (ab + 2.0), 0.5 * (alpha - beta), 0.0];
+            }
+            let k = k as f64;
+            let c = 2.0 * k + ab;
+            let den = 2.0 * k * (k + ab) * (c - 2.0);
+            [
+                (c - 1.0) * c * (c - 2.0) / den,
+                (c - 1.0) * (alpha * alpha - beta * beta) / den,
+                2.0 * (k + alpha - 1.0) * (k + beta - 1.0) * c / den,
+            ]
+        })
+        .collect()
+}
+
 impl Recurrence {
     fn new(n: usize, alpha: f64, beta: f64) -> Recurrence {
-        let ab = alpha + beta;
-        let abc = (1..=n)
-            .map(|k| {
-                if k == 1 {
-                    return [0.5 * (ab + 2.0), 0.5 * (alpha - beta), 0.0];
-                }
-                let k = k as f64;
-                let c = 2.0 * k + ab;
-                let den = 2.0 * k * (k + ab) * (c - 2.0);
-                [
-                    (c - 1.0) * c * (c - 2.0) / den,
-                    (c - 1.0) * (alpha * alpha - beta * beta) / den,
-                    2.0 * (k + alpha - 1.0) * (k + beta - 1.0) * c / den,
-                ]
-            })
-            .collect();
-        Recurrence { abc }
+        Recurrence {
+            abc: jacobi_recurrence(n, alpha, beta),
+        }
     }
 
     /// P_n(x) and P_n'(x), the derivative by the recurrence differentiated in x.

@@ -30,27 +30,7 @@ use nalgebra::DVector;
 
 use crate::physics::plane::collocation::Rules;
 use crate::physics::plane::strip_factors::Factors;
-
-/// P_k^(a,b) = (a_k x + b_k) P_{k-1} - c_k P_{k-2}, k = 1..=n (DLMF 18.9.1 with the coefficients of
-/// 18.9.2 at degree k - 1; P_1 = (a - b)/2 + (a + b + 2) x/2).
-fn recurrence(n: usize, a: f64, b: f64) -> Vec<[f64; 3]> {
-    let ab = a + b;
-    (1..=n)
-        .map(|k| {
-            if k == 1 {
-                return [0.5 * (ab + 2.0), 0.5 * (a - b), 0.0];
-            }
-            let k = k as f64;
-            let c = 2.0 * k + ab;
-            let den = 2.0 * k * (k + ab) * (c - 2.0);
-            [
-                (c - 1.0) * c * (c - 2.0) / den,
-                (c - 1.0) * (a * a - b * b) / den,
-                2.0 * (k + a - 1.0) * (k + b - 1.0) * c / den,
-            ]
-        })
-        .collect()
-}
+use crate::physics::quadrature::jacobi_recurrence as recurrence;
 
 /// Lanes of the recurrences over points (independent sums, so that the loops vectorize).
 const LANES: usize = 8;
