@@ -172,6 +172,18 @@ fn titled(label: &str, unit: &str, exp: i32) -> String {
 
 fn linear([lo, hi]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
     let (step, m, e, ks) = nice_step(lo, hi, max);
+    labelled([lo, hi], (step, m, e), &ks, label, unit).0
+}
+
+/// The ticks at the multiples `ks` of a nice step (`nice_step`: the step, its mantissa and power
+/// of ten) over `[lo, hi]`, and the step as labelled.
+fn labelled(
+    [lo, hi]: [f64; 2],
+    (step, m, e): (f64, f64, i32),
+    ks: &[f64],
+    label: &str,
+    unit: &str,
+) -> (Ticks, String) {
     let (first, last) = (ks[0], ks[ks.len() - 1]);
     let top = first.abs().max(last.abs()) * step;
     let digits = if top > 0.0 {
@@ -219,10 +231,11 @@ fn linear([lo, hi]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
             None => format!("{label} {sign} {}", compact(offset.abs(), "", 12)),
         }
     };
-    Ticks {
+    let ticks = Ticks {
         ticks,
         title: titled(&name, unit, exp),
-    }
+    };
+    (ticks, format!("{:.decimals$}", m * 10f64.powi(e - exp)))
 }
 
 /// A value in few characters: an SI prefix letter for prefixable units ("2.5k", "100u"),
@@ -395,5 +408,26 @@ fn symlog([a, b]: [f64; 2], c: f64, label: &str, unit: &str, max: usize) -> Tick
     Ticks {
         ticks: with_labels(scale, values, unit),
         title,
+    }
+}
+
+/// Filled bands over `[lo, hi]` (lo < hi), as matplotlib's `contourf` draws a field: edges at
+/// the multiples of a nice step (`nice_step`) from the last at or under lo to the first at or
+/// over hi, the finest step giving at most `max` bands. The edges (increasing) with their labels
+/// and the title, as a linear axis over them labels them; and the step as labelled.
+pub fn bands([lo, hi]: [f64; 2], label: &str, unit: &str, max: usize) -> (Ticks, String) {
+    let max = max.max(1);
+    // a step with at most max bands has at most max + 1 multiples in [lo, hi]
+    let mut multiples = max + 1;
+    loop {
+        let (step, m, e, _) = nice_step(lo, hi, multiples);
+        let first = (lo / step + 1e-9).floor() as i64;
+        let last = ((hi / step - 1e-9).ceil() as i64).max(first + 1);
+        if last - first <= max as i64 || multiples <= 2 {
+            let ks: Vec<f64> = (first..=last).map(|k| k as f64).collect();
+            let edges = [first as f64 * step, last as f64 * step];
+            return labelled(edges, (step, m, e), &ks, label, unit);
+        }
+        multiples -= 1;
     }
 }

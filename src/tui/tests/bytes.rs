@@ -69,9 +69,9 @@ fn playing(file: &str, frames: usize, s: RenderOptions) -> (usize, Vec<usize>) {
 #[test]
 fn playing_the_pressure_map_writes_under_60_kb_a_second() {
     let per_second = 1000 / FRAME.as_millis() as usize;
-    // measured over 20 frames (README): dispersion 1.9 kB a frame on average, at most 3.8 kB,
-    // wave-thick-layer 1.6 and 3.1, jgh-egg-box 2.2 and 3.7, contact-lost 1.3 and 2.4: at most
-    // 19 kB/s at five frames a second
+    // measured over 20 frames (README): dispersion 0.5 kB a frame on average, at most 1.7 kB,
+    // wave-thick-layer 0.6 and 1.9, jgh-egg-box 0.6 and 1.4, contact-lost 0.6 and 1.7: at most
+    // 10 kB/s at five frames a second
     for file in [
         "dispersion.toml",
         "wave-thick-layer.toml",
@@ -84,12 +84,12 @@ fn playing_the_pressure_map_writes_under_60_kb_a_second() {
             worst * per_second < 60_000,
             "{file}: {frames:?} at {per_second}/s"
         );
-        // a full redraw of the map screen (9.3-11.0 kB): 3.8 kB of frame, form, footer, status
-        // and colour bar, and a 52 x 26 map with a colour code wherever a colour changes
-        assert!(full < 11_000, "{file}: {full}");
-        // in 24-bit colour, whose codes are longer: 15.2-25.6 kB
+        // a full redraw of the map screen (7.0-7.7 kB): 3.7 kB of frame, form, footer, status
+        // and bar, and a 52 x 26 map in 4-6 bands with a colour code wherever a band changes
+        assert!(full < 8_000, "{file}: {full}");
+        // in 24-bit colour, whose codes are longer: 8.2-10.1 kB
         let (full, _) = playing(file, 0, TRUECOLOR);
-        assert!(full < 26_000, "{file} in 24-bit colour: {full}");
+        assert!(full < 11_000, "{file} in 24-bit colour: {full}");
     }
 }
 

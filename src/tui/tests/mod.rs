@@ -4,6 +4,7 @@
 
 mod ascii;
 mod axes;
+mod bands;
 mod bytes;
 mod charts;
 mod explore;

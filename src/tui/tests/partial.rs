@@ -65,9 +65,9 @@ fn the_zones_out_of_contact_are_grey_and_named_beside_the_bar() {
             greys > 10 && viridis > 10,
             "{w}x{h}: {greys} grey, {viridis}"
         );
-        // grey is no level of the colour scale
-        for level in 0..crate::tui::charts::palette::LEVELS {
-            assert_ne!(COLOUR.heat(level), grey);
+        // grey is no band's colour
+        for n in 1..=crate::tui::view::heatmap::MOST_BANDS {
+            assert!(!COLOUR.bands(n).contains(&grey));
         }
         // its swatch, then its name, at the top of the words beside the bar
         let text = screen(&lost, w, h, COLOUR);

@@ -1,6 +1,8 @@
 //! The heatmap: a scalar field drawn with half blocks (two grid rows per text row, so that a
-//! square cell looks square), in a quantised viridis map, with a colour bar, its ticks and the
-//! unit; shades without colour. A fixed scale (kept while time plays) says so above the bar.
+//! square cell looks square) in filled bands at nice values, as matplotlib's `contourf` draws
+//! it, one viridis colour a band (one shade without colour), with a bar of the bands whose every
+//! edge is labelled, and the unit and step. A fixed scale (kept while time plays) keeps the
+//! bands and says so.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -8,15 +10,20 @@ use ratatui::style::{Color, Style};
 
 use crate::tui::backend::colour_bytes;
 use crate::tui::charts::Map;
-use crate::tui::charts::Scale;
-use crate::tui::charts::palette::{LEVELS, level};
 use crate::tui::charts::range::bounds;
-use crate::tui::charts::ticks::ticks;
-use crate::tui::view::theme::RenderOptions;
+use crate::tui::charts::ticks::bands;
+use crate::tui::view::theme::{ASCII_SHADES, RenderOptions, SHADES};
 use crate::tui::view::wrap;
 
 /// Columns of the colour bar and its labels.
 const BAR: u16 = 8;
+
+/// The most bands: few enough that each is told apart from its neighbours and found on the bar,
+/// and that a map redraws in under 8 kB over SSH at 120x40 in 256 colours (issue 10: bytes go
+/// with the colour changes along each row). Measured on the four bundled maps, 6 is the most
+/// that all meet it: at 7 dispersion.toml has 7 bands of 0.25 MPa (9.9 kB), at 8 also
+/// jgh-egg-box.toml 8 of 25 MPa (8.9 kB) and contact-lost.toml 8 of 2 MPa (8.6 kB).
+pub const MOST_BANDS: usize = 6;
 
 /// The size in cells (columns, text rows) of a map of aspect `lx/ly` that fits in `width` x
 /// `height` cells, a text row holding two grid rows.
@@ -27,6 +34,28 @@ pub fn fit(aspect: f64, width: u16, height: u16) -> (u16, u16) {
     } else {
         (width, ((w / aspect / 2.0).round() as u16).clamp(1, height))
     }
+}
+
+/// The shades without colour, the blank first (`theme::shade`).
+fn shades(style: RenderOptions) -> usize {
+    if style.ascii {
+        ASCII_SHADES.len()
+    } else {
+        SHADES.len()
+    }
+}
+
+/// The most bands a bar of `rows` rows shows: in colour an edge on a row of its own, each
+/// splitting its row between the bands above and below it; without colour also a row of its own
+/// for each band between blank rows at the edges, and no more bands than shades but the blank.
+fn most_bands(style: RenderOptions, rows: u16) -> usize {
+    let rows = rows.max(1) as usize;
+    let most = if style.color {
+        MOST_BANDS.min(rows - 1)
+    } else {
+        MOST_BANDS.min(shades(style) - 1).min((rows - 1) / 2)
+    };
+    most.max(1)
 }
 
 /// Draws the map into `area`: the field on the left, the bar right of it, the caption under
@@ -42,7 +71,7 @@ pub fn draw(
     if nx < 2 || ny < 2 || area.width < BAR + 4 || area.height < 3 {
         return;
     }
-    let [lo, hi] = fixed.unwrap_or_else(|| bounds(map.values.iter().copied()));
+    let range = fixed.unwrap_or_else(|| bounds(map.values.iter().copied()));
     let aspect = (map.x[nx - 1] - map.x[0]) / (map.y[ny - 1] - map.y[0]);
     // the words right of the bar when there is room for them, else in a row under the map
     const SIDE: u16 = 14;
@@ -53,44 +82,51 @@ pub fn draw(
     } else {
         fit(aspect, area.width - BAR - 1, area.height - 1)
     };
-    // None: an empty value (no contact), drawn apart from the scale
+    let (edges, step) = bands(range, "p", map.unit, most_bands(style, h));
+    let n = edges.ticks.len() - 1;
+    let (e0, e1) = (edges.ticks[0].0, edges.ticks[n].0);
+    // band i holds the values in (edge i, edge i + 1], the lowest also its lower edge
+    let band = |v: f64| -> u8 {
+        let x = (v - e0) / (e1 - e0) * n as f64;
+        ((x - 1e-9).ceil() as i64 - 1).clamp(0, n as i64 - 1) as u8
+    };
+    // None: an empty value (no contact), drawn apart from the bands
     let sample = |col: u16, half_row: u16| -> Option<f64> {
         let i = ((col as usize * nx) / w as usize).min(nx - 1);
         // row 0 at the top is the largest y
         let j = ny - 1 - ((half_row as usize * ny) / (2 * h as usize)).min(ny - 1);
         let v = map.values[j * nx + i];
-        (map.empty.is_none() || v != 0.0).then(|| (v - lo) / (hi - lo))
+        (map.empty.is_none() || v != 0.0).then_some(v)
+    };
+    // without colour one shade a band, spread over the shades from the lightest but the blank
+    let shade = |b: u8| {
+        let k = 1.0 + b as f64 * (shades(style) - 2) as f64 / (n - 1).max(1) as f64;
+        style.shade(k / (shades(style) - 1) as f64)
     };
     let empty = style.empty();
-    // levels of one colour (256 colours hold fewer than LEVELS) share the lowest one's code
-    let codes: Vec<u8> = (0..LEVELS)
-        .map(|l| {
-            (0..=l)
-                .find(|&k| style.heat(k) == style.heat(l))
-                .unwrap_or(l) as u8
-        })
-        .collect();
-    let code = |t: Option<f64>| t.map_or(EMPTY_CODE, |t| codes[level(t)]);
+    let colours = style.bands(n);
     let colour = |code: u8| match code {
         EMPTY_CODE => empty.1,
         DEFAULT => Color::Reset,
-        l => style.heat(l as usize),
+        // a code of no band (n < MOST_BANDS) is never drawn
+        b => colours.get(b as usize).copied().unwrap_or(Color::Reset),
     };
     let weight: Vec<u32> = (0..CODES as u8).map(|c| colour_bytes(colour(c))).collect();
     for row in 0..h {
         let halves = (0..w).map(|col| (sample(col, 2 * row), sample(col, 2 * row + 1)));
         if !style.color {
-            // a text cell holds two rows: the shade of those with a value
+            // a text cell holds two rows: the band of those with a value
             for (col, (top, bottom)) in halves.enumerate() {
-                let shade = match (top, bottom) {
-                    (Some(a), Some(b)) => style.shade(0.5 * (a + b)),
-                    (Some(a), None) | (None, Some(a)) => style.shade(a),
+                let glyph = match (top, bottom) {
+                    (Some(a), Some(b)) => shade(band(0.5 * (a + b))),
+                    (Some(a), None) | (None, Some(a)) => shade(band(a)),
                     (None, None) => empty.0,
                 };
-                buf[(area.x + col as u16, area.y + row)].set_char(shade);
+                buf[(area.x + col as u16, area.y + row)].set_char(glyph);
             }
             continue;
         }
+        let code = |v: Option<f64>| v.map_or(EMPTY_CODE, band);
         let codes: Vec<(u8, u8)> = halves.map(|(a, b)| (code(a), code(b))).collect();
         for (col, (glyph, fg, bg)) in fewest_bytes(&codes, &weight).into_iter().enumerate() {
             buf[(area.x + col as u16, area.y + row)]
@@ -98,44 +134,52 @@ pub fn draw(
                 .set_style(Style::default().fg(colour(fg)).bg(colour(bg)));
         }
     }
-    // the bar: the levels from the top, with ticks of the values
+    // the bar: the bands from the top, each edge on a row of its own with its label
     let bx = area.x + w + 1;
-    for row in 0..h {
-        let t = 1.0 - row as f64 / (h - 1).max(1) as f64;
-        let cell = &mut buf[(bx, area.y + row)];
-        if style.color {
-            let l = level(t).min(LEVELS - 1);
-            cell.set_char(' ')
-                .set_style(Style::default().bg(style.heat(l)));
-        } else {
-            cell.set_char(style.shade(t));
+    let edge_row = |i: usize| area.y + ((n - i) as f64 * (h - 1) as f64 / n as f64).round() as u16;
+    for (b, &fill) in colours.iter().enumerate() {
+        for y in edge_row(b + 1) + 1..edge_row(b) {
+            let cell = &mut buf[(bx, y)];
+            if style.color {
+                cell.set_char(' ').set_style(Style::default().bg(fill));
+            } else {
+                cell.set_char(shade(b as u8));
+            }
         }
     }
-    let t = ticks(
-        [lo, hi],
-        Scale::Linear,
-        "p",
-        map.unit,
-        (h as usize / 2).clamp(2, 8),
-    );
     let mut used = Vec::new();
-    for (v, label) in &t.ticks {
-        let row = ((1.0 - (v - lo) / (hi - lo)) * (h - 1) as f64).round() as u16;
-        if used.contains(&row) {
+    for (i, (_, label)) in edges.ticks.iter().enumerate() {
+        let y = edge_row(i);
+        if used.contains(&y) {
             continue;
         }
-        used.push(row);
+        used.push(y);
+        // in colour the edge splits its row: the band above in the upper half, below in the
+        // lower; without colour its row is blank between the bands' shades
+        if style.color {
+            let (glyph, fg, bg) = match (i < n, i > 0) {
+                (true, true) => ('▀', colours[i], colours[i - 1]),
+                (true, false) => ('▀', colours[i], Color::Reset),
+                (false, _) => ('▄', colours[n - 1], Color::Reset),
+            };
+            buf[(bx, y)]
+                .set_char(glyph)
+                .set_style(Style::default().fg(fg).bg(bg));
+        }
         buf.set_stringn(
             bx + 1,
-            area.y + row,
+            y,
             format!("{}{label}", style.bar_tick()),
             (BAR - 1) as usize,
             Style::default(),
         );
     }
     let title = match fixed {
-        Some(_) => format!("{}, scale fixed while only t changes", t.title),
-        None => t.title.clone(),
+        Some(_) => format!(
+            "{} in bands of {step}, scale fixed while only t changes",
+            edges.title
+        ),
+        None => format!("{} in bands of {step}", edges.title),
     };
     // the empty values' sample and name first, then the words
     let (x, y) = if beside {
@@ -173,15 +217,16 @@ pub fn draw(
     }
 }
 
-/// The colour code of the empty value (no contact); codes below it are levels.
-const EMPTY_CODE: u8 = LEVELS as u8;
+/// The colour code of the empty value (no contact); codes below it are bands.
+const EMPTY_CODE: u8 = MOST_BANDS as u8;
 /// The colour code of the terminal's default colour, for a colour no glyph shows.
 const DEFAULT: u8 = EMPTY_CODE + 1;
 /// Colour codes.
 const CODES: usize = DEFAULT as usize + 1;
-/// The extra weight of a cell drawn in a form that depends on its neighbours (measured on four
-/// map presets at 120x40 in 256 colours, 20 frames: 0 writes a full draw 1-7 % smaller and
-/// 23-167 % more while time plays, 4 a full draw 0-4 % larger and 0-6 % less while playing).
+/// The extra weight of a cell drawn in a form that depends on its neighbours (measured in bands
+/// on four map presets at 120x40 in 256 colours, 20 frames: 0 writes a full draw 1-7 % smaller
+/// and 27-137 % more a frame while time plays, 4 a full draw 0-2 % larger and 0-3 % less while
+/// playing).
 const APART: u32 = 2;
 
 /// Bytes of the escape that changes the colours (foreground, background) from `a` to `b`, as
@@ -290,7 +335,7 @@ mod tests {
             seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
             ((seed >> 16) % 5) as u8
         };
-        let ramp: Vec<(u8, u8)> = (0..50).map(|i| (i / 3, (i + 1) / 3)).collect();
+        let ramp: Vec<(u8, u8)> = (0..50).map(|i| (i / 7, (i + 1) / 7)).collect();
         let noisy: Vec<(u8, u8)> = (0..50).map(|_| (noise(), noise())).collect();
         let holes: Vec<(u8, u8)> = (0..50u8)
             .map(|i| {

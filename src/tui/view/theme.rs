@@ -296,14 +296,32 @@ impl RenderOptions {
         if self.ascii { '|' } else { '│' }
     }
 
-    /// The heatmap colour of a level of the quantised viridis map: 24-bit, or the nearest of
-    /// the 256-colour palette.
+    /// The regime map's colour of a level of the quantised viridis map: 24-bit, or the nearest
+    /// of the 256-colour palette.
     pub fn heat(self, level: usize) -> Color {
         if self.truecolor {
             let (r, g, b) = palette::level_colour(level);
             Color::Rgb(r, g, b)
         } else {
             Color::Indexed(palette::level_256(level))
+        }
+    }
+
+    /// The colours of `n` filled bands of the pressure map (`palette::band_colour`): 24-bit, or
+    /// distinct colours of the 256-colour palette.
+    pub fn bands(self, n: usize) -> Vec<Color> {
+        if self.truecolor {
+            (0..n)
+                .map(|band| {
+                    let (r, g, b) = palette::band_colour(band, n);
+                    Color::Rgb(r, g, b)
+                })
+                .collect()
+        } else {
+            palette::bands_256(n)
+                .into_iter()
+                .map(Color::Indexed)
+                .collect()
         }
     }
 
