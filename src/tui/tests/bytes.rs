@@ -84,8 +84,9 @@ fn playing_the_pressure_map_writes_under_60_kb_a_second() {
             worst * per_second < 60_000,
             "{file}: {frames:?} at {per_second}/s"
         );
-        // a full redraw of the map screen (7.0-7.7 kB): 3.7 kB of frame, form, footer, status
-        // and bar, and a 52 x 26 map in 4-6 bands with a colour code wherever a band changes
+        // a full redraw of the map screen (7.0-7.7 kB): 3.3-3.6 kB of frame, form, footer,
+        // status and bar, and a 52 x 26 map in 4-6 bands (3.7-4.3 kB) with a colour code
+        // wherever a band changes
         assert!(full < 8_000, "{file}: {full}");
         // in 24-bit colour, whose codes are longer: 8.2-10.1 kB
         let (full, _) = playing(file, 0, TRUECOLOR);
