@@ -76,3 +76,24 @@ fn the_help_defines_every_group() {
         assert!(defined("D (groups)") && defined("mu*-mu"));
     }
 }
+
+#[test]
+fn a_quantity_reads_the_same_in_the_status_and_in_groups() {
+    // the review: D gave (a+b)/h = 16.58 beside "valid: (a+b)/h = 16.575", and phi 0.07227 in D
+    // against +0.07 in the dimensional harmonics table (status::number is the one rule now)
+    let mut app = solved("thin-strip-winkler.toml");
+    let dimensional = screen(&app, 120, 40, PLAIN);
+    press(&mut app, KeyCode::Char('D'));
+    let groups = screen(&app, 120, 40, PLAIN);
+    for s in [&dimensional, &groups] {
+        assert!(s.contains("(a+b)/h = 16.58"), "{s}");
+        assert!(!s.contains("16.575"), "{s}");
+    }
+    let mut app = solved("dispersion.toml");
+    let dimensional = screen(&app, 120, 40, PLAIN);
+    press(&mut app, KeyCode::Char('D'));
+    let groups = screen(&app, 120, 40, PLAIN);
+    for s in [&dimensional, &groups] {
+        assert!(s.contains(" +0.07227"), "{s}");
+    }
+}

@@ -39,7 +39,7 @@ fn a_model_that_holds_says_how_far_it_is_from_the_exact_strip_model() {
     let app = solved("polymer-coating.toml");
     let s = status(&app, 80, 24);
     assert!(
-        s.contains("valid: (a+b)/h = 0.061; wide model holds"),
+        s.contains("valid: (a+b)/h = 0.06104; wide model holds"),
         "{s}"
     );
     assert!(s.contains("of the exact strip solution"), "{s}");

@@ -7,11 +7,10 @@ use wearlab::engine::{Output, SpatialOutput};
 use wearlab::explore::groups::{self, Group};
 use wearlab::physics::plane::OperatingPoint;
 use wearlab::physics::plane::validity::StripCheck;
-use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status::{mu_star, pack, per_output, prose, visible, with_validity};
+use crate::tui::view::status::{mu_star, number, pack, per_output, prose, visible, with_validity};
 use crate::tui::view::theme::RenderOptions;
 
 /// The status panel's title: it says when the values are groups.
@@ -28,7 +27,7 @@ fn item(g: &Group, mu: f64) -> String {
     match g.name {
         // as in the dimensional status: its difference from mu is often a few 1e-5
         "mu_star" => mu_star(g.value, mu),
-        _ => format!("{} = {}", g.symbol, format_si(g.value, "")),
+        _ => format!("{} = {}", g.symbol, number(g.name, g.value)),
     }
 }
 
@@ -100,7 +99,7 @@ fn spatial(
     // each column as wide as its symbol or its widest value, two spaces apart
     let cells: Vec<Vec<String>> = rows
         .iter()
-        .map(|row| row.iter().map(|g| format_si(g.value, "")).collect())
+        .map(|row| row.iter().map(|g| number(g.name, g.value)).collect())
         .collect();
     let widths: Vec<usize> = (first.iter().enumerate())
         .map(|(i, g)| {

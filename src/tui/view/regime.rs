@@ -16,6 +16,7 @@ use crate::tui::charts::Scale;
 use crate::tui::charts::palette::level;
 use crate::tui::charts::range::bounds;
 use crate::tui::charts::ticks::ticks;
+use crate::tui::view::status;
 use crate::tui::view::theme::RenderOptions;
 
 /// Columns of the y tick labels.
@@ -296,7 +297,10 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
         ),
         format!("{} = {value}", q.symbol()),
     ];
-    items.extend(s.theta.map(|t| format!("theta = {t:.4}")));
+    items.extend(
+        s.theta
+            .map(|t| format!("theta = {}", status::number("theta", t))),
+    );
     let verdict = |ok: bool| if ok { "holds" } else { "fails" };
     items.extend(s.wide_holds.map(|h| format!("wide {}", verdict(h))));
     items.extend(s.narrow_holds.map(|h| format!("narrow {}", verdict(h))));

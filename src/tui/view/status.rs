@@ -122,6 +122,17 @@ pub fn mu_star(value: f64, mu: f64) -> String {
     format!("mu* = {value:.6} (mu {mu})")
 }
 
+/// How a dimensionless quantity, named as in `explore::groups`, is written wherever a screen
+/// shows it (the status, the groups of `D`, the map's cursor): four significant digits
+/// (`format_si`), the phase lead with its sign. mu* has its own rule (`mu_star`).
+pub fn number(name: &str, value: f64) -> String {
+    let text = format_si(value, "");
+    match name {
+        "harmonics.N.phase_lead" if value > 0.0 => format!("+{text}"),
+        _ => text,
+    }
+}
+
 /// A sentence wrapped to the panel, in one style.
 pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
     wrap(text, width)
@@ -143,7 +154,7 @@ fn plane(
         format!("b = {}", format_si(s.b, "m")),
     ];
     // theta exists only for the models that have it: never a placeholder under another's label
-    items.extend(s.theta.map(|t| format!("theta = {t:.4}")));
+    items.extend(s.theta.map(|t| format!("theta = {}", number("theta", t))));
     items.extend([
         format!("Q2 = {}", format_si(s.normal_force, "N/m")),
         format!("psi = {}", format_si(s.psi, "N/m")),
@@ -224,9 +235,9 @@ fn spatial(
             };
             let c = format_si(e.drift_velocity, "m/s");
             vec![format!(
-                "{:>3} {kh:<10}{decay:<10}{c:<12}{:+.2}",
+                "{:>3} {kh:<10}{decay:<10}{c:<12}{}",
                 n + 1,
-                e.phase_lead
+                number("harmonics.N.phase_lead", e.phase_lead)
             )]
         })
         .collect();

@@ -7,7 +7,7 @@ use ratatui::text::Line;
 use wearlab::physics::plane::OperatingPoint;
 use wearlab::physics::plane::validity::StripCheck;
 
-use crate::tui::view::status::prose;
+use crate::tui::view::status::{number, prose};
 use crate::tui::view::theme::RenderOptions;
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
@@ -26,7 +26,9 @@ pub fn lines(
     let mut head = Vec::new();
     if v.ok {
         let where_ = if p.solution.inputs.material.thickness.is_finite() {
-            format!("(a+b)/h = {:.3}", v.contact_width_over_thickness)
+            let ratio = v.contact_width_over_thickness;
+            let ratio = number("validity.contact_width_over_thickness", ratio);
+            format!("(a+b)/h = {ratio}")
         } else {
             "half-plane, h = inf".to_string()
         };
