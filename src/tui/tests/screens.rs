@@ -66,6 +66,25 @@ fn help_picker_choices_error_and_too_small() {
     };
     update(&mut app, Msg::PresetsListed(entries));
     insta::assert_snapshot!("picker_80x24", screen(&app, 80, 24, PLAIN));
+    // the review: 9 of 14 presets at 80x24 with no hint that more follow
+    let count = crate::tui::effects::list_presets(None);
+    let Msg::PresetsListed(listed) = count else {
+        panic!()
+    };
+    let n = listed.len();
+    for _ in 1..n {
+        press(&mut app, KeyCode::Down);
+    }
+    let s = screen(&app, 80, 24, PLAIN);
+    // nine rows of the list at 80x24
+    assert!(
+        s.contains(&format!("presets {}-{n} of {n} (↑ more)", n - 8)),
+        "{s}"
+    );
+    assert!(!screen(&app, 120, 40, PLAIN).contains(" more) "));
+    for _ in 1..n {
+        press(&mut app, KeyCode::Up);
+    }
     press(&mut app, KeyCode::Esc);
     select(&mut app, "model", None);
     press(&mut app, KeyCode::Enter);

@@ -1,6 +1,7 @@
 //! The preset picker (`o`): the presets in a list, and under it the highlighted preset's source
-//! and whole description, wrapped at spaces; a description longer than its pane scrolls
-//! (PgUp/PgDn), the window's border saying when more is below.
+//! and whole description, wrapped at spaces; a list longer than its rows says which it shows
+//! and where more are; a description longer than its pane scrolls (PgUp/PgDn), the window's
+//! border saying when more is below.
 
 use ratatui::Frame;
 use ratatui::layout::{Constraint, Layout, Rect};
@@ -52,6 +53,21 @@ pub fn last(entries: &[PickerEntry], selected: usize, screen: Rect) -> u16 {
     u16::try_from(n.saturating_sub(text.height as usize)).unwrap_or(u16::MAX)
 }
 
+/// Where the list stands when it does not show every preset, on the border under it: " presets
+/// 1-9 of 14 (↓ more) "; "" when all are shown.
+fn position(offset: usize, rows: usize, count: usize) -> String {
+    if rows == 0 || count <= rows {
+        return String::new();
+    }
+    let last = (offset + rows).min(count);
+    let more = match (offset > 0, last < count) {
+        (true, true) => "↑↓",
+        (true, false) => "↑",
+        _ => "↓",
+    };
+    format!(" presets {}-{last} of {count} ({more} more) ", offset + 1)
+}
+
 /// Draws the picker, the description scrolled by `scroll` lines.
 pub fn draw(
     entries: &[PickerEntry],
@@ -100,7 +116,9 @@ pub fn draw(
     let Some(entry) = entries.get(selected) else {
         return;
     };
-    let pane = Block::default().borders(Borders::TOP);
+    let pane = Block::default()
+        .borders(Borders::TOP)
+        .title(Line::from(position(offset, list.height as usize, entries.len())).right_aligned());
     let width = pane.inner(desc).width as usize;
     frame.render_widget(
         Paragraph::new(lines(entry, width))
