@@ -1,9 +1,9 @@
-//! The strip of any thickness (docs/physics/plane.md section 6): kernel table, Gauss–Jacobi rules, one
-//! operating point at (a+b)/h of about 1, 5, 20, 56 and 86, 100-point sweeps, the growth of the
-//! cost per point with the node count (`strip_growth`: 100-point sweeps over loads P to 1.3 P at
-//! those five (a+b)/h), and `wearlab solve` of a preset at (a+b)/h = 56 as a whole process, and of
-//! the wide default preset (start-up: reading, checking, solving and writing the JSON of a wide
-//! preset).
+//! The strip of any thickness (docs/physics/plane.md section 6): kernel table, Gauss–Jacobi rules,
+//! one operating point at (a+b)/h of about 1, 5, 20, 56, 86, 135 and 238, 100-point sweeps, the
+//! growth of the cost per point with the node count (`strip_growth`: 100-point sweeps over loads
+//! P to 1.3 P at the first five (a+b)/h), and `wearlab solve` of a preset at (a+b)/h = 56 as a
+//! whole process, and of the wide default preset (start-up: reading, checking, solving and writing
+//! the JSON of a wide preset).
 //! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, mu = 0.3, k m = 0.5 on h = 1e-5 m (the strip preset's
 //! material; P = 1e5 N/m is the SciPy reference's README case).
 //! Measured in CPU time (this process's, plus its children's for `wearlab_solve`): on the shared
@@ -66,9 +66,13 @@ const POINTS: [(&str, f64); 5] = [
     ("86h", 2.4e5),
 ];
 
+/// Operating points only (a sweep there takes seconds): (a+b)/h = 134.5 and 238.1 (N = 592 and
+/// 1008, the most the model uses).
+const WIDE_POINTS: [(&str, f64); 2] = [("135h", 6e5), ("238h", 1.9e6)];
+
 fn operating_points(c: &mut Criterion<CpuTime>) {
     strip::kernels_for(0.3);
-    for (name, load) in POINTS {
+    for (name, load) in POINTS.into_iter().chain(WIDE_POINTS) {
         let at = inputs(0.3, load);
         c.bench_function(&format!("strip_point/{name}"), |b| {
             b.iter(|| solve(black_box(&at), Model::Strip).unwrap())
