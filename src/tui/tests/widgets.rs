@@ -181,7 +181,18 @@ fn wrapping_keeps_a_number_with_its_unit_and_a_key_pair_whole() {
     let lines = wrap(text, 38);
     assert_eq!(lines[0], "under a quarter of its mean pressure");
     assert_eq!(lines[1], "(5 MPa). at h = 1 um; chart, [ ] move");
-    assert_eq!(wrap("to h = 1 um", 8), ["to h =", "1 um"]);
+    // nor "name = value unit" (the spatial status read "after t" / "= 62.6 s")
+    assert_eq!(wrap("to h = 1 um", 8), ["to", "h = 1 um"]);
+    assert_eq!(
+        wrap("complete after t = 62.6 s (simulated), then:", 16),
+        ["complete after", "t = 62.6 s", "(simulated),", "then:"]
+    );
+    assert_eq!(
+        wrap("I-J residual < 1e-14", 14),
+        ["I-J", "residual < 1e-14"]
+    );
+    // a name of two symbols stays whole (the picker read "wear (k" / "m = 0.11)")
+    assert_eq!(wrap("wear (k m = 0.11)", 12), ["wear", "(k m = 0.11)"]);
     assert_eq!(wrap("chart, [ ] move", 8), ["chart,", "[ ] move"]);
     // a word that is no unit, after a number, may start the next line
     assert_eq!(wrap("k = 2 is", 5), ["k = 2", "is"]);

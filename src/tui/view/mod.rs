@@ -145,12 +145,15 @@ fn too_small(frame: &mut Frame, area: Rect) {
 }
 
 /// Wraps `text` into lines of at most `width` columns at spaces, never between a number and its
-/// unit ("5 MPa", "1 um") nor inside a key pair ("[ ]", "{ }").
+/// unit ("5 MPa", "1 um"), inside a key pair ("[ ]", "{ }") nor on either side of a relation
+/// ("t = 62.6 s", "residual < 1e-14").
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut words: Vec<String> = Vec::new();
-    for word in text.split_whitespace() {
+    let tokens: Vec<&str> = text.split_whitespace().collect();
+    for (i, &word) in tokens.iter().enumerate() {
+        let after = tokens.get(i + 1).copied().unwrap_or("");
         match words.last_mut() {
-            Some(last) if glued(last, word) => {
+            Some(last) if glued(last, word) || named(last, word, after) => {
                 last.push(' ');
                 last.push_str(word);
             }
@@ -174,14 +177,39 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
-/// Whether `next` stays on the line of `word`: a unit after a number, "]" after "[", "}" after
-/// "{".
+/// The words that relate the ones on either side ("t = 62.6 s"): a line never breaks at them.
+const RELATIONS: [&str; 5] = ["=", "<", ">", "<=", ">="];
+
+/// Whether a name of two short symbols before a relation stays whole ("k m = 0.11", "mu chi =
+/// 0.3"): `word` (the words glued so far) ends in a symbol, `next` is one and `after` relates.
+fn named(word: &str, next: &str, after: &str) -> bool {
+    // short words that are English, not symbols ("at h = 1 um")
+    const WORDS: [&str; 12] = [
+        "at", "to", "in", "of", "is", "on", "by", "as", "an", "or", "if", "so",
+    ];
+    let symbol = |w: &str, most: usize| {
+        let w = w.trim_start_matches('(');
+        (1..=most).contains(&w.len())
+            && w.chars().all(|c| c.is_ascii_alphabetic())
+            && !WORDS.contains(&w)
+    };
+    let last = word.rsplit(' ').next().unwrap_or(word);
+    RELATIONS.contains(&after) && symbol(last, 2) && symbol(next, 3)
+}
+
+/// Whether `next` stays on the line of `word` (the words glued so far): a unit after a number,
+/// "]" after "[", "}" after "{", a relation ("=", "<", ...) and what it relates.
 fn glued(word: &str, next: &str) -> bool {
     const UNITS: [&str; 9] = ["m", "s", "Pa", "N/m", "m/s", "rad", "rad/m", "1/Pa", "%"];
     const PREFIXES: [&str; 10] = ["", "f", "p", "n", "u", "m", "k", "M", "G", "T"];
     if (word == "[" && next.starts_with(']')) || (word == "{" && next.starts_with('}')) {
         return true;
     }
+    let last = word.rsplit(' ').next().unwrap_or(word);
+    if RELATIONS.contains(&next) || RELATIONS.contains(&last) {
+        return true;
+    }
+    let word = last;
     let number = word.trim_start_matches(['(', '~']).parse::<f64>().is_ok();
     let unit = next.trim_end_matches([')', ',', '.', ';', ':']);
     number
