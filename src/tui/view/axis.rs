@@ -8,7 +8,7 @@ use ratatui::style::Style;
 
 use crate::tui::charts::range::Frame;
 use crate::tui::charts::ticks::{Ticks, ticks};
-use crate::tui::view::raster::Raster;
+use crate::tui::view::raster::{Ink, Raster};
 use crate::tui::view::theme::RenderOptions;
 
 /// Where the parts of one plot go.
@@ -215,6 +215,31 @@ pub fn y_mark_rows(frame: &Frame, height: u16) -> Vec<u16> {
         .filter_map(|m| frame.y_scale.to_plot(m.at))
         .map(|v| row(frac(v, frame.y), height))
         .collect()
+}
+
+/// The plot's raster with its reference lines drawn in as data, in the cells `marks` draws
+/// them: what a legend keeps clear of where it can.
+pub fn with_marks(raster: &Raster, frame: &Frame) -> Raster {
+    let mut r = raster.clone();
+    let ink = Ink {
+        glyph: '-',
+        solid: true,
+        style: Style::default(),
+    };
+    let clamped = |v: f64, range: [f64; 2]| frac(v, range).clamp(0.0, 1.0);
+    for m in &frame.plot.y_marks {
+        if let Some(v) = frame.y_scale.to_plot(m.at) {
+            let f = clamped(v, frame.y);
+            r.line(&[(0.0, f), (1.0, f)], ink);
+        }
+    }
+    for m in &frame.plot.x_marks {
+        if let Some(v) = frame.plot.x.scale.to_plot(m.at) {
+            let f = clamped(v, frame.x);
+            r.line(&[(f, 0.0), (f, 1.0)], ink);
+        }
+    }
+    r
 }
 
 /// Draws the reference lines on the cells without data.

@@ -266,14 +266,17 @@ pub fn layout(
         let title = l.y_ticks.title.chars().count() + 2;
         if title + legend::line_width(&l.entries) <= area.width as usize {
             l.place = Place::Header;
+            continue;
+        }
+        // clear of data and reference lines, else of data only
+        let clear = axis::with_marks(&l.raster, &frames[i]);
+        if let Some(c) = legend::corner(&clear, g.local_plot(), &l.entries, false) {
+            l.place = c;
+        } else if let Some(b) = legend::band(&clear, g.local_plot(), &l.entries) {
+            l.place = b;
         } else if let Some(c) = legend::corner(&l.raster, g.local_plot(), &l.entries, false) {
             l.place = c;
-        } else if let Some(b) = legend::band(
-            &l.raster,
-            g.local_plot(),
-            &l.entries,
-            &axis::y_mark_rows(&frames[i], g.plot.height),
-        ) {
+        } else if let Some(b) = legend::band(&l.raster, g.local_plot(), &l.entries) {
             l.place = b;
         } else {
             let rows = legend::rows_needed(&l.entries, area.width as usize);

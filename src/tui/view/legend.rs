@@ -107,10 +107,9 @@ pub fn corner(raster: &Raster, plot: Rect, entries: &[Entry], fallback: bool) ->
 }
 
 /// Rows of the plot area that can hold the entries packed as lines, right-aligned as
-/// `render_lines` writes them, with no data cell and none of the rows `avoid` (reference
-/// lines) under them: the top rows, else the bottom ones, else the highest free ones; at least
-/// one row is left to the data.
-pub fn band(raster: &Raster, plot: Rect, entries: &[Entry], avoid: &[u16]) -> Option<Place> {
+/// `render_lines` writes them, with no data cell under them: the top rows, else the bottom
+/// ones, else the highest free ones; at least one row is left to the data.
+pub fn band(raster: &Raster, plot: Rect, entries: &[Entry]) -> Option<Place> {
     let lines = packed(entries, plot.width as usize);
     let rows = lines.len() as u16;
     if rows == 0 || rows >= plot.height {
@@ -121,7 +120,7 @@ pub fn band(raster: &Raster, plot: Rect, entries: &[Entry], avoid: &[u16]) -> Op
         let clear = lines.iter().enumerate().all(|(i, line)| {
             let width = line_span(line).min(plot.width as usize) as u16;
             let row = y + i as u16;
-            !avoid.contains(&row) && raster.count(Rect::new(plot.width - width, row, width, 1)) == 0
+            raster.count(Rect::new(plot.width - width, row, width, 1)) == 0
         });
         clear.then_some(Place::Band(y, rows))
     })
