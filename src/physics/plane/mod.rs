@@ -9,6 +9,7 @@
 pub mod collocation;
 pub mod criteria;
 pub mod energy;
+mod jacobi_transforms;
 pub mod kernels;
 pub mod narrow;
 pub mod operating_point;
