@@ -267,9 +267,10 @@ pub fn marks(frame: &Frame, g: &Geometry, raster: &Raster, style: RenderOptions,
 /// The labels of the vertical marks on the x axis line of plot area `p`, left to right: each
 /// covering its own mark's column (centred where it can be, else shifted as little as it takes
 /// to stay inside the plot and a column clear of the labels placed before it); "now" is placed
-/// first, so that the operating point is always named; one that cannot be is left out, never
-/// put elsewhere.
-pub fn mark_labels<'a>(frame: &'a Frame, p: Rect) -> Vec<(u16, &'a str)> {
+/// first, so that the operating point is always named; a mark at most a column from one named
+/// joins its label ("now/complete", the left one first, covering both columns); one that can
+/// be neither is left out, never put elsewhere.
+pub fn mark_labels(frame: &Frame, p: Rect) -> Vec<(u16, String)> {
     let mut marks: Vec<(u16, &str)> = frame
         .plot
         .x_marks
@@ -281,27 +282,45 @@ pub fn mark_labels<'a>(frame: &'a Frame, p: Rect) -> Vec<(u16, &'a str)> {
         .collect();
     marks.sort_by_key(|m| (m.1 != "now", m.0));
     let end = p.x + p.width;
-    let mut out: Vec<(u16, &str)> = Vec::new();
-    for (centre, label) in marks {
-        let len = label.chars().count() as u16;
-        let centred = centre.saturating_sub(len / 2);
-        let clear = |start: u16| {
+    // (start, the columns it covers, text)
+    let mut out: Vec<(u16, [u16; 2], String)> = Vec::new();
+    // the start of `text`, covering columns `cols`, nearest centred, clear of the others
+    let place = |out: &[(u16, [u16; 2], String)], text: &str, [lo, hi]: [u16; 2], skip| {
+        let len = text.chars().count() as u16;
+        let centred = ((lo + hi) / 2).saturating_sub(len / 2);
+        let mut starts: Vec<u16> = (hi.saturating_sub(len.saturating_sub(1))..=lo).collect();
+        starts.sort_by_key(|s| s.abs_diff(centred));
+        starts.into_iter().find(|&start| {
             start >= p.x
                 && start + len <= end
-                && out
-                    .iter()
-                    .all(|&(s, l)| start + len < s || s + (l.chars().count() as u16) < start)
-        };
-        // the starts that cover the column, nearest the centred one first
-        let mut starts: Vec<u16> =
-            (centre.saturating_sub(len.saturating_sub(1))..=centre).collect();
-        starts.sort_by_key(|s| s.abs_diff(centred));
-        if let Some(start) = starts.into_iter().find(|&s| clear(s)) {
-            out.push((start, label));
+                && (out.iter().enumerate()).all(|(k, (s, _, l))| {
+                    Some(k) == skip || start + len < *s || s + (l.chars().count() as u16) < start
+                })
+        })
+    };
+    for (centre, label) in marks {
+        if let Some(start) = place(&out, label, [centre, centre], None) {
+            out.push((start, [centre, centre], label.to_string()));
+            continue;
+        }
+        let near = (out.iter()).position(|o| o.1[0].abs_diff(centre) <= 1 && o.1[0] == o.1[1]);
+        if let Some(k) = near {
+            let own = out[k].1[0];
+            let cols = [own.min(centre), own.max(centre)];
+            let text = if centre < own {
+                format!("{label}/{}", out[k].2)
+            } else {
+                format!("{}/{label}", out[k].2)
+            };
+            if let Some(start) = place(&out, &text, cols, Some(k)) {
+                out[k] = (start, cols, text);
+            }
         }
     }
     out.sort_by_key(|l| l.0);
-    out
+    out.into_iter()
+        .map(|(start, _, text)| (start, text))
+        .collect()
 }
 
 /// Draws the axis lines with tick marks, the tick labels, and the vertical marks' labels on the
