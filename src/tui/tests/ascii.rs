@@ -1,9 +1,11 @@
 //! `--ascii`: every cell of every kind of screen of every bundled preset is ASCII (borders,
-//! ticks, marks, arrows, keys), with and without colour, at 80x24 and 120x40.
+//! ticks, marks, arrows, keys), with and without colour, at 80x24 and 120x40, the sweep and map
+//! views also while computing and refining; no arrow that reads as a key ("v more"); no sign
+//! among the shades.
 
 use ratatui::crossterm::event::KeyCode;
 
-use super::explore::explored;
+use super::explore::{explored, explored_seen};
 use super::*;
 use crate::tui::app::Mode;
 
@@ -13,7 +15,8 @@ const ASCII_COLOUR: RenderOptions = RenderOptions {
     truecolor: false,
 };
 
-/// Panics naming the screen and the first cell that is not ASCII.
+/// Panics naming the screen and the first cell that is not ASCII, or the first arrow that
+/// reads as a key ("v more": the `v` key is the sweep's).
 fn all_ascii(app: &App, what: &str) {
     for (w, h) in [(80, 24), (120, 40)] {
         for options in [ASCII, ASCII_COLOUR] {
@@ -27,6 +30,14 @@ fn all_ascii(app: &App, what: &str) {
                     buf.content[i].symbol(),
                     terminal.backend()
                 );
+            }
+            let screen = terminal.backend().to_string();
+            let arrow = ["v", "^", "^v"].map(|a| format!(" {a} "));
+            if let Some(row) = screen
+                .lines()
+                .find(|r| r.contains("more") && arrow.iter().any(|a| r.contains(a.as_str())))
+            {
+                panic!("{what} at {w}x{h} ({options:?}): an arrow read as a key: {row}");
             }
         }
     }
@@ -77,7 +88,10 @@ fn every_screen_of_the_problem(app: &mut App, file: &str) {
             }
         }
         let cmds = press(app, KeyCode::Enter);
-        explored(app, &cmds);
+        all_ascii(app, &format!("{file} {what} computing"));
+        explored_seen(app, &cmds, &mut |app| {
+            all_ascii(app, &format!("{file} {what} refining"))
+        });
         all_ascii(app, &format!("{file} {what}"));
         press(app, KeyCode::Char('x'));
         press(app, KeyCode::Char('D'));
@@ -104,5 +118,17 @@ fn with_ascii_every_cell_of_every_screen_is_ascii() {
         let cmds = press(&mut app, KeyCode::Char('p'));
         settle(&mut app, cmds);
         every_screen_of_the_problem(&mut app, b.file);
+    }
+}
+
+#[test]
+fn no_ascii_shade_reads_as_a_sign_or_a_mark() {
+    // '+' and '-' read as a sign or a tick beside a bar's value; '~', 'o', 'X', '|' and the
+    // letters are drawn over the maps (no contact, the preset's point, the cursor, the lines)
+    for c in crate::tui::view::theme::ASCII_SHADES {
+        assert!(
+            !"+-~oX|".contains(c) && !c.is_ascii_alphanumeric(),
+            "shade {c:?}"
+        );
     }
 }

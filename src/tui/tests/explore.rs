@@ -13,6 +13,11 @@ use crate::tui::explore::View;
 /// Computes the explorer's requests among `commands` as its thread would (every map pass, then
 /// the end) and delivers the answers.
 pub(super) fn explored(app: &mut App, commands: &[Command]) {
+    explored_seen(app, commands, &mut |_| {});
+}
+
+/// `explored`, showing the app to `seen` after each answer but the last (a map refining).
+pub(super) fn explored_seen(app: &mut App, commands: &[Command], seen: &mut dyn FnMut(&App)) {
     for c in commands {
         let Command::Explore(generation, request) = c else {
             continue;
@@ -29,9 +34,11 @@ pub(super) fn explored(app: &mut App, commands: &[Command]) {
             passes.push(answer(Explored::Map(m.clone().into()), false))
         })
         .expect("not cancelled");
-        for a in passes.into_iter().chain([answer(done, true)]) {
+        for a in passes {
             update(app, Msg::Explored(Box::new(a)));
+            seen(app);
         }
+        update(app, Msg::Explored(Box::new(answer(done, true))));
     }
 }
 

@@ -63,7 +63,7 @@ pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours
     shades without colour) read on the bar at the right; coarse first, then refined pass by pass. \
     Letters draw the library's lines: 0 where theta = 0 (friction wins where theta > 0, wear where \
     it is < 0), W and N where the wide and the narrow model's validity checks change, C where \
-    complete contact is lost; + is the preset's own point (o among --ascii shades). x shows a \
+    complete contact is lost; + is the preset's own point. x shows a \
     cursor, X (at the grid point nearest the preset's), [ ] move it along x, { } along y, and the status reads both \
     inputs, the quantity, theta and the verdicts there. Tab goes back to the charts.";
 
@@ -139,7 +139,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     };
     let block = Block::default()
         .borders(Borders::ALL)
-        .title(format!(" {what}{note} "))
+        .title(style.text(&format!(" {what}{note} ")).into_owned())
         .title_bottom(Line::from(format!(" {key}: change  Tab: charts ")).right_aligned());
     let mut inner = block.inner(area);
     frame.render_widget(block, area);

@@ -54,18 +54,19 @@ pub fn last(entries: &[PickerEntry], selected: usize, screen: Rect) -> u16 {
 }
 
 /// Where the list stands when it does not show every preset, on the border under it: " presets
-/// 1-9 of 14 (↓ more) "; "" when all are shown.
+/// 1-9 of 14 (more below) "; "" when all are shown. In words: an arrow's ASCII form ("v more")
+/// would read as a key.
 fn position(offset: usize, rows: usize, count: usize) -> String {
     if rows == 0 || count <= rows {
         return String::new();
     }
     let last = (offset + rows).min(count);
     let more = match (offset > 0, last < count) {
-        (true, true) => "↑↓",
-        (true, false) => "↑",
-        _ => "↓",
+        (true, true) => "above and below",
+        (true, false) => "above",
+        _ => "below",
     };
-    format!(" presets {}-{last} of {count} ({more} more) ", offset + 1)
+    format!(" presets {}-{last} of {count} (more {more}) ", offset + 1)
 }
 
 /// Draws the picker, the description scrolled by `scroll` lines.
@@ -89,9 +90,9 @@ pub fn draw(
     let last = last(entries, selected, area);
     let more = match (scroll.min(last), last) {
         (0, 0) => "",
-        (0, _) => " ↓ PgDn: more ",
-        (s, l) if s < l => " ↑↓ PgUp PgDn: more ",
-        _ => " ↑ PgUp: the start ",
+        (0, _) => " PgDn: more below ",
+        (s, l) if s < l => " PgUp PgDn: more above and below ",
+        _ => " PgUp: the start ",
     };
     let block = Block::default()
         .borders(Borders::ALL)

@@ -120,7 +120,8 @@ fn text_window(
             ..area
         },
     );
-    let more = if scroll < last { " ↓ more " } else { "" };
+    // in words: an arrow's ASCII form ("v more") would read as a key
+    let more = if scroll < last { " more below " } else { "" };
     let block = Block::default()
         .borders(Borders::ALL)
         .title(format!(" {title} "))

@@ -147,12 +147,8 @@ pub fn draw(
             }
         }
     }
-    // the preset's own point: '+', but 'o' among the ASCII shades, of which '+' is one
-    let own = if !style.color && style.ascii {
-        'o'
-    } else {
-        '+'
-    };
+    // the preset's own point ('+' is no shade: `theme::ASCII_SHADES`)
+    let own = '+';
     let now = at(map.current[0], map.current[1]);
     if let Some(p) = now {
         buf[p].set_char(own).set_style(ink);

@@ -39,8 +39,11 @@ const DIM_GLYPHS: [char; 8] = ['.', ',', '\'', ';', '`', '~', '"', '^'];
 /// The shades of the heatmap without colour, lightest first.
 pub const SHADES: [char; 5] = [' ', '░', '▒', '▓', '█'];
 
-/// The shades with `--ascii`, lightest first.
-pub const ASCII_SHADES: [char; 10] = [' ', '.', ':', '-', '=', '+', '*', '#', '%', '@'];
+/// The shades with `--ascii`, lightest first: the one ASCII ramp of every map and bar. No `+`
+/// nor `-`, which read as a sign or a tick beside a value ("+ 0", "- -1"), and no `~`, `o`, `X`
+/// or letter, which the maps draw over the shades (no contact, the preset's point, the cursor,
+/// the regime map's lines).
+pub const ASCII_SHADES: [char; 7] = [' ', '.', ':', '=', '*', '#', '@'];
 
 /// The ASCII form of every non-ASCII character the explorer draws (`--ascii`): the one place
 /// that decides it. Forms of one character replace a drawn cell; the longer ones (keys, "...")
@@ -341,10 +344,7 @@ impl RenderOptions {
     /// The shade of t in [0, 1] without colour.
     pub fn shade(self, t: f64) -> char {
         let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-        if self.ascii {
-            ASCII_SHADES[(t * 9.0).round() as usize]
-        } else {
-            SHADES[(t * 4.0).round() as usize]
-        }
+        let ramp: &[char] = if self.ascii { &ASCII_SHADES } else { &SHADES };
+        ramp[(t * (ramp.len() - 1) as f64).round() as usize]
     }
 }
