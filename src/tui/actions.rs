@@ -10,6 +10,7 @@ use crate::tui::charts::{Chart, NoFigure, export as csv};
 use crate::tui::explore::{self, View};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
+use crate::tui::map_cursor;
 use crate::tui::sweep_form;
 
 /// The most harmonics a punch has (`limits::HARMONICS`).
@@ -127,6 +128,10 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         }
         Action::Cursor | Action::MoveCursor(_) if app.explore.view == Some(View::Map) => {
             explore::move_cell(app, action);
+            Vec::new()
+        }
+        Action::Cursor | Action::MoveCursor(_) if map_cursor::on_map(app) => {
+            map_cursor::act(app, action);
             Vec::new()
         }
         Action::Cursor

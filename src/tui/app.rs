@@ -126,6 +126,8 @@ pub struct Ui {
     pub export_waiting: Option<(Chart, Format)>,
     /// The cursor of the readout, as a fraction of the chart's x range (None: off).
     pub cursor: Option<f64>,
+    /// The pressure map's cursor (grid column, row; `map_cursor`), when on.
+    pub map_cell: Option<(usize, usize)>,
     /// Curves pinned for comparison, oldest first.
     pub pins: Vec<Pin>,
     /// The chart has the whole screen but the status.
@@ -292,6 +294,7 @@ impl App {
                 playing: false,
                 export_waiting: None,
                 cursor: None,
+                map_cell: None,
                 pins: Vec::new(),
                 expanded: false,
                 log_y: Vec::new(),

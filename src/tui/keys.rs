@@ -214,7 +214,7 @@ pub const BINDINGS: [Binding; 22] = [
         &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(-1)),
           (ch(']'), Action::MoveCursor(1)), (ch('{'), Action::MoveCursor(-10)),
           (ch('}'), Action::MoveCursor(10))],
-        "x, [ ], { }", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten; the status gives x and every curve's value there",
+        "x, [ ], { }", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten; the status gives x and every curve's value there; on the pressure map x shows a cell cursor X at the map's middle, [ ] move it a grid point along x, { } along y, and the status gives x, y and p there (it stays while time plays, p follows)",
         ("x", "cursor", "", 7), None,
     ),
     binding(

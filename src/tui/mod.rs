@@ -13,6 +13,7 @@ pub mod explore;
 pub mod form;
 pub mod glossary;
 pub mod keys;
+pub mod map_cursor;
 pub mod prompt_keys;
 pub mod sweep_form;
 pub mod update;

@@ -245,7 +245,7 @@ impl SpatialChart {
         match self {
             Self::PressureMap => Def {
                 title: "pressure map",
-                help: "Contact pressure over one period cell in bands of a round step, one colour (or shade) each; the bar labels every band's edges, the words beside it give the unit and the step. In partial contact the zones out of contact (p = 0) are drawn apart, in grey (without colour, · or ~), named beside the bar. The layer slides towards -x; friction on it points to +x.",
+                help: "Contact pressure over one period cell in bands of a round step, one colour (or shade) each; the bar labels every band's edges, the words beside it give the unit and the step. In partial contact the zones out of contact (p = 0) are drawn apart, in grey (without colour, · or ~), named beside the bar. The layer slides towards -x; friction on it points to +x. The bands are coarse: x shows a cursor X (from the middle), [ ] move it along x, { } along y, and the status reads x, y and p there.",
                 overlays: false,
                 build: spatial::pressure_map,
             },

@@ -118,7 +118,7 @@ fn each_cell_shows_the_colour_of_its_band_and_the_bar_labels_every_edge() {
     for (style, inner, labels, step) in cases {
         let n = inner.len() + 1;
         let mut buf = Buffer::empty(area);
-        heatmap::draw(&map, None, style, &mut buf, area);
+        heatmap::draw(&map, None, None, style, &mut buf, area);
         for col in 0..w {
             // the grid point the column shows
             let p = 10.0 * ((col as usize * 41) / w as usize) as f64 / 40.0;
@@ -167,7 +167,7 @@ fn each_cell_shows_the_colour_of_its_band_and_the_bar_labels_every_edge() {
     }
     // the rows of the lowest and highest edge: half a row of band colour
     let mut buf = Buffer::empty(area);
-    heatmap::draw(&map, None, COLOUR, &mut buf, area);
+    heatmap::draw(&map, None, None, COLOUR, &mut buf, area);
     let (top, bottom) = (&buf[(bx, 0)], &buf[(bx, h - 1)]);
     assert_eq!(
         (top.symbol(), top.fg, top.bg),

@@ -12,6 +12,7 @@ mod files;
 mod groups;
 mod keys;
 mod legend;
+mod map_cursor;
 mod partial;
 mod replay;
 mod screens;

@@ -6,14 +6,18 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
+use ratatui::style::{Color, Modifier, Style};
 
 use crate::tui::backend::colour_bytes;
 use crate::tui::charts::Map;
 use crate::tui::charts::range::bounds;
 use crate::tui::charts::ticks::bands;
+use crate::tui::map_cursor;
 use crate::tui::view::theme::{ASCII_SHADES, RenderOptions, SHADES};
 use crate::tui::view::wrap;
+
+/// The symbol of the map's values, in the bar's title and the cursor's readout.
+pub const SYMBOL: &str = "p";
 
 /// Columns of the colour bar and its labels.
 const BAR: u16 = 8;
@@ -59,10 +63,12 @@ fn most_bands(style: RenderOptions, rows: u16) -> usize {
 }
 
 /// Draws the map into `area`: the field on the left, the bar right of it, the caption under
-/// it. `fixed`: the colour scale to use instead of the map's own range.
+/// it. `fixed`: the colour scale to use instead of the map's own range; `cursor`: the grid
+/// point (column, row) marked `X` (`map_cursor`).
 pub fn draw(
     map: &Map,
     fixed: Option<[f64; 2]>,
+    cursor: Option<(usize, usize)>,
     style: RenderOptions,
     buf: &mut Buffer,
     area: Rect,
@@ -82,7 +88,7 @@ pub fn draw(
     } else {
         fit(aspect, area.width - BAR - 1, area.height - 1)
     };
-    let (edges, step) = bands(range, "p", map.unit, most_bands(style, h));
+    let (edges, step) = bands(range, SYMBOL, map.unit, most_bands(style, h));
     let n = edges.ticks.len() - 1;
     let (e0, e1) = (edges.ticks[0].0, edges.ticks[n].0);
     // band i holds the values in (edge i, edge i + 1], the lowest also its lower edge
@@ -134,6 +140,14 @@ pub fn draw(
                 .set_style(Style::default().fg(colour(fg)).bg(colour(bg)));
         }
     }
+    if let Some((i, j)) = cursor.map(|at| map_cursor::cell(map, at)) {
+        mark(
+            style,
+            buf,
+            area,
+            (i * w as usize / nx, (ny - 1 - j) * h as usize / ny),
+        );
+    }
     // the bar: the bands from the top, each edge on a row of its own with its label
     let bx = area.x + w + 1;
     let edge_row = |i: usize| area.y + ((n - i) as f64 * (h - 1) as f64 / n as f64).round() as u16;
@@ -174,6 +188,7 @@ pub fn draw(
             Style::default(),
         );
     }
+    let named = if cursor.is_some() { "X cursor. " } else { "" };
     let title = match fixed {
         Some(_) => format!(
             "{} in bands of {step}, scale fixed while only t changes",
@@ -201,7 +216,7 @@ pub fn draw(
     if beside {
         let width = ((area.x + area.width - x) as usize).min(40);
         let rows = if map.empty.is_some() { 1 } else { 0 };
-        let words = format!("{title}. {}", map.caption);
+        let words = format!("{named}{title}. {}", map.caption);
         for (i, line) in wrap(&words, width)
             .iter()
             .take(h as usize - rows)
@@ -211,10 +226,23 @@ pub fn draw(
             buf.set_stringn(x, row, line, width, Style::default());
         }
     } else {
-        let words = format!("{title}. {}", map.caption);
+        let words = format!("{named}{title}. {}", map.caption);
         let width = (area.x + area.width).saturating_sub(x_words) as usize;
         buf.set_stringn(x_words, y, words, width, Style::default());
     }
+}
+
+/// Marks the cursor's text cell (column, row of the field) with `X`, in colour as the regime
+/// map marks it (bold yellow on black, seen on every band), else bold.
+fn mark(style: RenderOptions, buf: &mut Buffer, area: Rect, (col, row): (usize, usize)) {
+    let ink = if style.color {
+        Style::default().fg(Color::Yellow).bg(Color::Black)
+    } else {
+        Style::default()
+    };
+    buf[(area.x + col as u16, area.y + row as u16)]
+        .set_char('X')
+        .set_style(ink.add_modifier(Modifier::BOLD));
 }
 
 /// The colour code of the empty value (no contact); codes below it are bands.

@@ -254,7 +254,8 @@ fn draw_chart(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame,
         ),
         Ok(Figure::Map(map)) => {
             let fixed = app.ui.heat_scale_for(&answer.request.preset);
-            heatmap::draw(&map, fixed, style, frame.buffer_mut(), inner)
+            let cell = app.ui.map_cell;
+            heatmap::draw(&map, fixed, cell, style, frame.buffer_mut(), inner)
         }
         Ok(Figure::Plots(plots)) => {
             let pins = app.ui.pins_of(chart);

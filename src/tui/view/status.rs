@@ -57,7 +57,7 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     // the cursor readout first, each value whole
     let readout = match app.explore.view {
         Some(_) => crate::tui::view::explore::readout(app),
-        None => cursor_readout(app, answer),
+        None => cursor_readout(app, answer).or_else(|| crate::tui::map_cursor::status(app)),
     };
     let mut lines: Vec<Line> = readout
         .map(|items| pack(&items, width, "  "))

@@ -1,0 +1,91 @@
+//! The pressure map's cell cursor (chart 1/5), the UI side (part of `update`: pure) and its
+//! readout: `x` shows or hides it at the grid point in the middle of the map, `[ ]` move it a
+//! grid point along x, `{ }` along y, as on the regime map. It is a grid point (column, row), so
+//! that while time plays it stays at its x, y and the status reads the value there as it changes.
+//! The value is the map's own, read from the figure drawn: no physics here.
+
+use crate::tui::app::App;
+use crate::tui::charts::{Chart, Figure, Map, SpatialChart};
+use crate::tui::keys::Action;
+use crate::tui::view::heatmap;
+use crate::tui::view::shown;
+
+/// Whether the visible chart is the pressure map (the keys `x [ ] { }` then work its cursor).
+pub fn on_map(app: &App) -> bool {
+    app.explore.view.is_none() && app.ui.chart == Chart::Spatial(SpatialChart::PressureMap)
+}
+
+/// The map on screen, when the visible chart is the map and a result has arrived.
+pub fn visible(app: &App) -> Option<Map> {
+    if !on_map(app) {
+        return None;
+    }
+    let (answer, _) = shown(app).answer()?;
+    match app.ui.chart.build(answer) {
+        Ok(Figure::Map(map)) => Some(map),
+        _ => None,
+    }
+}
+
+/// Carries out `x`, `[ ]` or `{ }` on the pressure map.
+pub fn act(app: &mut App, action: Action) {
+    let Some(map) = visible(app) else {
+        app.say("the map has not arrived yet: x works once it is drawn");
+        return;
+    };
+    let (nx, ny) = (map.x.len(), map.y.len());
+    app.ui.map_cell = match (action, app.ui.map_cell) {
+        (Action::Cursor, Some(_)) => {
+            app.say("cursor off");
+            None
+        }
+        (Action::Cursor, None) => {
+            app.say("cursor X: [ ] move it along x, { } along y; the status reads p there");
+            Some((nx / 2, ny / 2))
+        }
+        (Action::MoveCursor(step), Some((i, j))) => {
+            let by = |k: usize, d: i32, n: usize| {
+                (k.min(n - 1) as i64 + d as i64).clamp(0, n as i64 - 1) as usize
+            };
+            Some(match step {
+                -1 | 1 => (by(i, step, nx), j.min(ny - 1)),
+                _ => (i.min(nx - 1), by(j, step.signum(), ny)),
+            })
+        }
+        (_, cell) => {
+            app.say("x shows the cursor first");
+            cell
+        }
+    };
+}
+
+/// The grid point of the cursor on `map` (a grid of another size, after an edit, clamps it).
+pub fn cell(map: &Map, (i, j): (usize, usize)) -> (usize, usize) {
+    (i.min(map.x.len() - 1), j.min(map.y.len() - 1))
+}
+
+/// The status's readout at the cursor: x and y of the grid point and the map's value there with
+/// its unit (`units::format_si`), or that there is no contact.
+pub fn readout(map: &Map, at: (usize, usize)) -> Vec<String> {
+    let (i, j) = cell(map, at);
+    let v = map.values[j * map.x.len() + i];
+    let value = match map.empty {
+        Some(label) if v == 0.0 => label.to_string(),
+        _ => format!(
+            "{} = {}",
+            heatmap::SYMBOL,
+            wearlab::units::format_si(v, map.unit)
+        ),
+    };
+    vec![
+        format!("cursor x = {}", wearlab::units::format_si(map.x[i], "m")),
+        format!("y = {}:", wearlab::units::format_si(map.y[j], "m")),
+        value,
+    ]
+}
+
+/// The readout of the visible map's cursor, when it is on.
+pub fn status(app: &App) -> Option<Vec<String>> {
+    let at = app.ui.map_cell?;
+    visible(app).map(|map| readout(&map, at))
+}
