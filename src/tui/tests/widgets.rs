@@ -203,3 +203,41 @@ fn wrapping_keeps_a_number_with_its_unit_and_a_key_pair_whole() {
     // a word that is no unit, after a number, may start the next line
     assert_eq!(wrap("k = 2 is", 5), ["k = 2", "is"]);
 }
+
+#[test]
+fn wrapping_keeps_a_group_name_and_a_short_parenthesis_whole() {
+    // thin-strip-winkler's sweep cursor in groups at 80x24 read "(narrow: P = 10.0" / "kN/m):"
+    let cursor = "cursor P/(m R) = 1.159e-3 (narrow: P = 10.0 kN/m):";
+    assert_eq!(
+        wrap(cursor, 48),
+        ["cursor P/(m R) = 1.159e-3", "(narrow: P = 10.0 kN/m):"]
+    );
+    // in the status, the item too long for a line is wrapped so, the rest packed after it
+    assert_eq!(
+        pack(&items(&[cursor, "mu* narrow = 0.303962"]), 48, "  "),
+        [
+            "cursor P/(m R) = 1.159e-3",
+            "  (narrow: P = 10.0 kN/m):",
+            "  mu* narrow = 0.303962"
+        ]
+    );
+    // the library's two-word group names (coating-thickness-sweep's notes read "mu" / "chi")
+    assert_eq!(
+        wrap("depends on mu chi and k m only", 13),
+        ["depends on", "mu chi and", "k m only"]
+    );
+    // a parenthesis longer than half the line may break, never inside "name = value unit"
+    assert_eq!(
+        wrap("cursor (narrow: P = 10.0 kN/m):", 20),
+        ["cursor (narrow:", "P = 10.0 kN/m):"]
+    );
+}
+
+#[test]
+fn a_parenthesis_of_prose_wraps_as_prose() {
+    // rubber-running-in's notes: no line left half empty by an aside without a value
+    assert_eq!(
+        wrap("drawn apart (grey, or dots without colour); the", 24),
+        ["drawn apart (grey, or", "dots without colour);", "the"]
+    );
+}

@@ -26,6 +26,7 @@ use ratatui::layout::{Alignment, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 use wearlab::engine::Answer;
+use wearlab::explore::quantity::problem_groups;
 use wearlab::preset::{Preset, Problem};
 
 use crate::tui::app::{App, Mode};
@@ -145,13 +146,16 @@ fn too_small(frame: &mut Frame, area: Rect) {
 }
 
 /// Wraps `text` into lines of at most `width` columns at spaces, never between a number and its
-/// unit ("5 MPa", "1 um"), inside a key pair ("[ ]", "{ }") nor on either side of a relation
-/// ("t = 62.6 s", "residual < 1e-14").
+/// unit ("5 MPa", "1 um"), inside a key pair ("[ ]", "{ }"), on either side of a relation
+/// ("t = 62.6 s", "residual < 1e-14"), inside a group's name of two words ("mu chi", "P/(m R)":
+/// the library's names, `problem_groups`) nor inside a parenthesis that holds a relation, of at
+/// most `PAREN` columns and fitting the line ("(narrow: P = 10.0 kN/m)").
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut words: Vec<String> = Vec::new();
-    let tokens: Vec<&str> = text.split_whitespace().collect();
-    for (i, &word) in tokens.iter().enumerate() {
-        let after = tokens.get(i + 1).copied().unwrap_or("");
+    let tokens = whole(text.split_whitespace().collect(), width.min(PAREN));
+    for (i, word) in tokens.iter().enumerate() {
+        let word = word.as_str();
+        let after = tokens.get(i + 1).map_or("", String::as_str);
         match words.last_mut() {
             Some(last) if glued(last, word) || named(last, word, after) => {
                 last.push(' ');
@@ -175,6 +179,56 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// The longest parenthesis kept on one line: a value with its name, not a clause (which would
+/// leave a line of prose half empty).
+const PAREN: usize = 32;
+
+/// `tokens` with the runs that stay whole joined by spaces: a group's name of two words, and a
+/// parenthesis (from a word that opens one to the word that closes it) that holds a relation,
+/// of at most `most` columns.
+fn whole(tokens: Vec<&str>, most: usize) -> Vec<String> {
+    let names: Vec<&str> = [Problem::Plane, Problem::Spatial]
+        .into_iter()
+        .flat_map(problem_groups)
+        .map(|q| q.symbol)
+        .filter(|s| s.contains(' '))
+        .collect();
+    // "(k m", "mu chi),": a name with the punctuation around it
+    let named = |a: &str, b: &str| {
+        let pair = format!("{a} {b}");
+        let core = pair.trim_start_matches(['(', '"']);
+        names.iter().any(|n| {
+            core.strip_prefix(n)
+                .is_some_and(|rest| rest.chars().all(|c| ")],.;:\"".contains(c)))
+        })
+    };
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < tokens.len() {
+        let mut end = i + 1;
+        // a parenthesis opened here, closed within `most` columns, with a relation inside
+        let mut depth = 0i32;
+        let mut len = 0;
+        for (k, t) in tokens.iter().enumerate().skip(i) {
+            depth += t.matches('(').count() as i32 - t.matches(')').count() as i32;
+            len += t.chars().count() + usize::from(k > i);
+            if depth <= 0 || len > most {
+                let relation = tokens[i..=k].iter().any(|t| RELATIONS.contains(t));
+                if k > i && depth <= 0 && len <= most && relation {
+                    end = k + 1;
+                }
+                break;
+            }
+        }
+        if end == i + 1 && i + 1 < tokens.len() && named(tokens[i], tokens[i + 1]) {
+            end = i + 2;
+        }
+        out.push(tokens[i..end].join(" "));
+        i = end;
+    }
+    out
 }
 
 /// The words that relate the ones on either side ("t = 62.6 s"): a line never breaks at them.

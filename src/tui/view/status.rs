@@ -21,7 +21,8 @@ use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::{Shown, note, validity_status, wrap};
 use crate::tui::view::{contact_status, groups_status};
 
-/// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item;
+/// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item
+/// that fits a line (one longer than a line is wrapped by `wrap`, whole values together);
 /// continuation lines start with `indent`.
 pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
     let mut lines = Vec::new();
@@ -33,7 +34,19 @@ pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
         } else if !line.is_empty() && line != indent {
             line.push_str("  ");
         }
-        line.push_str(item);
+        let room = width.saturating_sub(line.chars().count());
+        if item.chars().count() <= room {
+            line.push_str(item);
+            continue;
+        }
+        // too long for any line: wrapped, each part on a line of its own but the last
+        let mut parts = wrap(item, width.saturating_sub(indent.len()).max(1)).into_iter();
+        if let Some(first) = parts.next() {
+            line.push_str(&first);
+        }
+        for part in parts {
+            lines.push(std::mem::replace(&mut line, format!("{indent}{part}")));
+        }
     }
     if !line.is_empty() {
         lines.push(line);
