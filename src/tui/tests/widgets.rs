@@ -241,3 +241,27 @@ fn a_parenthesis_of_prose_wraps_as_prose() {
         ["drawn apart (grey, or", "dots without colour);", "the"]
     );
 }
+
+#[test]
+fn a_text_longer_than_its_rows_ends_after_a_whole_clause_or_word() {
+    use super::{ASCII, PLAIN};
+    use crate::tui::view::wrap_within;
+    // polymer-coating's status in groups at 80x24 ended "..., mu* - mu" (its value cut away)
+    let check =
+        "wide: contact width within 0.1 %, mu* - mu within 0.1 % of the exact strip solution";
+    assert_eq!(
+        wrap_within(check, 48, 1, PLAIN),
+        ["wide: contact width within 0.1 %, …"]
+    );
+    assert_eq!(
+        wrap_within(check, 48, 1, ASCII),
+        ["wide: contact width within 0.1 %, ..."]
+    );
+    assert_eq!(wrap_within(check, 48, 2, PLAIN), wrap(check, 48));
+    assert!(wrap_within(check, 48, 0, PLAIN).is_empty());
+    // no clause in the second half of the line: after the last whole word
+    assert_eq!(
+        wrap_within("one, two three four five six", 20, 1, PLAIN),
+        ["one, two three …"]
+    );
+}

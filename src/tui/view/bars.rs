@@ -9,7 +9,7 @@ use ratatui::widgets::Paragraph;
 use crate::tui::app::{App, Mode};
 use crate::tui::keys::{self, Prompt};
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::wrap;
+use crate::tui::view::{wrap, wrap_within};
 
 /// The prompt whose keys apply in a mode (None on the main screen).
 pub fn prompt(mode: &Mode) -> Option<Prompt> {
@@ -77,24 +77,11 @@ pub fn message_height(app: &App, style: RenderOptions, width: u16) -> u16 {
 }
 
 /// Draws the message, wrapped at spaces to the lines of `area`; a message longer still ends
-/// in "…" after its last whole word.
+/// in "…" (`wrap_within`).
 pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let (text, st) = message(app, style);
-    let width = area.width as usize;
     let rows = area.height.max(1) as usize;
-    let mut lines = wrap(&text, width);
-    if lines.len() > rows {
-        lines.truncate(rows);
-        let last = &mut lines[rows - 1];
-        let more = style.text(" …");
-        while last.chars().count() + more.chars().count() > width {
-            match last.rfind(' ') {
-                Some(i) => last.truncate(i),
-                None => last.clear(),
-            }
-        }
-        last.push_str(&more);
-    }
+    let lines = wrap_within(&text, area.width as usize, rows, style);
     let lines: Vec<Line> = lines.into_iter().map(Line::from).collect();
     frame.render_widget(Paragraph::new(lines).style(st), area);
 }

@@ -181,6 +181,40 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// `wrap` in at most `rows` lines: a text longer still ends in "…" (`...` with `--ascii`) after
+/// its last whole clause on the last line (after a ',' or ';') where that keeps half the line,
+/// else after its last whole word; never cut inside a word.
+pub fn wrap_within(text: &str, width: usize, rows: usize, style: RenderOptions) -> Vec<String> {
+    let mut lines = wrap(text, width);
+    if lines.len() <= rows {
+        return lines;
+    }
+    lines.truncate(rows);
+    let Some(last) = lines.last_mut() else {
+        return lines;
+    };
+    let more = style.text(" …");
+    let room = width.saturating_sub(more.chars().count());
+    let clause = last
+        .char_indices()
+        .filter(|&(i, c)| matches!(c, ',' | ';') && i < room)
+        .map(|(i, _)| i + 1)
+        .last();
+    match clause {
+        Some(end) if end * 2 >= room => last.truncate(end),
+        _ => {
+            while last.chars().count() > room {
+                match last.rfind(' ') {
+                    Some(i) => last.truncate(i),
+                    None => last.clear(),
+                }
+            }
+        }
+    }
+    last.push_str(&more);
+    lines
+}
+
 /// The longest parenthesis kept on one line: a value with its name, not a clause (which would
 /// leave a line of prose half empty).
 const PAREN: usize = 32;

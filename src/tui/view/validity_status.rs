@@ -9,11 +9,13 @@ use wearlab::physics::plane::validity::StripCheck;
 
 use crate::tui::view::status::{number, prose};
 use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::wrap_within;
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
 /// the verdict when the model holds, the check against the strip model once it has come (how
 /// far off), then every warning in a few words (why), each after "! "; warnings that do not fit
-/// are counted ("! +2 more (a taller window shows them)"), never cut.
+/// are counted ("! +2 more (a taller window shows them)"), never cut; a verdict or check that
+/// does not fit ends in "…" after its last whole clause or word (`wrap_within`).
 pub fn lines(
     p: &OperatingPoint,
     check: Option<&StripCheck>,
@@ -62,10 +64,16 @@ pub fn lines(
         };
         head.push((text, look));
     }
-    let mut lines: Vec<Line> = head
-        .into_iter()
-        .flat_map(|(text, look)| prose(&text, width, look))
-        .collect();
+    // each line of the head in the rows left, ended by "…" where it does not fit whole
+    let mut lines: Vec<Line> = Vec::new();
+    for (text, look) in head {
+        let rows = room.saturating_sub(lines.len());
+        lines.extend(
+            wrap_within(&text, width, rows, style)
+                .into_iter()
+                .map(|l| Line::styled(l, look)),
+        );
+    }
     let room = room.saturating_sub(lines.len());
     if total <= room {
         lines.extend(warnings.into_iter().flatten());
