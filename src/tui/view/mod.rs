@@ -195,13 +195,15 @@ pub fn wrap_within(text: &str, width: usize, rows: usize, style: RenderOptions) 
     };
     let more = style.text(" …");
     let room = width.saturating_sub(more.chars().count());
+    // (chars up to the clause's end, its end in bytes)
     let clause = last
         .char_indices()
-        .filter(|&(i, c)| matches!(c, ',' | ';') && i < room)
-        .map(|(i, _)| i + 1)
-        .last();
+        .enumerate()
+        .filter(|&(n, (_, c))| matches!(c, ',' | ';') && n < room)
+        .map(|(n, (i, _))| (n + 1, i + 1))
+        .max();
     match clause {
-        Some(end) if end * 2 >= room => last.truncate(end),
+        Some((chars, end)) if chars * 2 >= room => last.truncate(end),
         _ => {
             while last.chars().count() > room {
                 match last.rfind(' ') {
