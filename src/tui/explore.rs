@@ -251,13 +251,8 @@ pub fn move_cell(app: &mut App, action: Action) {
             app.say("cursor: [ ] move it along x, { } along y; the status reads the map there");
             Some(own_cell(app, &spec).unwrap_or((nx / 2, ny / 2)))
         }
-        (Action::MoveCursor(step), Some((i, j))) => {
-            let by =
-                |k: usize, d: i32, n: usize| (k as i64 + d as i64).clamp(0, n as i64 - 1) as usize;
-            Some(match step {
-                -1 | 1 => (by(i, step, nx), j),
-                _ => (i, by(j, step.signum(), ny)),
-            })
+        (Action::MoveCursor(step), Some(at)) => {
+            Some(crate::tui::map_cursor::moved(at, step, (nx, ny)))
         }
         (_, cell) => {
             app.say("x shows the cursor first");

@@ -43,20 +43,25 @@ pub fn act(app: &mut App, action: Action) {
             app.say("cursor X: [ ] move it along x, { } along y; the status reads p there");
             Some((nx / 2, ny / 2))
         }
-        (Action::MoveCursor(step), Some((i, j))) => {
-            let by = |k: usize, d: i32, n: usize| {
-                (k.min(n - 1) as i64 + d as i64).clamp(0, n as i64 - 1) as usize
-            };
-            Some(match step {
-                -1 | 1 => (by(i, step, nx), j.min(ny - 1)),
-                _ => (i.min(nx - 1), by(j, step.signum(), ny)),
-            })
-        }
+        (Action::MoveCursor(step), Some(at)) => Some(moved(at, step, (nx, ny))),
         (_, cell) => {
             app.say("x shows the cursor first");
             cell
         }
     };
+}
+
+/// A grid cursor (column, row) on a grid of `nx` x `ny` points after `[ ]` (a step of 1: a point
+/// along x) or `{ }` (a step of 10: a point along y), kept on the grid: the pressure map's and
+/// the regime map's cursors alike.
+pub fn moved((i, j): (usize, usize), step: i32, (nx, ny): (usize, usize)) -> (usize, usize) {
+    let by = |k: usize, d: i32, n: usize| {
+        (k.min(n - 1) as i64 + d as i64).clamp(0, n as i64 - 1) as usize
+    };
+    match step {
+        -1 | 1 => (by(i, step, nx), j.min(ny - 1)),
+        _ => (i.min(nx - 1), by(j, step.signum(), ny)),
+    }
 }
 
 /// The grid point of the cursor on `map` (a grid of another size, after an edit, clamps it).

@@ -38,6 +38,17 @@ fn the_readout_is_the_map_value_at_the_cursor_cell() {
 }
 
 #[test]
+fn the_cursor_moves_a_grid_point_and_stays_on_the_grid() {
+    // [ ] one point along x, { } (a step of 10 in the key table) one along y
+    assert_eq!(map_cursor::moved((1, 0), 1, (3, 2)), (2, 0));
+    assert_eq!(map_cursor::moved((1, 0), 10, (3, 2)), (1, 1));
+    assert_eq!(map_cursor::moved((1, 1), -10, (3, 2)), (1, 0));
+    // at an edge it stays
+    assert_eq!(map_cursor::moved((0, 0), -1, (3, 2)), (0, 0));
+    assert_eq!(map_cursor::moved((2, 1), 10, (3, 2)), (2, 1));
+}
+
+#[test]
 fn x_and_brackets_move_a_cell_cursor_that_stays_while_time_changes() {
     let mut app = solved("dispersion.toml");
     assert!(map_cursor::on_map(&app));
