@@ -294,9 +294,12 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
     let c = &st.contact;
     let kind = if c.exact { "certified" } else { "bound" };
     let p_min = format!("p_min = {} ({kind})", format_si(c.min_pressure, "Pa"));
-    // beside a certified minimum, the bound where it differs, so that the gap can be read
+    // beside a certified minimum, the bound where it differs, so that the gap can be read; not
+    // a bound below 0 under a complete contact (it proves nothing there)
     let bound = format_si(c.lower_bound, "Pa");
-    let bound = (c.exact && bound != format_si(c.min_pressure, "Pa"))
+    let bound = (c.exact
+        && bound != format_si(c.min_pressure, "Pa")
+        && !(c.complete && c.lower_bound <= 0.0))
         .then(|| format!("lower bound {bound}"));
     let (items, verdict) = if c.complete {
         let mut items = vec![format!("complete contact, {p_min}")];
