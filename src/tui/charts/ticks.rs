@@ -62,6 +62,11 @@ impl Scale {
     }
 }
 
+/// The fraction of an axis at either end that may be left without a label (the range's ends are
+/// read off the labels nearest them): about a sixth (a log axis from 1M to 200M labelled up to
+/// 100M leaves 0.15 of it).
+pub const BARE_END: f64 = 0.16;
+
 /// The ticks of an axis and its title.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ticks {
@@ -311,14 +316,24 @@ fn logarithmic([a, b]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
             .collect()
     };
     // 1-2-5 within the decades when they fit (easier to read off than bare decades), else 1-3
-    // (half decades) over at most two decades where that gives more than the decades, else
-    // decades, else 1-2-3-5-7 within less than a decade
-    let fine = within(&[1.0, 2.0, 5.0]);
-    let half = within(&[1.0, 3.0]);
-    let values = if b - a <= 3.0 && fine.len() >= 2 && fine.len() <= max {
-        fine
-    } else if b - a <= 2.0 && half.len() > decades.len().max(1) && half.len() <= max {
-        half
+    // (half decades) or 1-2-3-5 over at most two decades where that gives more than the decades;
+    // of those that fit, the first reaching within BARE_END of both ends of the range (else the
+    // nearest); else decades, else 1-2-3-5-7 within less than a decade
+    let bare = |v: &[f64]| match (v.first(), v.last()) {
+        (Some(f), Some(l)) => ((f.log10() - a).max(b - l.log10()) / (b - a)).max(BARE_END),
+        _ => 1.0,
+    };
+    let sets = [
+        (3.0, within(&[1.0, 2.0, 5.0])),
+        (2.0, within(&[1.0, 3.0])),
+        (2.0, within(&[1.0, 2.0, 3.0, 5.0])),
+    ];
+    let fits = |(span, v): &(f64, Vec<f64>)| b - a <= *span && v.len() >= 2 && v.len() <= max;
+    let best = (sets.iter().filter(|s| fits(s)))
+        .filter(|s| s.0 == 3.0 || s.1.len() > decades.len().max(1))
+        .min_by(|x, y| bare(&x.1).total_cmp(&bare(&y.1)));
+    let values = if let Some((_, v)) = best {
+        v.clone()
     } else if decades.len() >= 2 {
         decades.iter().map(|&d| 10f64.powi(d)).collect()
     } else if let Some(v) = [&[1.0, 2.0, 5.0][..], &[1.0, 2.0, 3.0, 5.0, 7.0][..]]

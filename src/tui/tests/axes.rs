@@ -1,11 +1,12 @@
 //! The x axis and the legends of every chart of every bundled preset at 80x24 and 120x40: a log
-//! axis says so, every x tick drawn has its value, and legends avoid the data where they can.
+//! axis says so, every x tick drawn has its value, the last label is near the axis' end (where
+//! the range ends can be read), and legends avoid the data where they can.
 
 use ratatui::crossterm::event::KeyCode;
 use ratatui::layout::Rect;
 
 use super::*;
-use crate::tui::charts::ticks::Scale;
+use crate::tui::charts::ticks::{BARE_END, Scale};
 use crate::tui::charts::{Figure, range};
 use crate::tui::view::chart::{Extras, draw, layout};
 
@@ -42,18 +43,35 @@ fn check(app: &App, w: u16, h: u16, what: &str) -> bool {
             .filter(|&(c, r)| l.raster.occupied(c, r))
             .any(|(c, r)| drawn[(p.x + c, p.y + r)].symbol() != alone[(p.x + c, p.y + r)].symbol())
     });
-    // every tick drawn is labelled: the screen's label row holds each label
+    // every tick drawn is labelled: the screen's label row (the title's, or the one above when
+    // the title has a row of its own) holds each label
     let s = screen(app, w, h, PLAIN);
-    let row = s
-        .lines()
-        .find(|l| l.contains(&x_ticks.title))
+    let lines: Vec<&str> = s.lines().collect();
+    let at = lines
+        .iter()
+        .rposition(|l| l.contains(&x_ticks.title))
         .unwrap_or_else(|| panic!("{what}: no x title {}\n{s}", x_ticks.title));
-    for (_, label) in &x_ticks.ticks {
-        assert!(
-            row.contains(label.as_str()),
-            "{what}: {label} unlabelled\n{s}"
-        );
-    }
+    let row = [lines[at], lines[at - 1]].into_iter().find(|l| {
+        x_ticks
+            .ticks
+            .iter()
+            .all(|(_, label)| l.contains(label.as_str()))
+    });
+    assert!(row.is_some(), "{what}: a tick unlabelled\n{s}");
+    // where the range ends can be read: the last label within BARE_END of the axis' end; on a
+    // linear axis, else no tick of its step missing before the end (7.8 um to 992 um at 80x24:
+    // 200 ... 800, the next at 1000 is past the end, and a step of 100 does not fit)
+    let span = frames[0].x[1] - frames[0].x[0];
+    let t = &x_ticks.ticks;
+    let bare = t.last().map_or(1.0, |l| (frames[0].x[1] - l.0) / span);
+    let step = match t.len() {
+        2.. if matches!(frames[0].plot.x.scale, Scale::Linear) => (t[1].0 - t[0].0) / span,
+        _ => 0.0,
+    };
+    assert!(
+        bare <= BARE_END + 1e-9 || bare < step,
+        "{what}: the last x label {bare} of the axis from its end\n{s}"
+    );
     covers
 }
 

@@ -7,7 +7,7 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 
 use crate::tui::charts::range::Frame;
-use crate::tui::charts::ticks::{Ticks, ticks};
+use crate::tui::charts::ticks::{BARE_END, Ticks, ticks};
 use crate::tui::view::raster::{Ink, Raster};
 use crate::tui::view::theme::RenderOptions;
 
@@ -24,17 +24,21 @@ pub struct Geometry {
     pub axis_row: u16,
     /// The row of the x tick labels (the last plot only).
     pub x_labels: Option<u16>,
+    /// The row of the x axis title when it has one of its own, under the labels.
+    pub x_title: Option<u16>,
 }
 
-/// Rows of data of a plot in `share` with `rows` legend rows, with or without x labels.
-pub fn plot_height(share: Rect, rows: u16, last: bool) -> u16 {
-    share.height.saturating_sub(2 + rows + last as u16).max(1)
+/// Rows of data of a plot in `share` with `rows` legend rows and `under` rows under its axis
+/// line (none, the x labels, the x labels and the x title).
+pub fn plot_height(share: Rect, rows: u16, under: u16) -> u16 {
+    share.height.saturating_sub(2 + rows + under).max(1)
 }
 
 impl Geometry {
-    /// The parts of a plot in `share`, with a y label column `label_width` wide.
-    pub fn new(share: Rect, label_width: u16, rows: u16, last: bool) -> Geometry {
-        let height = plot_height(share, rows, last);
+    /// The parts of a plot in `share`, with a y label column `label_width` wide, `rows` legend
+    /// rows and `under` rows under its axis line (none, the x labels, the labels and the title).
+    pub fn new(share: Rect, label_width: u16, rows: u16, under: u16) -> Geometry {
+        let height = plot_height(share, rows, under);
         let plot = Rect {
             x: share.x + label_width + 1,
             y: share.y + 1 + rows,
@@ -51,7 +55,8 @@ impl Geometry {
             },
             plot,
             axis_row,
-            x_labels: last.then_some(axis_row + 1),
+            x_labels: (under > 0).then_some(axis_row + 1),
+            x_title: (under > 1).then_some(axis_row + 2),
         }
     }
 
@@ -95,17 +100,25 @@ fn frac(v: f64, [lo, hi]: [f64; 2]) -> f64 {
 }
 
 /// The x tick labels and the axis title placed on a row `width` wide whose plot starts at
-/// column `left`: the labels that fit (tick index, column, text), none overlapping another, and
-/// the title's column: at the row's end, else at its start, else at the end over the last labels.
-fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(usize, u16, String)>, u16) {
+/// column `left`: the labels that fit (tick index, start column, text), each covering its tick's
+/// column (centred where it can be, the last one pulled in from the row's end) and none touching
+/// another, and the title's column on that row: at the row's end where it is clear of the labels,
+/// else at the row's start (`kh (log)  1  2  5`), else (`clear`) at the end with the labels under
+/// it left out, else None: on a row of its own, never over a label.
+fn place_x(
+    t: &Ticks,
+    range: [f64; 2],
+    (left, width): (u16, u16),
+    clear: bool,
+) -> (Vec<(usize, u16, String)>, Option<u16>) {
     let plot_width = width.saturating_sub(left);
     let mut labels: Vec<(usize, u16, String)> = Vec::new();
     let mut free = 0u16;
     for (i, (pos, label)) in t.ticks.iter().enumerate() {
         let len = label.chars().count() as u16;
         let centre = left + column(frac(*pos, range), plot_width);
-        let start = centre.saturating_sub(len / 2).max(free);
-        if start + len > width || start > centre {
+        let start = (centre.saturating_sub(len / 2).max(free)).min(width.saturating_sub(len));
+        if start < free || start > centre || start + len <= centre {
             continue;
         }
         free = start + len + 2;
@@ -114,23 +127,36 @@ fn place_x(t: &Ticks, range: [f64; 2], left: u16, width: u16) -> (Vec<(usize, u1
     let title = t.title.chars().count() as u16;
     let end = |l: &(usize, u16, String)| l.1 + l.2.chars().count() as u16;
     let right = width.saturating_sub(title);
-    if labels.last().is_none_or(|l| end(l) < right) {
-        return (labels, right);
-    }
-    if labels.first().is_some_and(|l| l.1 > title) {
-        return (labels, 0);
-    }
-    labels.retain(|l| end(l) < right);
-    (labels, right)
+    let at = if labels.last().is_none_or(|l| end(l) < right) {
+        Some(right)
+    } else if labels.first().is_some_and(|l| l.1 > title) {
+        Some(0)
+    } else if clear {
+        labels.retain(|l| end(l) < right);
+        Some(right)
+    } else {
+        None
+    };
+    (labels, at)
 }
 
-/// The x ticks of the shared axis, each labelled: of the candidate tick sets, the one showing
-/// the most labels on the label row with the axis title, where the labels left out (for want of
-/// room) are only at the ends of the set, never between two shown; the title states its scale
-/// ("(log)", or "log" where that shows more labels) unless that leaves fewer than two labels;
-/// of equals the full title, then the finer set (a log axis keeps 1-2-5 over bare values). The ticks left out are not drawn either: no tick
-/// without its value.
-pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
+/// How far the labels `shown` (tick indices of `t`) leave the ends of `range` bare: the larger
+/// of the fractions of the axis before the first and after the last.
+fn bare_end(t: &Ticks, shown: &[usize], range: [f64; 2]) -> f64 {
+    match (shown.first(), shown.last()) {
+        (Some(&a), Some(&b)) => frac(t.ticks[a].0, range).max(1.0 - frac(t.ticks[b].0, range)),
+        _ => 1.0,
+    }
+}
+
+/// The x ticks of the shared axis, each labelled, and whether the axis title needs a row of its
+/// own. Of the candidate tick sets (the labels left out for want of room only at the ends of a
+/// set, never between two shown), the first by: labels within `BARE_END` of both ends of the
+/// axis (so that where the range ends can be read; else as near them as can be), the title stating its scale ("(log)", or
+/// "log") with at least two labels, the title on the label row (else on a row of its own, never
+/// over a label), the most labels, the full title; of equals the finer set (a log axis keeps 1-2-5
+/// over bare decades). The ticks left out are not drawn either: no tick without its value.
+pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> (Ticks, bool) {
     let x = &frame.plot.x;
     let width = plot_width + left;
     // the title as it comes ("k [rad/m] (log)"), with the scale shorter ("k [rad/m] log"),
@@ -152,34 +178,47 @@ pub fn x_ticks(frame: &Frame, plot_width: u16, left: u16) -> Ticks {
                 (t, form)
             })
     };
-    let kept = |t: &Ticks| -> Vec<usize> {
-        let (labels, _) = place_x(t, frame.x, left, width);
-        labels.into_iter().map(|l| l.0).collect()
+    // the labels shown, if they are a run of the set (none missing between two shown), and
+    // whether the title is on their row
+    let run = |t: &Ticks, clear: bool| -> Option<(Vec<usize>, bool)> {
+        let (labels, at) = place_x(t, frame.x, (left, width), clear);
+        let k: Vec<usize> = labels.into_iter().map(|l| l.0).collect();
+        k.windows(2)
+            .all(|w| w[1] == w[0] + 1)
+            .then_some((k, at.is_some()))
     };
-    // the labels shown, if they are a run of the set (none missing between two shown)
-    let run = |t: &Ticks| -> Option<Vec<usize>> {
-        let k = kept(t);
-        k.windows(2).all(|w| w[1] == w[0] + 1).then_some(k)
+    let key = |(t, form, clear): &(Ticks, u8, bool)| {
+        run(t, *clear).map(|(k, on_row)| {
+            (
+                std::cmp::Reverse((bare_end(t, &k, frame.x).max(BARE_END) * 1e3).round() as i64),
+                *form < 2 && k.len() >= 2,
+                k.len().min(4),
+                on_row,
+                k.len(),
+                *form == 0,
+            )
+        })
     };
-    let key =
-        |(t, form): &(Ticks, u8)| run(t).map(|k| (*form < 2 && k.len() >= 2, k.len(), *form == 0));
     let best = candidates(0)
         .chain(candidates(1))
         .chain(candidates(2))
-        .fold(None, |best: Option<(Ticks, u8)>, c| match best {
+        .flat_map(|(t, form)| [(t.clone(), form, false), (t, form, true)])
+        .fold(None, |best: Option<(Ticks, u8, bool)>, c| match best {
             Some(b) if key(&b) >= key(&c) => Some(b),
             _ => Some(c),
         })
-        .map(|(t, _)| t)
-        .unwrap_or_else(|| ticks(frame.x, x.scale, &x.label, x.unit, 2));
-    let k = kept(&best);
-    Ticks {
-        ticks: (best.ticks.iter().enumerate())
+        .map(|(t, _, clear)| (t, clear))
+        .unwrap_or_else(|| (ticks(frame.x, x.scale, &x.label, x.unit, 2), false));
+    let (labels, at) = place_x(&best.0, frame.x, (left, width), best.1);
+    let k: Vec<usize> = labels.into_iter().map(|l| l.0).collect();
+    let shown = Ticks {
+        ticks: (best.0.ticks.iter().enumerate())
             .filter(|(i, _)| k.contains(i))
             .map(|(_, t)| t.clone())
             .collect(),
-        title: best.title,
-    }
+        title: best.0.title,
+    };
+    (shown, at.is_none())
 }
 
 /// Shades the plot's shaded x ranges (under everything else).
@@ -356,14 +395,20 @@ pub fn frame(frame: &Frame, g: &Geometry, y: &Ticks, x: &Ticks, buf: &mut Buffer
     if let Some(r) = g.x_labels {
         let left = p.x - g.header.x;
         let width = g.header.width;
-        let (labels, title) = place_x(x, frame.x, left, width);
+        let (labels, at) = place_x(x, frame.x, (left, width), false);
         for (_, start, label) in labels {
             buf.set_string(g.header.x + start, r, label, Style::default());
         }
         let len = x.title.chars().count() as u16;
+        // on a row of its own when the layout gave it one, at that row's end
+        let (row, col) = match (g.x_title, at) {
+            (Some(own), _) => (own, width.saturating_sub(len)),
+            (None, Some(col)) => (r, col),
+            (None, None) => (r, width.saturating_sub(len)),
+        };
         buf.set_stringn(
-            g.header.x + title,
-            r,
+            g.header.x + col,
+            row,
             &x.title,
             len as usize,
             Style::default(),

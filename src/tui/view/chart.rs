@@ -184,24 +184,21 @@ pub struct Laid {
     pub place: Place,
 }
 
-/// Lays out the stacked frames in `area` with `extra[i]` legend rows above plot i.
-fn lay_out(
-    frames: &[Frame],
-    style: RenderOptions,
-    extras: &Extras,
-    area: Rect,
-    extra: &[u16],
-) -> Option<(Vec<Laid>, Ticks)> {
-    let n = frames.len() as u16;
-    let shares = axis::split(area, n);
-    // y ticks first: they set the label column, which sets the plot width
-    let y_ticks: Vec<Ticks> = frames
+/// The y ticks of the stacked frames in `shares` with `extra[i]` legend rows above plot i, the
+/// last with the x title on a row of its own (`own`) or not.
+fn y_ticks(frames: &[Frame], shares: &[Rect], extra: &[u16], own: bool) -> Vec<Ticks> {
+    frames
         .iter()
-        .zip(&shares)
+        .zip(shares)
         .zip(extra)
         .enumerate()
         .map(|(i, ((f, share), &rows))| {
-            let h = axis::plot_height(*share, rows, i + 1 == frames.len());
+            let under = if i + 1 == frames.len() {
+                1 + own as u16
+            } else {
+                0
+            };
+            let h = axis::plot_height(*share, rows, under);
             let max = (h as usize / 2).clamp(2, 8);
             match crate::tui::charts::range::constant(f) {
                 // a constant: one tick, at it (among fine ones, the nearest), so that it reads
@@ -216,22 +213,53 @@ fn lay_out(
                 None => ticks(f.y, f.y_scale, &f.plot.y.label, f.plot.y.unit, max),
             }
         })
-        .collect();
-    let label_width = y_ticks
+        .collect()
+}
+
+/// The width of the y label column of the stacked frames (`y_ticks`' arguments).
+fn label_width(frames: &[Frame], shares: &[Rect], extra: &[u16], own: bool) -> u16 {
+    y_ticks(frames, shares, extra, own)
         .iter()
         .flat_map(|t| t.ticks.iter().map(|(_, l)| l.chars().count()))
         .max()
-        .unwrap_or(1) as u16;
+        .unwrap_or(1) as u16
+}
+
+/// Lays out the stacked frames in `area` with `extra[i]` legend rows above plot i.
+fn lay_out(
+    frames: &[Frame],
+    style: RenderOptions,
+    extras: &Extras,
+    area: Rect,
+    extra: &[u16],
+) -> Option<(Vec<Laid>, Ticks)> {
+    let n = frames.len() as u16;
+    let shares = axis::split(area, n);
     let last = frames.last()?;
-    let plot_width = area.width.checked_sub(label_width + 1)?;
-    let x_ticks = axis::x_ticks(last, plot_width, label_width + 1);
+    // the x title on the label row, else (when the ticks that read to the range's ends leave it
+    // no room there) on a row of its own under the labels
+    let (label_width, x_ticks, own, _) = [false, true]
+        .into_iter()
+        .map(|own| {
+            let label_width = label_width(frames, &shares, extra, own);
+            let plot_width = area.width.checked_sub(label_width + 1)?;
+            let (x_ticks, wants) = axis::x_ticks(last, plot_width, label_width + 1);
+            Some((label_width, x_ticks, own, wants))
+        })
+        .find(|t| t.as_ref().is_none_or(|t| t.2 || !t.3))??;
+    let y_ticks = y_ticks(frames, &shares, extra, own);
     let laid = frames
         .iter()
         .zip(shares)
         .zip(y_ticks)
         .enumerate()
         .map(|(i, ((f, share), y_ticks))| {
-            let geometry = Geometry::new(share, label_width, extra[i], i + 1 == frames.len());
+            let under = if i + 1 == frames.len() {
+                1 + own as u16
+            } else {
+                0
+            };
+            let geometry = Geometry::new(share, label_width, extra[i], under);
             let raster = rasterize(f, style, geometry.plot);
             let size = (geometry.plot.width, geometry.plot.height);
             let entries = entries(f, style, &extras.pins, size);
