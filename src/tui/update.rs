@@ -156,12 +156,12 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         }
         Mode::Help(scroll) => {
             // scrolling stops at the end of the text on the last drawn screen
-            let last = crate::tui::view::popups::help_last(app, app.ui.screen);
+            let last = crate::tui::view::popups::help_last(app, windows(app));
             app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::Help);
             Vec::new()
         }
         Mode::About(scroll) => {
-            let last = crate::tui::view::popups::about_last(app, app.ui.screen);
+            let last = crate::tui::view::popups::about_last(app, windows(app));
             app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::About);
             Vec::new()
         }
@@ -194,7 +194,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             }
             Some(PromptAction::PageUp | PromptAction::PageDown) => {
                 // the description scrolls, stopping where its last line is at the bottom
-                let last = crate::tui::view::picker::last(&entries, selected, app.ui.screen);
+                let last = crate::tui::view::picker::last(&entries, selected, windows(app));
                 let scroll = scrolled(&key, scroll, last).unwrap_or(scroll);
                 app.ui.mode = Mode::Picker {
                     entries,
@@ -358,4 +358,15 @@ fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
         PromptAction::PageDown => Some(scroll.saturating_add(10).min(last)),
         _ => None,
     }
+}
+
+/// The area of the windows over the screen on the last drawn screen (`view::windows_area`; the
+/// message's length does not depend on `--ascii` but for "…", three columns).
+fn windows(app: &App) -> ratatui::layout::Rect {
+    let plain = crate::tui::view::RenderOptions {
+        ascii: false,
+        color: false,
+        truecolor: false,
+    };
+    crate::tui::view::windows_area(app, plain, app.ui.screen)
 }

@@ -270,3 +270,18 @@ fn i_shows_the_whole_description_and_scrolls_it() {
     press(&mut app, KeyCode::Esc);
     assert_eq!(app.ui.mode, Mode::Normal);
 }
+
+#[test]
+fn a_window_leaves_the_message_rows_free() {
+    // rubber-backward-drift's name and file take two rows at 80x24: under `i` the name was hidden
+    let mut app = solved("rubber-backward-drift.toml");
+    app.doc.path = Some("presets/rubber-backward-drift.toml".into());
+    press(&mut app, KeyCode::Char('i'));
+    let s = screen(&app, 80, 24, PLAIN);
+    let rows: Vec<&str> = s.lines().collect();
+    assert!(rows[21].contains("Thin rubber layer"), "{s}");
+    assert!(
+        rows[22].contains("(presets/rubber-backward-drift.toml)"),
+        "{s}"
+    );
+}

@@ -97,7 +97,8 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         too_small(frame, area);
         return;
     };
-    if bars::message_height(app, style, area.width) > 1 {
+    let message_rows = bars::message_height(app, style, area.width);
+    if message_rows > 1 {
         // a long message takes the panels' last row rather than being cut
         areas.form.height -= 1;
         areas.status.height -= 1;
@@ -112,19 +113,31 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
     status::draw(app, &shown, style, frame, areas.status);
     bars::draw_message(app, style, frame, areas.message);
     bars::draw_footer(app, style, frame, areas.footer);
+    let over = windows_area(app, style, area);
     match &app.ui.mode {
-        Mode::Help(scroll) => popups::help(app, *scroll, style, frame, area),
-        Mode::About(scroll) => popups::about(app, *scroll, style, frame, area),
+        Mode::Help(scroll) => popups::help(app, *scroll, style, frame, over),
+        Mode::About(scroll) => popups::about(app, *scroll, style, frame, over),
         Mode::Picker {
             entries,
             selected,
             scroll,
-        } => picker::draw(entries, *selected, *scroll, style, frame, area),
+        } => picker::draw(entries, *selected, *scroll, style, frame, over),
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
         Mode::Form(form) => explore::form(form, style, frame, area),
         _ => {}
     }
     style.to_ascii(frame.buffer_mut());
+}
+
+/// Where the windows over the screen (help, about, picker) are drawn: the screen but the
+/// message's extra rows (the preset's name and file take two rows at 80x24 under `i`). Their
+/// scrolling (update.rs) is bounded on the same area.
+pub fn windows_area(app: &App, style: RenderOptions, screen: Rect) -> Rect {
+    let extra = bars::message_height(app, style, screen.width).saturating_sub(1);
+    Rect {
+        height: screen.height.saturating_sub(extra),
+        ..screen
+    }
 }
 
 fn too_small(frame: &mut Frame, area: Rect) {
