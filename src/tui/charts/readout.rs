@@ -3,12 +3,13 @@
 use wearlab::units::{format_si, prefixable};
 
 use crate::tui::charts::range::{Frame, plotted};
-use crate::tui::charts::{Scale, Series, ticks};
+use crate::tui::charts::{Scale, Series};
 
 /// A value as the readout writes it: three significant digits with an SI prefix where the unit
 /// takes one, else six significant digits (mu* differs from mu in the fifth), or on a linear axis
 /// spanning `span` (same unit) as many decimals as resolve a hundredth of it, trailing zeros kept
-/// (mu* on an axis "mu* - 0.3 (x1e-7)" reads 0.2999999700, not 0.3).
+/// either way (mu* on an axis "mu* - 0.3 (x1e-7)" reads 0.2999999700, not 0.3; beside 0.303962,
+/// mu* strip reads 0.304060, not 0.30406).
 pub fn value(v: f64, unit: &str, span: Option<f64>) -> String {
     if prefixable(unit) || !v.is_finite() {
         return format_si(v, unit);
@@ -23,8 +24,11 @@ pub fn value(v: f64, unit: &str, span: Option<f64>) -> String {
         match fine {
             Some(d) if (-4..6).contains(&e) && d as i32 > 5 - e => format!("{v:.d$}"),
             _ if (-4..6).contains(&e) => {
+                // six significant digits of the rounded value (0.9999996 is 1.00000)
                 let f = 10f64.powi(5 - e);
-                ticks::plain((v * f).round() / f)
+                let r = (v * f).round() / f;
+                let d = (5 - r.abs().log10().floor() as i32).max(0) as usize;
+                format!("{r:.d$}")
             }
             _ => format!("{v:.5e}"),
         }
@@ -61,7 +65,9 @@ pub fn at(series: &Series, x: f64, xs: Scale, ys: Scale) -> Option<f64> {
 }
 
 /// The readout at `cursor` (a fraction of the x range): "x = ...", then "name = value" for every
-/// curve of every plot (its short name), and for the pins' curves "[n] name = value".
+/// curve of every plot (its short name), tagged where the cursor is on a dim part of it, as the
+/// legend names them ("mu* wide = 0.429323 (fails)", "(partial)" for the spatial contact), and for
+/// the pins' curves "[n] name = value".
 pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     let Some(first) = frames.first() else {
         return Vec::new();
@@ -80,11 +86,22 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
         let read = |s: &Series| {
             at(s, xp, f.plot.x.scale, f.y_scale).map_or("-".to_string(), |v| value(v, unit, span))
         };
+        // the dim parts of curve i under the cursor: plane models "fail", the spatial contact
+        // is partial
+        let tag = |i: usize| {
+            (f.plot.dim.iter())
+                .find(|(j, d)| *j == i && at(d, xp, f.plot.x.scale, f.y_scale).is_some())
+                .map_or("", |(_, d)| {
+                    if d.name.is_empty() {
+                        " (partial)"
+                    } else {
+                        " (fails)"
+                    }
+                })
+        };
         items.extend(
-            f.plot
-                .series
-                .iter()
-                .map(|s| format!("{} = {}", short_name(&s.name), read(s))),
+            (f.plot.series.iter().enumerate())
+                .map(|(i, s)| format!("{} = {}{}", short_name(&s.name), read(s), tag(i))),
         );
         for (n, pin) in f.pins.iter().enumerate() {
             items.extend(

@@ -134,3 +134,28 @@ fn a_legend_says_why_a_curve_it_names_cannot_be_seen() {
     let s = screen(&app, 80, 24, PLAIN);
     assert!(s.contains("++ b (leading): under a (trailing)"), "{s}");
 }
+
+#[test]
+fn the_sweep_cursor_reads_each_mu_star_alike_and_tags_a_failing_model() {
+    // the review: thin-strip-winkler's sweep cursor read 'mu* narrow = 0.303962  mu* wide =
+    // 0.429323  mu* strip = 0.30406', the wide model's value untagged though its legend says
+    // it fails over the whole range
+    let mut app = solved("thin-strip-winkler.toml");
+    press(&mut app, KeyCode::Char('v'));
+    let cmds = press(&mut app, KeyCode::Enter);
+    super::explore::explored(&mut app, &cmds);
+    press(&mut app, KeyCode::Char('x'));
+    let s = screen(&app, 120, 40, PLAIN);
+    let text = s.replace(['│', '"'], " ");
+    let words: Vec<&str> = text.split_whitespace().collect();
+    let values: Vec<(&str, &str)> = (words.windows(4))
+        .filter(|w| w[0] == "mu*" && w[2] == "=")
+        .map(|w| (w[1], w[3]))
+        .collect();
+    assert!(values.len() >= 3, "{s}");
+    for (model, v) in &values {
+        let decimals = v.split('.').nth(1).map_or(0, str::len);
+        assert_eq!(decimals, 6, "mu* {model} = {v}\n{s}");
+    }
+    assert!(s.contains("(fails)"), "{s}");
+}
