@@ -159,3 +159,23 @@ fn the_sweep_cursor_reads_each_mu_star_alike_and_tags_a_failing_model() {
     }
     assert!(s.contains("(fails)"), "{s}");
 }
+
+#[test]
+fn a_reference_line_under_a_curve_says_so() {
+    // the review: jgh-egg-box's charts named '┈┈ mu = 0' (and '┈┈ c = 0') where the curve lies
+    // on the line over its whole width, so that the line shows nowhere
+    let mut app = solved("jgh-egg-box.toml");
+    let mut seen = 0;
+    for _ in 0..5 {
+        let s = screen(&app, 120, 40, PLAIN);
+        for line in ["┈┈ mu = 0", "┈┈ c = 0"] {
+            if s.contains(line) {
+                assert!(s.contains(&format!("{line}: under ")), "{s}");
+                seen += 1;
+            }
+        }
+        let cmds = press(&mut app, KeyCode::Tab);
+        settle(&mut app, cmds);
+    }
+    assert!(seen >= 2, "{seen}");
+}

@@ -112,11 +112,20 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String], size: (u16, u16
         text: m.name.clone(),
     }));
     let (_, horizontal) = style.mark_glyphs();
-    out.extend(plot.y_marks.iter().map(|m| Entry {
-        sample: horizontal.to_string().repeat(2),
-        style: style.mark(),
-        text: m.label.clone(),
-    }));
+    let marks_under = hidden::marks_under(frame, style, size);
+    out.extend(
+        plot.y_marks
+            .iter()
+            .zip(marks_under)
+            .map(|(m, under)| Entry {
+                sample: horizontal.to_string().repeat(2),
+                style: style.mark(),
+                text: match under {
+                    Some(j) => format!("{}: under {}", m.label, plot.series[j].name),
+                    None => m.label.clone(),
+                },
+            }),
+    );
     // the dim parts that show (a curve off scale shows none): once, or without colour each
     // curve's mark with its name ("'' narrow fails")
     let shows = |d: &crate::tui::charts::Series| {

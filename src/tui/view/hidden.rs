@@ -11,7 +11,7 @@ use crate::tui::view::theme::RenderOptions;
 pub enum Hidden {
     /// Its dim parts (drawn over every curve) cover it: its model fails over the whole range.
     Fails,
-    /// This curve (drawn over it: a lower index) covers it.
+    /// This curve (drawn over it: a lower index) covers it, or all but a tenth of it.
     Under(usize),
 }
 
@@ -37,17 +37,45 @@ fn cells(
 
 /// Whether every cell of `a` is a cell of `b` (and `a` has one).
 fn within(a: &Raster, b: &Raster, size: (u16, u16)) -> bool {
+    let (shown, covered) = overlap(a, b, size);
+    shown == 0 && covered > 0
+}
+
+/// The cells of `a` that are not cells of `b`, and those that are.
+fn overlap(a: &Raster, b: &Raster, size: (u16, u16)) -> (usize, usize) {
     let all = (0..size.0).flat_map(|c| (0..size.1).map(move |r| (c, r)));
-    let mut any = false;
-    for (c, r) in all {
-        if a.occupied(c, r) {
-            if !b.occupied(c, r) {
-                return false;
+    all.filter(|&(c, r)| a.occupied(c, r))
+        .fold((0, 0), |(s, v), (c, r)| {
+            if b.occupied(c, r) {
+                (s, v + 1)
+            } else {
+                (s + 1, v)
             }
-            any = true;
-        }
-    }
-    any
+        })
+}
+
+/// Whether `a` lies under `b`: at most a tenth of its cells show (polymer-coating's strip curve
+/// showed one cell beside the wide model's, a 75-degree dispersion curve one of forty).
+fn under(a: &Raster, b: &Raster, size: (u16, u16)) -> bool {
+    let (shown, covered) = overlap(a, b, size);
+    covered > 0 && shown * 10 <= shown + covered
+}
+
+/// For each horizontal reference line of the frame (drawn only on cells without data), the curve
+/// it lies under where data covers its whole row in a plot area `size` (None: it shows).
+pub fn marks_under(frame: &Frame, style: RenderOptions, size: (u16, u16)) -> Vec<Option<usize>> {
+    let own: Vec<Raster> = (frame.plot.series.iter())
+        .map(|s| cells(frame, style, size, &[&s.points]))
+        .collect();
+    crate::tui::view::axis::y_mark_rows(frame, size.1)
+        .into_iter()
+        .map(|r| {
+            let covering = |j: usize| (0..size.0).filter(|&c| own[j].occupied(c, r)).count();
+            let all = (0..size.0).all(|c| own.iter().any(|o| o.occupied(c, r)));
+            all.then(|| (0..own.len()).max_by_key(|&j| covering(j)))
+                .flatten()
+        })
+        .collect()
 }
 
 /// For each curve of the frame, why it cannot be seen in a plot area `size` (None: it shows).
@@ -67,7 +95,7 @@ pub fn hidden(frame: &Frame, style: RenderOptions, size: (u16, u16)) -> Vec<Opti
                 return Some(Hidden::Fails);
             }
             (0..i)
-                .find(|&j| within(&own[i], &own[j], size))
+                .find(|&j| under(&own[i], &own[j], size))
                 .map(Hidden::Under)
         })
         .collect()
