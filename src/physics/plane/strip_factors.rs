@@ -214,7 +214,8 @@ impl Factors {
 
 /// Solves a y = b by refinement from `guess` with `solve`, an approximate inverse of a (the
 /// factors of a nearby matrix, or a two-grid step): None when a step does not contract the
-/// correction by half (above round-off) or more than MAX_REFINEMENTS steps are needed. Stops when
+/// correction by half (above round-off), a correction is not finite (nalgebra's `amax` passes
+/// NaN by) or more than MAX_REFINEMENTS steps are needed. Stops when
 /// the next correction, estimated from the contraction so far, is below `tolerance` of y.
 /// Returns y and the steps taken.
 pub fn refine(
@@ -227,6 +228,9 @@ pub fn refine(
     let mut last = f64::INFINITY;
     for steps in 1..=MAX_REFINEMENTS {
         let dy = solve(&residual(a, &y, b))?;
+        if !dy.iter().all(|v| v.is_finite()) {
+            return None;
+        }
         y += &dy;
         let (step, size) = (dy.amax(), y.amax());
         // the contraction per step, unknown after the first
@@ -317,6 +321,18 @@ mod tests {
         singular.column_mut(11).fill(0.0);
         assert!(Lu::new(singular.clone()).is_none());
         assert!(Factors::new(&singular).is_none());
+    }
+
+    #[test]
+    fn refinement_refuses_a_correction_that_is_not_finite() {
+        // an approximate inverse that answers NaN (amax would pass it by) or infinity: None, so
+        // that the caller factors the matrix (collocation.rs) instead of returning a NaN
+        let a = scrambled(8, 10);
+        let b = DVector::from_element(8, 1.0);
+        for bad in [f64::NAN, f64::INFINITY] {
+            let solve = |r: &DVector<f64>| Some(r.map(|_| bad));
+            assert!(refine(&a, &b, DVector::zeros(8), 1e-14, solve).is_none());
+        }
     }
 
     #[test]
