@@ -10,6 +10,7 @@ use ratatui::style::{Modifier, Style};
 use wearlab::units::format_si;
 
 use crate::tui::charts::range::{Frame, plotted};
+use crate::tui::charts::readout::short_name;
 use crate::tui::charts::ticks::{Ticks, ticks};
 use crate::tui::view::axis::{self, Geometry};
 use crate::tui::view::hidden::{self, Hidden};
@@ -94,7 +95,9 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String], size: (u16, u16
             } else {
                 match hidden[i] {
                     Some(Hidden::Fails) => format!("{}: fails over the whole range", s.name),
-                    Some(Hidden::Under(j)) => format!("{}: under {}", s.name, plot.series[j].name),
+                    Some(Hidden::Under(j)) => {
+                        format!("{}: under {}", s.name, short_name(&plot.series[j].name))
+                    }
                     None => s.name.clone(),
                 }
             };
@@ -121,7 +124,7 @@ fn entries(frame: &Frame, style: RenderOptions, pins: &[String], size: (u16, u16
                 sample: horizontal.to_string().repeat(2),
                 style: style.mark(),
                 text: match under {
-                    Some(j) => format!("{}: under {}", m.label, plot.series[j].name),
+                    Some(j) => format!("{}: under {}", m.label, short_name(&plot.series[j].name)),
                     None => m.label.clone(),
                 },
             }),
