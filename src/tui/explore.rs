@@ -13,6 +13,7 @@ use wearlab::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command};
 use crate::tui::keys::Action;
+use crate::tui::map_cursor::{Said, stepped};
 
 /// What the chart area shows instead of the charts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -242,23 +243,18 @@ pub fn move_cell(app: &mut App, action: Action) {
         return;
     };
     let (nx, ny) = (spec.x.range.points, spec.y.range.points);
-    app.explore.cell = match (action, app.explore.cell) {
-        (Action::Cursor, Some(_)) => {
-            app.say("cursor off");
-            None
+    let (cell, said) = stepped(action, app.explore.cell, (nx, ny), || {
+        own_cell(app, &spec).unwrap_or((nx / 2, ny / 2))
+    });
+    app.explore.cell = cell;
+    app.say(match said {
+        Some(Said::On) => {
+            "cursor: [ ] move it along x, { } along y; the status reads the map there"
         }
-        (Action::Cursor, None) => {
-            app.say("cursor: [ ] move it along x, { } along y; the status reads the map there");
-            Some(own_cell(app, &spec).unwrap_or((nx / 2, ny / 2)))
-        }
-        (Action::MoveCursor(step), Some(at)) => {
-            Some(crate::tui::map_cursor::moved(at, step, (nx, ny)))
-        }
-        (_, cell) => {
-            app.say("x shows the cursor first");
-            cell
-        }
-    };
+        Some(Said::Off) => "cursor off",
+        Some(Said::NotShown) => "x shows the cursor first",
+        None => return,
+    });
 }
 
 /// The grid point nearest the preset's own point on the map shown (in each axis' spacing), when

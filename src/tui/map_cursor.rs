@@ -33,22 +33,42 @@ pub fn act(app: &mut App, action: Action) {
         app.say("the map has not arrived yet: x works once it is drawn");
         return;
     };
-    let (nx, ny) = (map.x.len(), map.y.len());
-    app.ui.map_cell = match (action, app.ui.map_cell) {
-        (Action::Cursor, Some(_)) => {
-            app.say("cursor off");
-            None
-        }
-        (Action::Cursor, None) => {
-            app.say("cursor X: [ ] move it along x, { } along y; the status reads p there");
-            Some((nx / 2, ny / 2))
-        }
-        (Action::MoveCursor(step), Some(at)) => Some(moved(at, step, (nx, ny))),
-        (_, cell) => {
-            app.say("x shows the cursor first");
-            cell
-        }
-    };
+    let dims = (map.x.len(), map.y.len());
+    let (cell, said) = stepped(action, app.ui.map_cell, dims, || (dims.0 / 2, dims.1 / 2));
+    app.ui.map_cell = cell;
+    app.say(match said {
+        Some(Said::On) => "cursor X: [ ] move it along x, { } along y; the status reads p there",
+        Some(Said::Off) => "cursor off",
+        Some(Said::NotShown) => "x shows the cursor first",
+        None => return,
+    });
+}
+
+/// What a grid cursor's key did, for the caller's message.
+pub enum Said {
+    /// `x` showed it.
+    On,
+    /// `x` hid it.
+    Off,
+    /// `[ ] { }` while it is hidden.
+    NotShown,
+}
+
+/// A grid cursor after `x` (shown at `start`, or hidden), `[ ]` or `{ }` (`moved`) on a grid of
+/// `nx` x `ny` points, and what to say (None: it moved): the pressure map's and the regime map's
+/// cursors alike.
+pub fn stepped(
+    action: Action,
+    cell: Option<(usize, usize)>,
+    dims: (usize, usize),
+    start: impl FnOnce() -> (usize, usize),
+) -> (Option<(usize, usize)>, Option<Said>) {
+    match (action, cell) {
+        (Action::Cursor, Some(_)) => (None, Some(Said::Off)),
+        (Action::Cursor, None) => (Some(start()), Some(Said::On)),
+        (Action::MoveCursor(step), Some(at)) => (Some(moved(at, step, dims)), None),
+        (_, cell) => (cell, Some(Said::NotShown)),
+    }
 }
 
 /// A grid cursor (column, row) on a grid of `nx` x `ny` points after `[ ]` (a step of 1: a point
