@@ -1,7 +1,7 @@
 //! The explorer's speed: drawing the full screen at 120x40; a keystroke that re-solves (update,
 //! the engine's stages, draw), each iteration at a load never solved before; and a load nudge on
 //! the wide model through the real loop (key into the channel, the worker thread, the answer back,
-//! the draw) until the new operating point is on screen; in partial contact (issue 14), an edit of
+//! the draw) until the new operating point is on screen; in partial contact , an edit of
 //! the mean pressure through the same loop until the first partial-contact state is on screen
 //! (closed form, the start of a running-in: one contact solve, the state at t), the previous
 //! running-in dropped by the key. Target: under 100 ms.
@@ -16,29 +16,7 @@ use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 use wearlab::engine::{Answer, Engine, Output};
 use wearlab::preset::{Preset, bundled};
-
-// The explorer lives in the binary; the bench compiles the same modules (not the terminal set-up
-// and not the tests). Parts it does not call are allowed to be unused here.
-#[allow(dead_code)]
-#[path = "../src/tui"]
-mod tui {
-    pub mod actions;
-    pub mod app;
-    pub mod backend;
-    pub mod chart_keys;
-    pub mod charts;
-    pub mod effects;
-    pub mod event_loop;
-    pub mod explore;
-    pub mod form;
-    pub mod glossary;
-    pub mod keys;
-    pub mod map_cursor;
-    pub mod prompt_keys;
-    pub mod sweep_form;
-    pub mod update;
-    pub mod view;
-}
+use wearlab::tui;
 
 use tui::app::{App, Command, Msg, Places};
 use tui::event_loop::{Loop, Wake};

@@ -1,5 +1,7 @@
 //! wearlab: sliding contact with friction and wear — the physics, the preset files and the
-//! reports. No terminal code lives here.
+//! reports, and (with the default feature `explorer`) the terminal explorer in [`tui`]. Nothing
+//! outside `tui` uses terminal code: without the feature the library builds without ratatui and
+//! crossterm.
 
 pub mod engine;
 pub mod explore;
@@ -8,4 +10,6 @@ pub mod physics;
 pub mod preset;
 pub mod report;
 pub mod spatial_report;
+#[cfg(feature = "explorer")]
+pub mod tui;
 pub mod units;

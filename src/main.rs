@@ -7,12 +7,11 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand, ValueEnum};
 
 mod cli;
-mod tui;
 
 use wearlab::physics::SolveError;
 use wearlab::physics::limits::{self, Limit};
 use wearlab::preset::{self, Preset, Problem};
-use wearlab::{finite, report, spatial_report};
+use wearlab::{finite, report, spatial_report, tui};
 
 /// Exit code when the result could not be written (closed pipe, full disk).
 const EXIT_OUTPUT: u8 = 1;

@@ -1,7 +1,7 @@
 //! What each action of the key table does to the model (part of `update`: pure).
 
-use wearlab::physics::spatial::harmonic::Harmonic;
-use wearlab::preset::{Key, Preset, Problem};
+use crate::physics::spatial::harmonic::Harmonic;
+use crate::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
 use crate::tui::chart_keys;
@@ -14,7 +14,7 @@ use crate::tui::map_cursor;
 use crate::tui::sweep_form;
 
 /// The most harmonics a punch has (`limits::HARMONICS`).
-pub const MAX_HARMONICS: usize = wearlab::physics::limits::HARMONICS.max as usize;
+pub const MAX_HARMONICS: usize = crate::physics::limits::HARMONICS.max as usize;
 
 /// Carries out an action of the main screen.
 pub fn act(app: &mut App, action: Action) -> Vec<Command> {

@@ -3,17 +3,17 @@
 
 use std::path::PathBuf;
 
+use crate::engine::{Answer, Request};
+use crate::preset::{Preset, Problem, SaveTarget};
 use ratatui::crossterm::event::KeyEvent;
-use wearlab::engine::{Answer, Request};
-use wearlab::preset::{Preset, Problem, SaveTarget};
 
+use crate::engine::explore::{ExploreAnswer, ExploreRequest};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::explore::Explore;
 use crate::tui::form::{self, Change, Row};
 use crate::tui::sweep_form::SweepForm;
 use crate::tui::view::MIN_SIZE;
-use wearlab::engine::explore::{ExploreAnswer, ExploreRequest};
 
 /// The preset being edited and its history.
 #[derive(Clone, Debug)]

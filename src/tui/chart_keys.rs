@@ -1,7 +1,7 @@
 //! What the chart keys do to the model (part of `update`: pure): the cursor readout, pins, the
 //! expanded chart and the log y axis.
 
-use wearlab::engine::Output;
+use crate::engine::Output;
 
 use crate::tui::app::{App, Command, HeatScale, Pin};
 use crate::tui::charts::contact::Fields;
@@ -192,14 +192,14 @@ fn log_y(app: &mut App) {
             Scale::Linear if toggled && constant(f).is_some() => format!(
                 "{} stays linear (one value, {})",
                 f.plot.y.label,
-                wearlab::units::format_si(constant(f).unwrap_or_default(), f.plot.y.unit)
+                crate::units::format_si(constant(f).unwrap_or_default(), f.plot.y.unit)
             ),
             Scale::Linear => format!("{} linear", f.plot.y.label),
             Scale::Log => format!("{} logarithmic", f.plot.y.label),
             Scale::SymLog(c) => format!(
                 "{} symmetric log (linear within ±{})",
                 f.plot.y.label,
-                wearlab::units::format_si(c, f.plot.y.unit)
+                crate::units::format_si(c, f.plot.y.unit)
             ),
         })
         .collect();

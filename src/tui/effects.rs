@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use wearlab::preset::{self, BUNDLED, Preset, SaveTarget};
+use crate::preset::{self, BUNDLED, Preset, SaveTarget};
 
 use crate::tui::app::{Msg, PickerEntry};
 

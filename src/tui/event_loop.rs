@@ -6,11 +6,11 @@ use std::io;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender};
 use std::time::{Duration, Instant};
 
+use crate::engine::explore::{ExploreAnswer, Explorer};
+use crate::engine::{Answer, Worker};
 use ratatui::Terminal;
 use ratatui::backend::Backend;
 use ratatui::crossterm::event::{Event, KeyEventKind};
-use wearlab::engine::explore::{ExploreAnswer, Explorer};
-use wearlab::engine::{Answer, Worker};
 
 use crate::tui::app::{App, Command, Msg};
 use crate::tui::effects;

@@ -4,12 +4,12 @@
 //! friction and wear coefficients), the dimensionless view, the map's cursor, and the requests
 //! to the explorer's thread (`engine::explore`), one whenever what should be shown changes.
 
-use wearlab::engine::explore::{ExploreAnswer, ExploreRequest};
-use wearlab::explore::axis::{Axis, GRID_POINTS};
-use wearlab::explore::curve::CurveSpec;
-use wearlab::explore::map::MapSpec;
-use wearlab::explore::{Opening, QuantityKey, models, opening};
-use wearlab::preset::{Key, Preset, Problem};
+use crate::engine::explore::{ExploreAnswer, ExploreRequest};
+use crate::explore::axis::{Axis, GRID_POINTS};
+use crate::explore::curve::CurveSpec;
+use crate::explore::map::MapSpec;
+use crate::explore::{Opening, QuantityKey, models, opening};
+use crate::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command};
 use crate::tui::keys::Action;
@@ -118,7 +118,7 @@ pub fn curve_spec(app: &App) -> Option<CurveSpec> {
                 Problem::Plane => "plane.load",
                 Problem::Spatial => "spatial.mean_pressure",
             };
-            let points = wearlab::explore::axis::CURVE_POINTS;
+            let points = crate::explore::axis::CURVE_POINTS;
             (
                 default_axis(preset, key, points)?,
                 quantity(preset, "mu_star")?,
@@ -262,7 +262,7 @@ pub fn move_cell(app: &mut App, action: Action) {
 /// student's own point.
 fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
     let (answer, _) = shown(app)?;
-    let wearlab::engine::explore::Explored::Map(map) = &answer.explored else {
+    let crate::engine::explore::Explored::Map(map) = &answer.explored else {
         return None;
     };
     let nearest = |values: &[f64], at: f64, log: bool| {
@@ -276,7 +276,7 @@ fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
             d(i).total_cmp(&d(j))
         })
     };
-    let log = |a: &Axis| a.range.spacing == wearlab::physics::Spacing::Log;
+    let log = |a: &Axis| a.range.spacing == crate::physics::Spacing::Log;
     Some((
         nearest(&map.x, map.current[0], log(&spec.x))?,
         nearest(&map.y, map.current[1], log(&spec.y))?,
@@ -320,7 +320,7 @@ pub fn not_here(app: &App) -> String {
 /// sweep on screen.
 pub fn vary(axis: &Axis) -> String {
     let r = &axis.range;
-    let log = if r.spacing == wearlab::physics::Spacing::Log {
+    let log = if r.spacing == crate::physics::Spacing::Log {
         ":log"
     } else {
         ""
@@ -328,8 +328,8 @@ pub fn vary(axis: &Axis) -> String {
     format!(
         "--vary {}={}:{}:{}{log}",
         axis.key,
-        wearlab::physics::limits::show(r.min),
-        wearlab::physics::limits::show(r.max),
+        crate::physics::limits::show(r.min),
+        crate::physics::limits::show(r.max),
         r.points
     )
 }

@@ -3,8 +3,8 @@
 //! only the explorer needs: how Left/Right nudge each parameter. A new parameter is one entry of
 //! the registry and one of `STEPS`.
 
-use wearlab::preset::{Key, Preset};
-use wearlab::units::{clean, format_si};
+use crate::preset::{Key, Preset};
+use crate::units::{clean, format_si};
 
 /// How Left/Right change a number.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,8 +2,8 @@
 
 use std::sync::LazyLock;
 
-use wearlab::explore::quantity::{by_name, problem_groups};
-use wearlab::preset::Problem;
+use crate::explore::quantity::{by_name, problem_groups};
+use crate::preset::Problem;
 
 /// One symbol: how the status writes it, its unit, what it is.
 pub type Entry = (&'static str, &'static str, &'static str);

@@ -2,8 +2,8 @@
 //! line, footer item) here, the keys of the prompts in `prompt_keys` (re-exported). Key handling,
 //! the `?` help, the footers and README's key table are all drawn from these tables.
 
+use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::preset::Problem;
 
 use crate::tui::view::RenderOptions;
 

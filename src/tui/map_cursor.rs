@@ -99,12 +99,12 @@ pub fn readout(map: &Map, at: (usize, usize)) -> Vec<String> {
         _ => format!(
             "{} = {}",
             heatmap::SYMBOL,
-            wearlab::units::format_si(v, map.unit)
+            crate::units::format_si(v, map.unit)
         ),
     };
     vec![
-        format!("cursor x = {}", wearlab::units::format_si(map.x[i], "m")),
-        format!("y = {}:", wearlab::units::format_si(map.y[j], "m")),
+        format!("cursor x = {}", crate::units::format_si(map.x[i], "m")),
+        format!("y = {}:", crate::units::format_si(map.y[j], "m")),
         value,
     ]
 }

@@ -26,10 +26,10 @@ use std::io;
 use std::path::PathBuf;
 use std::sync::mpsc::channel;
 
+use crate::preset::Preset;
 use ratatui::Terminal;
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture};
 use ratatui::crossterm::execute;
-use wearlab::preset::Preset;
 
 use app::{App, Places};
 use backend::Compact;

@@ -5,18 +5,18 @@
 //! the library (`explore::Axis::new`) and either shows the sweep or the map, or says what is
 //! wrong and what is allowed, the form staying open for the correction.
 
-use wearlab::explore::{Axis, QuantityKey};
-use wearlab::physics::Spacing;
-use wearlab::physics::limits;
-use wearlab::preset::Key;
-use wearlab::units::{format_si_exact, parse_si};
+use crate::explore::{Axis, QuantityKey};
+use crate::physics::Spacing;
+use crate::physics::limits;
+use crate::preset::Key;
+use crate::units::{format_si_exact, parse_si};
 
+use crate::explore::curve::CurveSpec;
+use crate::explore::map::MapSpec;
 use crate::tui::app::{App, Command, Mode};
 use crate::tui::explore::{View, curve_spec, map_spec, parameters, quantities};
 use crate::tui::keys::{self, Prompt, PromptAction};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::explore::curve::CurveSpec;
-use wearlab::explore::map::MapSpec;
 
 /// One axis as typed.
 #[derive(Clone, Debug, PartialEq)]
@@ -248,7 +248,7 @@ fn accept(app: &mut App, form: SweepForm) -> Vec<Command> {
             app.explore.curve = Some(CurveSpec {
                 axis: axes[0],
                 quantity: form.quantity,
-                models: wearlab::explore::models(preset, &axes[0]),
+                models: crate::explore::models(preset, &axes[0]),
             });
         }
         View::Map => {

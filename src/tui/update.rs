@@ -2,9 +2,9 @@
 //! never solves and never touches a file; it returns the commands the loop carries out, and the
 //! loop reports back with messages (`Answer`, `PresetsListed`, `Saved`, `Exported`, ...).
 
+use crate::engine::Answer;
+use crate::preset::{Problem, resolve_save_path};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::Answer;
-use wearlab::preset::{Problem, resolve_save_path};
 
 use crate::tui::actions::{act, apply, export, open, quit};
 use crate::tui::app::{App, Command, Mode, Msg};

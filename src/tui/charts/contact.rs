@@ -3,12 +3,12 @@
 //! over the whole range. `fields` decides, for every chart, whether the closed form of the
 //! harmonics holds at t or the nodes of the cell are drawn.
 
-use wearlab::engine::{CellOutput, SpatialOutput};
-use wearlab::physics::SolveError;
-use wearlab::physics::spatial::partial::state::State;
-use wearlab::physics::spatial::partial::sweep::LoadCurve;
-use wearlab::preset::Preset;
-use wearlab::units::format_si;
+use crate::engine::{CellOutput, SpatialOutput};
+use crate::physics::SolveError;
+use crate::physics::spatial::partial::state::State;
+use crate::physics::spatial::partial::sweep::LoadCurve;
+use crate::preset::Preset;
+use crate::units::format_si;
 
 use crate::tui::charts::{Axis, Figure, Map, Mark, NoFigure, Plot, Scale, Series, axis};
 

@@ -2,8 +2,8 @@
 //! figure the view draws, both naming the parameters they were computed from (the answered
 //! request's preset): the CSV in comment lines (TOML), the SVG in its caption.
 
-use wearlab::engine::Answer;
-use wearlab::preset::{Preset, to_toml};
+use crate::engine::Answer;
+use crate::preset::{Preset, to_toml};
 
 use crate::tui::charts::svg::{Page, svg as draw_svg};
 use crate::tui::charts::{Axis, Chart, Figure, NoFigure, Plot};

@@ -14,8 +14,8 @@ pub mod svg;
 pub mod sweep;
 pub mod ticks;
 
-use wearlab::engine::{Answer, Output, PlaneOutput, SpatialOutput};
-use wearlab::preset::{Preset, Problem};
+use crate::engine::{Answer, Output, PlaneOutput, SpatialOutput};
+use crate::preset::{Preset, Problem};
 
 pub use ticks::Scale;
 

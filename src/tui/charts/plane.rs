@@ -1,10 +1,10 @@
 //! The builders of the plane charts: from an engine answer to what is drawn.
 
-use wearlab::engine::PlaneOutput;
-use wearlab::physics::Spacing;
-use wearlab::physics::plane::OperatingPoint;
-use wearlab::physics::plane::sweep::Sweep;
-use wearlab::preset::Preset;
+use crate::engine::PlaneOutput;
+use crate::physics::Spacing;
+use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::sweep::Sweep;
+use crate::preset::Preset;
 
 use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, zip};
 

@@ -1,6 +1,6 @@
 //! The cursor readout: the x under the cursor and every curve's value there, with units.
 
-use wearlab::units::{format_si, prefixable};
+use crate::units::{format_si, prefixable};
 
 use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::{Scale, Series};

@@ -1,9 +1,9 @@
 //! The builders of the spatial charts: from an engine answer to what is drawn.
 
-use wearlab::engine::SpatialOutput;
-use wearlab::physics::Spacing;
-use wearlab::preset::Preset;
-use wearlab::units::format_si;
+use crate::engine::SpatialOutput;
+use crate::physics::Spacing;
+use crate::preset::Preset;
+use crate::units::format_si;
 
 use crate::tui::charts::contact::{self, Fields};
 use crate::tui::charts::{Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, zip};

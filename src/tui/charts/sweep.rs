@@ -9,9 +9,9 @@
 //! interpolated between the neighbouring points; an input without a group keeps its dimensional
 //! axis, titled so.
 
-use wearlab::explore::curve::{Curve, CurveSpec};
-use wearlab::physics::Spacing;
-use wearlab::preset::{Key, Problem};
+use crate::explore::curve::{Curve, CurveSpec};
+use crate::physics::Spacing;
+use crate::preset::{Key, Problem};
 
 use crate::tui::charts::{Axis, Figure, Mark, Plot, Scale, Series};
 

@@ -6,7 +6,7 @@
 
 use std::f64::consts::LN_10;
 
-use wearlab::units::{prefix, prefixable};
+use crate::units::{prefix, prefixable};
 
 /// How values are placed along an axis.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -105,7 +105,7 @@ fn every_screen_of_the_problem(app: &mut App, file: &str) {
 
 #[test]
 fn with_ascii_every_cell_of_every_screen_is_ascii() {
-    for b in wearlab::preset::BUNDLED {
+    for b in crate::preset::BUNDLED {
         let mut app = app(b.file);
         let cmds = app.start();
         settle(&mut app, cmds.clone());

@@ -78,7 +78,7 @@ fn check(app: &App, w: u16, h: u16, what: &str) -> bool {
 #[test]
 fn every_x_tick_has_its_value_a_log_axis_says_so_and_legends_avoid_data() {
     let mut covering = Vec::new();
-    for b in wearlab::preset::BUNDLED {
+    for b in crate::preset::BUNDLED {
         let mut app = app(b.file);
         let cmds = app.start();
         settle(&mut app, cmds);

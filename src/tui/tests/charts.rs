@@ -2,8 +2,8 @@
 //! with units in its column names, the SVG (parsed as XML) with its axis titles, ticks, legend
 //! and caption as text.
 
-use wearlab::engine::{Answer, Engine, Request};
-use wearlab::preset::{Problem, parse};
+use crate::engine::{Answer, Engine, Request};
+use crate::preset::{Problem, parse};
 
 use super::*;
 use crate::tui::charts::export::{Format, csv, file_name, svg};
@@ -215,7 +215,7 @@ fn the_svg_holds_the_pins_and_the_toggled_axis() {
 fn without_a_duration_the_time_charts_span_five_of_the_slowest_decay_times() {
     // the case: the default spatial side of a plane preset (1/beta = 4.68 ms against
     // the old fixed 200 s); and wave-thick-layer.toml with its duration line taken out
-    let text = wearlab::preset::BUNDLED
+    let text = crate::preset::BUNDLED
         .iter()
         .find(|b| b.file == "wave-thick-layer.toml")
         .unwrap()

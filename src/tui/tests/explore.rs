@@ -3,8 +3,8 @@
 
 use std::sync::atomic::AtomicBool;
 
+use crate::engine::explore::{ExploreAnswer, Explored, explore};
 use ratatui::crossterm::event::KeyCode;
-use wearlab::engine::explore::{ExploreAnswer, Explored, explore};
 
 use super::*;
 use crate::tui::app::Mode;
@@ -252,7 +252,7 @@ fn the_map_cursor_reads_mu_star_with_six_decimals() {
     // a map of mu* (not mu* - mu): the cursor gives mu* as the status does, six decimals, so
     // that mu* - mu reads off (friction-or-wear-map's mu* is 0.2998 to four digits, beside 0.3)
     let mut preset = bundled("friction-or-wear-map.toml");
-    let mu_star = wearlab::explore::QuantityKey::parse("mu_star", &preset).unwrap();
+    let mu_star = crate::explore::QuantityKey::parse("mu_star", &preset).unwrap();
     let section = preset.explore.as_mut().unwrap();
     section.quantity = mu_star;
     for axis in &mut section.axes {
@@ -281,7 +281,7 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
     // every numeric input of every bundled preset: the v form opens on a range that Enter
     // accepts as shown, and e names `--vary` ends that read back to that very sweep, in at most
     // 12 significant digits (units::CLEAN_DIGITS) - no 0.4999999999999999 nor 1.0000000000000002e-6
-    for b in wearlab::preset::BUNDLED {
+    for b in crate::preset::BUNDLED {
         let mut app = app(b.file);
         let count = crate::tui::explore::parameters(&app.doc.preset).len();
         for n in 0..count {
@@ -309,7 +309,7 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
             let said = app.ui.message.clone().unwrap().text;
             let vary = said.split("--vary ").nth(1).expect(&said);
             let vary = vary.split_whitespace().next().unwrap();
-            let back = wearlab::explore::Axis::parse(&app.doc.preset, vary, 1).unwrap();
+            let back = crate::explore::Axis::parse(&app.doc.preset, vary, 1).unwrap();
             assert_eq!(back, shown, "{}: {vary}", b.file);
             let (_, range) = vary.split_once('=').unwrap();
             for end in range.split(':').take(2) {

@@ -1,7 +1,7 @@
 //! `update` for the actions that reach files (open, save, export) and for quitting.
 
+use crate::preset::SaveTarget;
 use ratatui::crossterm::event::KeyCode;
-use wearlab::preset::SaveTarget;
 
 use super::update::message;
 use super::*;
@@ -318,7 +318,7 @@ fn the_picker_shows_every_description_whole() {
 fn a_preset_of_the_users_folder_is_listed_by_its_file_and_its_name() {
     // a saved copy of a bundled preset keeps the bundled name: the list says which file it is
     let dir = tempfile::tempdir().unwrap();
-    let text = wearlab::preset::BUNDLED[1].text;
+    let text = crate::preset::BUNDLED[1].text;
     std::fs::write(dir.path().join("my lab.toml"), text).unwrap();
     std::fs::write(dir.path().join("broken.toml"), "schema = ").unwrap();
     let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(Some(dir.path())) else {

@@ -4,9 +4,9 @@
 use ratatui::crossterm::event::KeyCode;
 
 use super::*;
+use crate::explore::quantity::problem_groups;
+use crate::preset::Problem;
 use crate::tui::view::popups::help_lines;
-use wearlab::explore::quantity::problem_groups;
-use wearlab::preset::Problem;
 
 #[test]
 fn d_shows_the_status_in_groups_and_back() {

@@ -2,8 +2,8 @@
 
 use std::collections::HashSet;
 
-use wearlab::physics::plane::Model;
-use wearlab::preset::Problem;
+use crate::physics::plane::Model;
+use crate::preset::Problem;
 
 use super::{ASCII, PLAIN};
 use crate::tui::keys::{Action, BINDINGS, Prompt, footer, lookup, prompt_footer};

@@ -7,7 +7,7 @@ use ratatui::crossterm::event::KeyCode;
 use super::*;
 use crate::tui::charts::Map;
 use crate::tui::map_cursor::{self, readout};
-use wearlab::units::format_si;
+use crate::units::format_si;
 
 /// A 3 x 2 map whose every value differs (units of Pa), one of them no contact.
 fn small() -> Map {

@@ -22,18 +22,18 @@ mod update;
 mod validity;
 mod widgets;
 
+use crate::engine::{Answer, Engine};
+use crate::preset::Preset;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::{Answer, Engine};
-use wearlab::preset::Preset;
 
 use crate::tui::app::{App, Command, Msg, Places};
 use crate::tui::update::update;
 use crate::tui::view::{RenderOptions, view};
 
 fn bundled(file: &str) -> Preset {
-    wearlab::preset::bundled(file).unwrap().unwrap()
+    crate::preset::bundled(file).unwrap().unwrap()
 }
 
 fn app(file: &str) -> App {

@@ -2,9 +2,9 @@
 //! would before they were accepted; time replaying the cached running-in; progress while it is
 //! stepped; the zones out of contact drawn apart, with and without colour.
 
+use crate::engine::{Engine, Output, Progress};
 use ratatui::crossterm::event::KeyCode;
 use ratatui::style::Color;
-use wearlab::engine::{Engine, Output, Progress};
 
 use super::*;
 use crate::tui::charts::{Chart, Figure, SpatialChart};

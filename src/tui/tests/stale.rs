@@ -4,8 +4,8 @@
 use std::sync::mpsc::channel;
 use std::time::{Duration, Instant};
 
+use crate::engine::{Engine, Output};
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
-use wearlab::engine::{Engine, Output};
 
 use super::*;
 use crate::tui::app::PickerEntry;

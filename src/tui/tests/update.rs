@@ -1,8 +1,8 @@
 //! `update` for every action of the key table, and the prompts.
 
+use crate::physics::Spacing;
+use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use wearlab::physics::Spacing;
-use wearlab::preset::Problem;
 
 use super::*;
 use crate::tui::actions::MAX_HARMONICS;
@@ -324,7 +324,7 @@ fn help_scrolling_stops_at_the_end_of_the_text() {
 #[test]
 fn every_parameter_of_the_registry_has_its_nudge() {
     use crate::tui::form::{STEPS, Step};
-    for p in wearlab::preset::PARAMS {
+    for p in crate::preset::PARAMS {
         let step = STEPS.iter().find(|(k, _)| *k == p.key).map(|(_, s)| *s);
         let choice = p.choices().is_some();
         assert!(
@@ -335,7 +335,7 @@ fn every_parameter_of_the_registry_has_its_nudge() {
     }
     assert_eq!(
         STEPS.len(),
-        wearlab::preset::PARAMS.len(),
+        crate::preset::PARAMS.len(),
         "no step for a parameter that is gone"
     );
 }

@@ -4,10 +4,10 @@
 //! plot the x tick labels with the x axis title at their right. Nothing is written on a data
 //! cell: the legend goes in the header, else in an empty corner, else in rows of its own.
 
+use crate::units::format_si;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
-use wearlab::units::format_si;
 
 use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::readout::short_name;

@@ -2,11 +2,11 @@
 //! contact fraction, p_max, mu* and psi of the state shown, and where the running-in stands
 //! (stepping, with the simulated time reached, or the simulated time to complete contact).
 
+use crate::engine::{CellOutput, Progress};
+use crate::physics::spatial::SpatialSolution;
+use crate::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
+use crate::units::format_si;
 use ratatui::text::Line;
-use wearlab::engine::{CellOutput, Progress};
-use wearlab::physics::spatial::SpatialSolution;
-use wearlab::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
-use wearlab::units::format_si;
 
 use crate::tui::view::status::{mu_star, pack};
 use crate::tui::view::theme::RenderOptions;

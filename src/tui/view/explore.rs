@@ -5,15 +5,15 @@
 //! sit next to what they describe. The status's readout of the sweep's or the map's cursor is
 //! here too.
 
+use crate::engine::explore::Explored;
+use crate::explore::groups::of_input;
+use crate::explore::{Opening, opening};
+use crate::units::format_si;
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
-use wearlab::engine::explore::Explored;
-use wearlab::explore::groups::of_input;
-use wearlab::explore::{Opening, opening};
-use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::range::{self, frames};
@@ -320,7 +320,7 @@ pub fn form(form: &SweepForm, style: RenderOptions, frame: &mut Frame, area: Rec
         }
         Field::Points(_) => format!(
             "points: allowed {}",
-            wearlab::physics::limits::SWEEP_POINTS.allowed
+            crate::physics::limits::SWEEP_POINTS.allowed
         ),
         Field::Quantity => {
             let q = form.quantity.quantity();

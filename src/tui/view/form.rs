@@ -1,11 +1,11 @@
 //! The form panel: the parameters grouped under headings, the selected row highlighted (showing
 //! the text being typed), scrolled to keep the selection visible.
 
+use crate::preset::Problem;
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph};
-use wearlab::preset::Problem;
 
 use crate::tui::app::{App, Mode};
 use crate::tui::form;

@@ -2,11 +2,11 @@
 //! a group the library computes (`explore::groups`), never a dimensional value, and the panel's
 //! title says "groups". `?` defines each group.
 
+use crate::engine::{Output, SpatialOutput};
+use crate::explore::groups::{self, Group};
+use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::validity::StripCheck;
 use ratatui::text::Line;
-use wearlab::engine::{Output, SpatialOutput};
-use wearlab::explore::groups::{self, Group};
-use wearlab::physics::plane::OperatingPoint;
-use wearlab::physics::plane::validity::StripCheck;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;

@@ -21,13 +21,13 @@ pub mod status;
 pub mod theme;
 pub mod validity_status;
 
+use crate::engine::Answer;
+use crate::explore::quantity::problem_groups;
+use crate::preset::{Preset, Problem};
 use ratatui::Frame;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
-use wearlab::engine::Answer;
-use wearlab::explore::quantity::problem_groups;
-use wearlab::preset::{Preset, Problem};
 
 use crate::tui::app::{App, Mode};
 use crate::tui::charts::{Figure, NoFigure, Plot, range};

@@ -5,12 +5,12 @@
 //! where complete contact is lost; `+` the preset's own point, `X` the cursor. While the map is
 //! coarse, each cell shows the nearest computed point.
 
+use crate::explore::map::{LineKind, Map, MapSpec};
+use crate::physics::Spacing;
+use crate::units::format_si;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
-use wearlab::explore::map::{LineKind, Map, MapSpec};
-use wearlab::physics::Spacing;
-use wearlab::units::format_si;
 
 use crate::tui::charts::Scale;
 use crate::tui::charts::palette::level;
@@ -69,7 +69,7 @@ pub fn draw(
     if nx < 2 || ny < 2 || area.width < LEFT + BAR + 8 || area.height < 6 {
         return;
     }
-    let lines_used: Vec<&wearlab::explore::map::Line> = map
+    let lines_used: Vec<&crate::explore::map::Line> = map
         .lines
         .iter()
         .filter(|l| !l.segments.is_empty())
@@ -139,8 +139,8 @@ pub fn draw(
             for k in 0..=16 {
                 let u = k as f64 / 16.0;
                 // in the axes' own spacing, so a segment on a log axis stays straight
-                let x = wearlab::explore::locate::between(spec.x.range.spacing, a[0], b[0], u);
-                let y = wearlab::explore::locate::between(spec.y.range.spacing, a[1], b[1], u);
+                let x = crate::explore::locate::between(spec.x.range.spacing, a[0], b[0], u);
+                let y = crate::explore::locate::between(spec.y.range.spacing, a[1], b[1], u);
                 if let Some(p) = at(x, y) {
                     buf[p].set_char(glyph).set_style(ink);
                 }

@@ -2,15 +2,15 @@
 //! inputs (never from the form). Values are packed into lines whole, never broken across lines;
 //! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
 
+use crate::engine::{Answer, Output, SpatialOutput};
+use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
+use crate::physics::plane::validity::StripCheck;
+use crate::units::format_si;
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
-use wearlab::engine::{Answer, Output, SpatialOutput};
-use wearlab::physics::plane::OperatingPoint;
-use wearlab::physics::plane::energy::RESIDUAL_ROUND_OFF;
-use wearlab::physics::plane::validity::StripCheck;
-use wearlab::units::format_si;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;

@@ -3,9 +3,9 @@
 //! after the operating point (`plane::validity::StripCheck`). Every word and number comes from
 //! the library; this module only lays them out.
 
+use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::validity::StripCheck;
 use ratatui::text::Line;
-use wearlab::physics::plane::OperatingPoint;
-use wearlab::physics::plane::validity::StripCheck;
 
 use crate::tui::view::status::{number, prose};
 use crate::tui::view::theme::RenderOptions;

@@ -4,11 +4,11 @@
 
 mod map;
 
+use crate::units::format_si;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use wearlab::units::format_si;
 
 use crate::tui::charts::range::{Frame, bounds, clip, frames, plotted};
 use crate::tui::charts::ticks::{Ticks, ticks};
