@@ -54,7 +54,7 @@ impl Checker<'_> {
 pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
     let ck = Checker { path, text };
     let file: FilePreset = toml::from_str(text).map_err(|e| {
-        let before = &text[..e.span().map_or(0, |s| s.start.min(text.len()))];
+        let before = wording::text_before(text, e.span().map_or(0, |s| s.start));
         ck.error(e.span(), wording::reason(e.message(), before))
     })?;
     if *file.schema.get_ref() != SCHEMA {

@@ -62,10 +62,23 @@ fn key_before(before: &str) -> Option<&str> {
     let line = before.rsplit('\n').next().unwrap_or(before);
     let (left, _) = line.rsplit_once('=')?;
     let left = left.trim_end();
+    // the key starts after the last character that cannot be in a bare key, whatever its width
     let start = left
-        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '-'))
-        .map_or(0, |i| i + 1);
+        .char_indices()
+        .rev()
+        .find(|&(_, c)| !(c.is_ascii_alphanumeric() || c == '_' || c == '-'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
     Some(&left[start..]).filter(|k| !k.is_empty())
+}
+
+/// The text before byte `offset`, cut at the character boundary at or before it: a reader's
+/// position may fall inside a multi-byte character of a malformed file.
+pub(super) fn text_before(text: &str, offset: usize) -> &str {
+    let end = (0..=offset.min(text.len()))
+        .rev()
+        .find(|&i| text.is_char_boundary(i))
+        .unwrap_or(0);
+    &text[..end]
 }
 
 fn found_words(found: &str) -> String {
@@ -209,5 +222,16 @@ mod tests {
         for (message, before, words) in cases {
             assert_eq!(reason(message, before), words);
         }
+    }
+
+    #[test]
+    fn keys_and_positions_next_to_multibyte_characters() {
+        assert_eq!(key_before("name = \"a\u{e9}="), None);
+        assert_eq!(key_before("\u{e9}radius = "), Some("radius"));
+        assert_eq!(key_before("x\u{1F600}load = "), Some("load"));
+        let text = "a\u{20ac}b";
+        assert_eq!(text_before(text, 2), "a");
+        assert_eq!(text_before(text, 4), "a\u{20ac}");
+        assert_eq!(text_before(text, 99), text);
     }
 }
