@@ -1,4 +1,11 @@
-//! The energy identity I = J of paper 001 (2.9), evaluated numerically from the solved q1, q2.
+//! The energy identity I = J of Soldatenkov (2007) (2.9) and the energy losses of its section 2,
+//! evaluated numerically from the solved q1, q2.
+//!
+//! Per unit sliding speed (N/m: power per unit speed), the work of the tangential force T splits
+//! into the friction loss D1/V0 = Q1 + I (2.5) and the wear loss DW/V0 = psi - J (2.7);
+//! T = D1/V0 + DW/V0 exactly when I = J (2.8)-(2.9). The wear loss is also the integral of
+//! q2 F(q2) = k q2^2 (the contact condition, docs/physics/plane.md), which checks the solution
+//! against the contact condition independently of I = J.
 //!
 //! I = integral of q1 u', J = integral of q2 v' over [-a, b]. The derivatives u', v' come from the
 //! kernel of the model, not from the closed-form identity: for the wide strip (4.1),
@@ -28,6 +35,18 @@ pub struct Energy {
     /// |I - J| / max(|I|, |J|, W), with W = integral (|q1 u'| + |q2 v'|) dx the gross work, so that
     /// the Winkler case I = J = 0 reads as a small number rather than 0/0. Dimensionless.
     pub residual: f64,
+    /// Friction loss D1/V0 = Q1 + I [N/m] (2.5): the power dissipated by friction per unit
+    /// sliding speed, >= 0.
+    pub friction_loss: f64,
+    /// Wear loss DW/V0 = psi - J [N/m] (2.7): the power spent on wear per unit sliding speed,
+    /// >= 0 (0 without wear).
+    pub wear_loss: f64,
+    /// External work T [N/m] (3.11): the power of the tangential force per unit sliding speed;
+    /// equals friction_loss + wear_loss when I = J.
+    pub external: f64,
+    /// |psi - J - k integral q2^2| relative to the larger of |T| and the gross work: how well the
+    /// solution satisfies the contact condition (the wear loss computed two ways). Dimensionless.
+    pub contact_residual: f64,
 }
 
 /// The residual's round-off floor (dimensionless): I and J are sums of some hundreds of
@@ -124,7 +143,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
             })
         }
     };
-    let (mut i, mut j, mut gross) = (0.0, 0.0, 0.0);
+    let (mut i, mut j, mut gross, mut q2_squared) = (0.0, 0.0, 0.0, 0.0);
     let half = 0.5 * l;
     for (t, w) in rule.nodes.iter().zip(&rule.weights) {
         let u = if *t < 0.0 {
@@ -137,11 +156,19 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         i += w * half * a;
         j += w * half * b;
         gross += w * half * (a.abs() + b.abs());
+        q2_squared += w * half * q2(u) * q2(u);
     }
     let scale = i.abs().max(j.abs()).max(gross).max(f64::MIN_POSITIVE);
+    let wear_loss = sol.psi - j;
+    let direct_wear_loss = inputs.wear * q2_squared;
+    let contact_scale = sol.tangential_force.abs().max(gross).max(f64::MIN_POSITIVE);
     Energy {
         i,
         j,
         residual: (i - j).abs() / scale,
+        friction_loss: sol.friction_force + i,
+        wear_loss,
+        external: sol.tangential_force,
+        contact_residual: (wear_loss - direct_wear_loss).abs() / contact_scale,
     }
 }
