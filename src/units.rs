@@ -14,6 +14,30 @@ const PREFIXES: [(&str, i32); 10] = [
     ("T", 12),
 ];
 
+/// Other units a quantity may be typed in, each with the power of ten that takes it to the
+/// quantity's SI unit: a wear coefficient is quoted in the literature and on tribometer reports as
+/// a specific wear rate in mm^3/(N m) (worn volume per normal force and sliding distance), which is
+/// 1e-9 m^2/N = 1e-9 1/Pa; m^2/N is 1/Pa itself.
+const ALTERNATIVES: [(&str, &str, i32); 6] = [
+    ("1/Pa", "mm3/Nm", -9),
+    ("1/Pa", "mm^3/Nm", -9),
+    ("1/Pa", "mm3/(N m)", -9),
+    ("1/Pa", "mm^3/(N m)", -9),
+    ("1/Pa", "m2/N", 0),
+    ("1/Pa", "m^2/N", 0),
+];
+
+/// The other units `unit` may be typed in, for messages ("mm3/Nm, m2/N").
+fn alternatives(unit: &str) -> String {
+    let mut names: Vec<&str> = Vec::new();
+    for (u, alias, _) in ALTERNATIVES {
+        if u == unit && !alias.contains(['^', '(']) {
+            names.push(alias);
+        }
+    }
+    names.join(", ")
+}
+
 /// value * 10^exp, dividing for negative powers so that "2.5 u" is exactly 2.5e-6.
 fn scale(value: f64, exp: i32) -> f64 {
     if exp < 0 {
@@ -165,6 +189,13 @@ pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
     if rest.is_empty() {
         return Ok(number);
     }
+    if let Some((_, _, exp)) = ALTERNATIVES
+        .iter()
+        .find(|(u, alias, _)| *u == unit && rest.eq_ignore_ascii_case(alias))
+    {
+        // rounded to the decimal the user typed: 0.02 mm3/Nm is exactly the literal 2e-11
+        return Ok(clean(scale(number, *exp)));
+    }
     let rest = rest
         .strip_suffix(unit)
         .filter(|_| !unit.is_empty())
@@ -175,9 +206,20 @@ pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
     }
     match PREFIXES.iter().find(|(p, _)| !p.is_empty() && *p == rest) {
         Some((_, exp)) => Ok(scale(number, *exp)),
-        None => Err(format!(
+        None if prefixable(unit) || unit.is_empty() => Err(format!(
             "'{t}': unknown unit; write a plain number or a prefixed {unit} (e.g. k{unit}, M{unit})"
         )),
+        None => {
+            let others = alternatives(unit);
+            let or = if others.is_empty() {
+                String::new()
+            } else {
+                format!(" or in {others}")
+            };
+            Err(format!(
+                "'{t}': unknown unit; write a plain number in {unit}{or}"
+            ))
+        }
     }
 }
 
@@ -268,5 +310,19 @@ mod tests {
         assert!(parse_si("abc", "Pa").unwrap_err().contains("not a number"));
         assert!(parse_si("3 GN", "Pa").unwrap_err().contains("unknown unit"));
         assert!(parse_si("", "Pa").is_err());
+    }
+
+    #[test]
+    fn wear_coefficients_in_specific_wear_rate_units() {
+        // 1 mm^3/(N m) = 1e-9 m^3/(N m) = 1e-9 m^2/N = 1e-9 1/Pa, exactly the literal 1e-9
+        assert_eq!(parse_si("1 mm3/Nm", "1/Pa"), Ok(1e-9));
+        assert_eq!(parse_si("3e-5 mm3/Nm", "1/Pa"), Ok(3e-5 / 1e9));
+        assert_eq!(parse_si("2 mm^3/(N m)", "1/Pa"), Ok(2e-9));
+        assert_eq!(parse_si("2e-11 m2/N", "1/Pa"), Ok(2e-11));
+        assert_eq!(parse_si("2e-11 1/Pa", "1/Pa"), Ok(2e-11));
+        // only where the quantity is a wear coefficient
+        assert!(parse_si("1 mm3/Nm", "Pa").is_err());
+        let why = parse_si("1 mm3/N", "1/Pa").unwrap_err();
+        assert!(why.contains("mm3/Nm, m2/N"), "{why}");
     }
 }

@@ -102,3 +102,31 @@ fn bad_settings_are_exit_2_naming_key_value_and_what_is_allowed() {
         assert!(err.starts_with(message), "{setting}: {err}");
     }
 }
+
+#[test]
+fn a_wear_coefficient_in_mm3_per_newton_metre_is_the_same_as_in_one_over_pascal() {
+    // 0.02 mm^3/(N m) = 0.02e-9 m^2/N = 2e-11 1/Pa
+    let points = ["--points", "5"];
+    let si = run(&[
+        &[
+            "solve",
+            "presets/polymer-coating.toml",
+            "--set",
+            "wear.coefficient=2e-11",
+        ][..],
+        &points,
+    ]
+    .concat());
+    let quoted = run(&[
+        &[
+            "solve",
+            "presets/polymer-coating.toml",
+            "--set",
+            "wear.coefficient=0.02 mm3/Nm",
+        ][..],
+        &points,
+    ]
+    .concat());
+    assert_eq!(si.0, 0, "{}", si.2);
+    assert_eq!(quoted, si);
+}
