@@ -6,13 +6,13 @@ use std::hint::black_box;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use wearlab::explore::axis::Axis;
-use wearlab::explore::curve::{CurveSpec, curve};
-use wearlab::explore::map::{MapSpec, regime_map};
-use wearlab::explore::quantity::QuantityKey;
 use wearlab::physics::Spacing;
 use wearlab::physics::plane::Model;
 use wearlab::preset::{Preset, bundled};
+use wearlab::sweeps::axis::Axis;
+use wearlab::sweeps::curve::{CurveSpec, curve};
+use wearlab::sweeps::map::{MapSpec, regime_map};
+use wearlab::sweeps::quantity::QuantityKey;
 
 fn axis(p: &Preset, key: &str, ends: [f64; 2], n: usize) -> Axis {
     Axis::new(p, p.key(key).unwrap(), ends, n, Spacing::Log).unwrap()

@@ -4,12 +4,12 @@
 //! crossterm.
 
 pub mod engine;
-pub mod explore;
 pub mod finite;
 pub mod physics;
 pub mod preset;
 pub mod report;
 pub mod spatial_report;
+pub mod sweeps;
 #[cfg(feature = "explorer")]
 pub mod tui;
 pub mod units;

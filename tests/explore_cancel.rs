@@ -5,15 +5,15 @@ use std::sync::mpsc::channel;
 use std::time::Duration;
 
 use wearlab::engine::explore::{ExploreRequest, Explorer};
-use wearlab::explore::Opening;
 use wearlab::physics::plane::Model;
 use wearlab::preset::bundled;
+use wearlab::sweeps::Opening;
 
 fn map_request(model: Model) -> ExploreRequest {
     let mut preset = bundled("friction-or-wear-map.toml").unwrap().unwrap();
     preset.plane.model = model;
     preset.material.thickness = 1e-3;
-    let job = match wearlab::explore::opening(&preset).unwrap().unwrap() {
+    let job = match wearlab::sweeps::opening(&preset).unwrap().unwrap() {
         Opening::Map(m) => Opening::Map(m),
         other => panic!("{other:?}"),
     };

@@ -1,19 +1,19 @@
-//! The explorer's curve and map (`explore::curve`, `explore::map`): their lines agree with the
+//! The explorer's curve and map (`sweeps::curve`, `sweeps::map`): their lines agree with the
 //! solver's own verdicts and with the closed forms where there is one; the strip model's sweep
 //! over the thickness meets the wide model and Winkler as `docs/physics/plane.md` says; a map is
 //! coarse first, the same numbers as a sweep, and stops when cancelled.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use wearlab::explore::axis::Axis;
-use wearlab::explore::curve::{CurveSpec, curve, holds, solve_at};
-use wearlab::explore::map::{LineKind, Map, MapSpec, regime_map};
-use wearlab::explore::point::Point;
-use wearlab::explore::quantity::QuantityKey;
-use wearlab::explore::sweep;
 use wearlab::physics::Spacing;
 use wearlab::physics::plane::Model;
 use wearlab::preset::{Preset, bundled};
+use wearlab::sweeps::axis::Axis;
+use wearlab::sweeps::curve::{CurveSpec, curve, holds, solve_at};
+use wearlab::sweeps::map::{LineKind, Map, MapSpec, regime_map};
+use wearlab::sweeps::point::Point;
+use wearlab::sweeps::quantity::QuantityKey;
+use wearlab::sweeps::sweep;
 
 fn preset(file: &str) -> Preset {
     bundled(file).unwrap().unwrap()
@@ -290,7 +290,7 @@ fn along_an_h_sweep_the_group_is_the_contact_width_over_h_of_the_same_solution()
         // between the sweep points 46 and 215 um) over its h, not a value interpolated between them
         let mut own = p.clone();
         own.plane.model = s.model.unwrap();
-        let here = wearlab::explore::point::solve(&own).unwrap();
+        let here = wearlab::sweeps::point::solve(&own).unwrap();
         let expected = width.value(&here).unwrap() / p.get(spec.axis.key).unwrap();
         let got = s.current_group.unwrap();
         assert!(

@@ -178,7 +178,7 @@ fn sweep_without_vary_runs_the_section() {
 
 #[test]
 fn the_section_opens_a_curve_or_a_map_and_the_groups_are_the_problems() {
-    use wearlab::explore::{Opening, opening, quantity};
+    use wearlab::sweeps::{Opening, opening, quantity};
     let sweep = bundled("coating-thickness-sweep.toml").unwrap().unwrap();
     let Some(Ok(Opening::Curve(spec))) = opening(&sweep) else {
         panic!("a curve")
@@ -192,7 +192,7 @@ fn the_section_opens_a_curve_or_a_map_and_the_groups_are_the_problems() {
     let narrow = sweep.with_settings(&["plane.model=narrow"]).unwrap();
     let mut broken = narrow.clone();
     broken.explore.as_mut().unwrap().quantity =
-        wearlab::explore::QuantityKey::parse("theta", &sweep).unwrap();
+        wearlab::sweeps::QuantityKey::parse("theta", &sweep).unwrap();
     assert!(
         opening(&broken)
             .unwrap()

@@ -1,4 +1,4 @@
-//! The dimensionless groups of the explorer's dimensionless view (`explore::groups`) against
+//! The dimensionless groups of the explorer's dimensionless view (`sweeps::groups`) against
 //! classical closed forms at points of their own.
 
 mod common;
@@ -6,9 +6,9 @@ mod common;
 use std::f64::consts::PI;
 
 use common::{cosine, layer, plane, rel, spatial};
-use wearlab::explore::groups::{self, Group};
 use wearlab::physics::plane::validity::check;
 use wearlab::physics::plane::{Model, solve};
+use wearlab::sweeps::groups::{self, Group};
 
 fn value(groups: &[Group], name: &str) -> f64 {
     groups.iter().find(|g| g.name == name).unwrap().value

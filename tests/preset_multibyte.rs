@@ -7,9 +7,9 @@ use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
-use wearlab::explore::axis::Axis;
-use wearlab::explore::quantity::QuantityKey;
 use wearlab::preset::{BUNDLED, Key, Preset, bundled, load, parse, resolve_save_path};
+use wearlab::sweeps::axis::Axis;
+use wearlab::sweeps::quantity::QuantityKey;
 use wearlab::units::parse_si;
 
 /// Two-, three- and four-byte characters, a combining mark alone and after a letter, a byte

@@ -1,19 +1,19 @@
-//! The quantity registry (`explore::quantity`): the report's quantities are the report's keys with
+//! The quantity registry (`sweeps::quantity`): the report's quantities are the report's keys with
 //! the report's values; the derived ones against independent routes.
 
 mod common;
 
 use serde_json::Value;
-use wearlab::explore::point::{Point, solve};
-use wearlab::explore::quantity::{self, Origin, QuantityKey};
 use wearlab::preset::{BUNDLED, Preset, Problem, bundled};
 use wearlab::report;
+use wearlab::sweeps::point::{Point, solve};
+use wearlab::sweeps::quantity::{self, Origin, QuantityKey};
 
 fn preset(file: &str) -> Preset {
     bundled(file).unwrap().unwrap()
 }
 
-fn plane_point(p: &Preset) -> wearlab::explore::point::PlanePoint {
+fn plane_point(p: &Preset) -> wearlab::sweeps::point::PlanePoint {
     match solve(p).unwrap() {
         Point::Plane(pp) => *pp,
         Point::Spatial(_) => unreachable!("a plane preset"),

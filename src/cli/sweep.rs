@@ -1,5 +1,5 @@
 //! `wearlab sweep PRESET --vary KEY=FROM:TO[:N][:log] [--vary ...] [--set ...] [--output LIST]
-//! [--format csv|json]`: the library's sweep (`wearlab::explore::sweep`) with a progress bar on
+//! [--format csv|json]`: the library's sweep (`wearlab::sweeps::sweep`) with a progress bar on
 //! a terminal, its rows on stdout, and the exit codes of `solve`.
 
 use std::io::{self, IsTerminal};
@@ -8,10 +8,10 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use wearlab::explore::axis::{Axis, CURVE_POINTS, GRID_POINTS};
-use wearlab::explore::quantity::{self, QuantityKey};
-use wearlab::explore::{output, sweep};
 use wearlab::preset::Preset;
+use wearlab::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
+use wearlab::sweeps::quantity::{self, QuantityKey};
+use wearlab::sweeps::{output, sweep};
 
 use crate::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
 

@@ -1,5 +1,5 @@
 //! The explorer's sweeps and regime maps (issue 12) on a background thread of their own: the
-//! library's `explore::curve` and `explore::map`, the newest request first, a map delivered after
+//! library's `sweeps::curve` and `sweeps::map`, the newest request first, a map delivered after
 //! each of its passes (coarse first, then refined), and the work in progress cancelled as soon as
 //! a newer request arrives (an input edited, another axis chosen). Finished results are kept in a
 //! small cache keyed by the request, so going back to an earlier sweep costs nothing.
@@ -9,10 +9,10 @@ use std::sync::{Arc, Condvar, Mutex};
 use std::thread;
 
 use crate::engine::cache::Cache;
-use crate::explore::Opening;
-use crate::explore::curve::{Curve, curve};
-use crate::explore::map::{Map, regime_map};
 use crate::preset::Preset;
+use crate::sweeps::Opening;
+use crate::sweeps::curve::{Curve, curve};
+use crate::sweeps::map::{Map, regime_map};
 
 /// A sweep or a map of a preset.
 #[derive(Clone, Debug, PartialEq)]

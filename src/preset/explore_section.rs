@@ -15,12 +15,12 @@
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
-use crate::explore::axis::{Axis, CURVE_POINTS, GRID_POINTS};
-use crate::explore::quantity::QuantityKey;
 use crate::physics::{Spacing, limits};
 use crate::preset::check::Checker;
 use crate::preset::file::plain;
 use crate::preset::{Preset, PresetError};
+use crate::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
+use crate::sweeps::quantity::QuantityKey;
 
 /// What a preset's lesson sweeps or maps.
 #[derive(Clone, Debug, PartialEq)]

@@ -5,11 +5,11 @@
 //! to the explorer's thread (`engine::explore`), one whenever what should be shown changes.
 
 use crate::engine::explore::{ExploreAnswer, ExploreRequest};
-use crate::explore::axis::{Axis, GRID_POINTS};
-use crate::explore::curve::CurveSpec;
-use crate::explore::map::MapSpec;
-use crate::explore::{Opening, QuantityKey, models, opening};
 use crate::preset::{Key, Preset, Problem};
+use crate::sweeps::axis::{Axis, GRID_POINTS};
+use crate::sweeps::curve::CurveSpec;
+use crate::sweeps::map::MapSpec;
+use crate::sweeps::{Opening, QuantityKey, models, opening};
 
 use crate::tui::app::{App, Command};
 use crate::tui::keys::Action;
@@ -118,7 +118,7 @@ pub fn curve_spec(app: &App) -> Option<CurveSpec> {
                 Problem::Plane => "plane.load",
                 Problem::Spatial => "spatial.mean_pressure",
             };
-            let points = crate::explore::axis::CURVE_POINTS;
+            let points = crate::sweeps::axis::CURVE_POINTS;
             (
                 default_axis(preset, key, points)?,
                 quantity(preset, "mu_star")?,

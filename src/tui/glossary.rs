@@ -2,8 +2,8 @@
 
 use std::sync::LazyLock;
 
-use crate::explore::quantity::{by_name, problem_groups};
 use crate::preset::Problem;
+use crate::sweeps::quantity::{by_name, problem_groups};
 
 /// One symbol: how the status writes it, its unit, what it is.
 pub type Entry = (&'static str, &'static str, &'static str);

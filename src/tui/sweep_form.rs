@@ -2,17 +2,17 @@
 //! input of the problem), its range (typed with units, "10um", "3 GPa"), its number of points and
 //! scale, and the quantity shown. It opens on what is shown now (or the defaults: a decade either
 //! side of the current value, within the parameter's limits); Enter checks everything through
-//! the library (`explore::Axis::new`) and either shows the sweep or the map, or says what is
+//! the library (`sweeps::Axis::new`) and either shows the sweep or the map, or says what is
 //! wrong and what is allowed, the form staying open for the correction.
 
-use crate::explore::{Axis, QuantityKey};
 use crate::physics::Spacing;
 use crate::physics::limits;
 use crate::preset::Key;
+use crate::sweeps::{Axis, QuantityKey};
 use crate::units::{format_si_exact, parse_si};
 
-use crate::explore::curve::CurveSpec;
-use crate::explore::map::MapSpec;
+use crate::sweeps::curve::CurveSpec;
+use crate::sweeps::map::MapSpec;
 use crate::tui::app::{App, Command, Mode};
 use crate::tui::explore::{View, curve_spec, map_spec, parameters, quantities};
 use crate::tui::keys::{self, Prompt, PromptAction};
@@ -248,7 +248,7 @@ fn accept(app: &mut App, form: SweepForm) -> Vec<Command> {
             app.explore.curve = Some(CurveSpec {
                 axis: axes[0],
                 quantity: form.quantity,
-                models: crate::explore::models(preset, &axes[0]),
+                models: crate::sweeps::models(preset, &axes[0]),
             });
         }
         View::Map => {

@@ -1,5 +1,5 @@
 //! The sweep chart (`v`): a quantity against any numeric input, from the explorer's curve
-//! (`explore::curve`). One curve per plane model, the preset's first (it sets the y range); where
+//! (`sweeps::curve`). One curve per plane model, the preset's first (it sets the y range); where
 //! a model's own validity check fails (the spatial problem: where the contact is not complete)
 //! its curve is drawn dim, and each place where the verdict changes is marked on the x axis. The
 //! current value of the parameter is marked "now". In the dimensionless view (`D`) the x axis is
@@ -9,9 +9,9 @@
 //! interpolated between the neighbouring points; an input without a group keeps its dimensional
 //! axis, titled so.
 
-use crate::explore::curve::{Curve, CurveSpec};
 use crate::physics::Spacing;
 use crate::preset::{Key, Problem};
+use crate::sweeps::curve::{Curve, CurveSpec};
 
 use crate::tui::charts::{Axis, Figure, Mark, Plot, Scale, Series};
 

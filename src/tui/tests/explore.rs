@@ -252,7 +252,7 @@ fn the_map_cursor_reads_mu_star_with_six_decimals() {
     // a map of mu* (not mu* - mu): the cursor gives mu* as the status does, six decimals, so
     // that mu* - mu reads off (friction-or-wear-map's mu* is 0.2998 to four digits, beside 0.3)
     let mut preset = bundled("friction-or-wear-map.toml");
-    let mu_star = crate::explore::QuantityKey::parse("mu_star", &preset).unwrap();
+    let mu_star = crate::sweeps::QuantityKey::parse("mu_star", &preset).unwrap();
     let section = preset.explore.as_mut().unwrap();
     section.quantity = mu_star;
     for axis in &mut section.axes {
@@ -309,7 +309,7 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
             let said = app.ui.message.clone().unwrap().text;
             let vary = said.split("--vary ").nth(1).expect(&said);
             let vary = vary.split_whitespace().next().unwrap();
-            let back = crate::explore::Axis::parse(&app.doc.preset, vary, 1).unwrap();
+            let back = crate::sweeps::Axis::parse(&app.doc.preset, vary, 1).unwrap();
             assert_eq!(back, shown, "{}: {vary}", b.file);
             let (_, range) = vary.split_once('=').unwrap();
             for end in range.split(':').take(2) {

@@ -4,8 +4,8 @@
 use ratatui::crossterm::event::KeyCode;
 
 use super::*;
-use crate::explore::quantity::problem_groups;
 use crate::preset::Problem;
+use crate::sweeps::quantity::problem_groups;
 use crate::tui::view::popups::help_lines;
 
 #[test]

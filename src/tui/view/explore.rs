@@ -6,8 +6,8 @@
 //! here too.
 
 use crate::engine::explore::Explored;
-use crate::explore::groups::of_input;
-use crate::explore::{Opening, opening};
+use crate::sweeps::groups::of_input;
+use crate::sweeps::{Opening, opening};
 use crate::units::format_si;
 use ratatui::Frame;
 use ratatui::layout::Rect;

@@ -1,11 +1,11 @@
 //! The status in the problem's dimensionless groups (the dimensionless view, `D`): every number is
-//! a group the library computes (`explore::groups`), never a dimensional value, and the panel's
+//! a group the library computes (`sweeps::groups`), never a dimensional value, and the panel's
 //! title says "groups". `?` defines each group.
 
 use crate::engine::{Output, SpatialOutput};
-use crate::explore::groups::{self, Group};
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::validity::StripCheck;
+use crate::sweeps::groups::{self, Group};
 use ratatui::text::Line;
 
 use crate::tui::app::App;

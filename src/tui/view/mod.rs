@@ -22,8 +22,8 @@ pub mod theme;
 pub mod validity_status;
 
 use crate::engine::Answer;
-use crate::explore::quantity::problem_groups;
 use crate::preset::{Preset, Problem};
+use crate::sweeps::quantity::problem_groups;
 use ratatui::Frame;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::text::Line;

@@ -5,8 +5,8 @@
 //! where complete contact is lost; `+` the preset's own point, `X` the cursor. While the map is
 //! coarse, each cell shows the nearest computed point.
 
-use crate::explore::map::{LineKind, Map, MapSpec};
 use crate::physics::Spacing;
+use crate::sweeps::map::{LineKind, Map, MapSpec};
 use crate::units::format_si;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -69,7 +69,7 @@ pub fn draw(
     if nx < 2 || ny < 2 || area.width < LEFT + BAR + 8 || area.height < 6 {
         return;
     }
-    let lines_used: Vec<&crate::explore::map::Line> = map
+    let lines_used: Vec<&crate::sweeps::map::Line> = map
         .lines
         .iter()
         .filter(|l| !l.segments.is_empty())
@@ -139,8 +139,8 @@ pub fn draw(
             for k in 0..=16 {
                 let u = k as f64 / 16.0;
                 // in the axes' own spacing, so a segment on a log axis stays straight
-                let x = crate::explore::locate::between(spec.x.range.spacing, a[0], b[0], u);
-                let y = crate::explore::locate::between(spec.y.range.spacing, a[1], b[1], u);
+                let x = crate::sweeps::locate::between(spec.x.range.spacing, a[0], b[0], u);
+                let y = crate::sweeps::locate::between(spec.y.range.spacing, a[1], b[1], u);
                 if let Some(p) = at(x, y) {
                     buf[p].set_char(glyph).set_style(ink);
                 }

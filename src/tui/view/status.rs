@@ -135,7 +135,7 @@ pub fn mu_star(value: f64, mu: f64) -> String {
     format!("mu* = {value:.6} (mu {mu})")
 }
 
-/// How a dimensionless quantity, named as in `explore::groups`, is written wherever a screen
+/// How a dimensionless quantity, named as in `sweeps::groups`, is written wherever a screen
 /// shows it (the status, the groups of `D`, the map's cursor): four significant digits
 /// (`format_si`), the phase lead with its sign. mu* has its own rule (`mu_star`).
 pub fn number(name: &str, value: f64) -> String {

@@ -21,13 +21,13 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
-use crate::explore::axis::Axis;
-use crate::explore::curve::{holds, solve_at};
-use crate::explore::locate::{Node, Segment, between, bisect, contour};
-use crate::explore::point::Point;
-use crate::explore::quantity::QuantityKey;
 use crate::physics::plane::Model;
 use crate::preset::{Preset, Problem};
+use crate::sweeps::axis::Axis;
+use crate::sweeps::curve::{holds, solve_at};
+use crate::sweeps::locate::{Node, Segment, between, bisect, contour};
+use crate::sweeps::point::Point;
+use crate::sweeps::quantity::QuantityKey;
 
 /// What to map.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,12 +2,12 @@
 //! those of `docs/physics/plane.md` and `docs/physics/spatial.md`; the values are read from the
 //! solution the solvers return, never recomputed here.
 
-use crate::explore::groups;
-use crate::explore::point::{PlanePoint, SpatialPoint};
-use crate::explore::quantity::{Eval, Origin, Quantity};
 use crate::physics::plane::Model;
 use crate::preset::Problem;
 use crate::spatial_report::HarmonicReport;
+use crate::sweeps::groups;
+use crate::sweeps::point::{PlanePoint, SpatialPoint};
+use crate::sweeps::quantity::{Eval, Origin, Quantity};
 
 const fn entry(
     name: &'static str,

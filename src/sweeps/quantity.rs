@@ -6,10 +6,10 @@
 
 use std::fmt;
 
-use crate::explore::point::{PlanePoint, Point, SpatialPoint};
-use crate::explore::quantities::QUANTITIES;
 use crate::physics::plane::Model;
 use crate::preset::{Preset, Problem};
+use crate::sweeps::point::{PlanePoint, Point, SpatialPoint};
+use crate::sweeps::quantities::QUANTITIES;
 
 /// How a quantity is computed from a point.
 #[derive(Clone, Copy, Debug)]

@@ -11,14 +11,14 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use rayon::prelude::*;
 
-use crate::explore::axis::Axis;
-use crate::explore::groups;
-use crate::explore::locate::{between, bisect};
-use crate::explore::point::{self, Point};
-use crate::explore::quantity::QuantityKey;
-use crate::explore::sweep::preset_at;
 use crate::physics::plane::Model;
 use crate::preset::{Preset, Problem};
+use crate::sweeps::axis::Axis;
+use crate::sweeps::groups;
+use crate::sweeps::locate::{between, bisect};
+use crate::sweeps::point::{self, Point};
+use crate::sweeps::quantity::QuantityKey;
+use crate::sweeps::sweep::preset_at;
 
 /// What to draw.
 #[derive(Clone, Debug, PartialEq)]

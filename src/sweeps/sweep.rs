@@ -6,10 +6,10 @@
 
 use rayon::prelude::*;
 
-use crate::explore::axis::Axis;
-use crate::explore::point::{self, Point};
-use crate::explore::quantity::QuantityKey;
 use crate::preset::Preset;
+use crate::sweeps::axis::Axis;
+use crate::sweeps::point::{self, Point};
+use crate::sweeps::quantity::QuantityKey;
 
 /// One point of a sweep.
 #[derive(Clone, Debug, PartialEq)]

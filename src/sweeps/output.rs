@@ -5,11 +5,11 @@
 
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
-use crate::explore::axis::Axis;
-use crate::explore::quantity::QuantityKey;
-use crate::explore::sweep::Row;
 use crate::physics::Spacing;
 use crate::preset::{Preset, Problem};
+use crate::sweeps::axis::Axis;
+use crate::sweeps::quantity::QuantityKey;
+use crate::sweeps::sweep::Row;
 
 fn cell(q: &QuantityKey, v: &Result<f64, String>) -> String {
     match v {

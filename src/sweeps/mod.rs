@@ -1,4 +1,4 @@
-//! Exploring any parameter (issue 12): sweeps of every numeric input of a preset (`preset::Key`)
+//! Sweeps and regime maps over any parameter: every numeric input of a preset (`preset::Key`)
 //! over a range (`axis`), the quantities a sweep can show (`quantity`, one registry for the
 //! command line and the explorer, the dimensionless groups among them), one solved point
 //! (`point`), sweeps in parallel for `wearlab sweep` (`sweep`) and their CSV and JSON (`output`),
@@ -19,10 +19,10 @@ pub mod sweep;
 pub use axis::Axis;
 pub use quantity::{Quantity, QuantityKey};
 
-use crate::explore::curve::CurveSpec;
-use crate::explore::map::MapSpec;
 use crate::physics::plane::Model;
 use crate::preset::Preset;
+use crate::sweeps::curve::CurveSpec;
+use crate::sweeps::map::MapSpec;
 
 /// What a preset's `[explore]` section opens on.
 #[derive(Clone, Debug, PartialEq)]

@@ -3,12 +3,12 @@
 //! group has one definition; its symbol and its description are the table's. The formulas are
 //! those of `docs/physics/plane.md` and `docs/physics/spatial.md`.
 
-use crate::explore::quantities::QUANTITIES;
-use crate::explore::quantity::QuantityKey;
 use crate::physics::plane::validity::Validity;
 use crate::physics::plane::{PlaneInputs, PlaneSolution};
 use crate::physics::spatial::{HarmonicSolution, SpatialSolution};
 use crate::preset::{Preset, Problem};
+use crate::sweeps::quantities::QUANTITIES;
+use crate::sweeps::quantity::QuantityKey;
 
 /// One group's value.
 #[derive(Clone, Debug, PartialEq)]
