@@ -1,7 +1,7 @@
 //! The explorer's speed: drawing the full screen at 120x40; a keystroke that re-solves (update,
 //! the engine's stages, draw), each iteration at a load never solved before; and a load nudge on
 //! the wide model through the real loop (key into the channel, the worker thread, the answer back,
-//! the draw) until the new operating point is on screen; in partial contact , an edit of
+//! the draw) until the new operating point is on screen; in partial contact, an edit of
 //! the mean pressure through the same loop until the first partial-contact state is on screen
 //! (closed form, the start of a running-in: one contact solve, the state at t), the previous
 //! running-in dropped by the key. Target: under 100 ms.

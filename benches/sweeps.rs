@@ -1,4 +1,4 @@
-//! Issue 12's speed targets: a 200-point curve of the wide model (< 2 ms), a 64 x 64 map of the
+//! The explore sweeps' speed targets: a 200-point curve of the wide model (< 2 ms), a 64 x 64 map of the
 //! wide model with its lines (< 50 ms), a 32 x 32 map of the strip model (a few seconds on two
 //! cores) and its first, coarse pass (< 100 ms).
 

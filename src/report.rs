@@ -1,5 +1,5 @@
 //! The reports of `wearlab solve`: JSON and CSV, with the keys of the command-line contract
-//! (`design.md`). All values SI. The spatial report is in `spatial_report`.
+//! (`docs/cli.md`). All values SI. The spatial report is in `spatial_report`.
 
 use serde::Serialize;
 

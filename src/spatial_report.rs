@@ -1,4 +1,4 @@
-//! The spatial report of `wearlab solve` (JSON keys of the command-line contract, `design.md`;
+//! The spatial report of `wearlab solve` (JSON keys of the command-line contract, `docs/cli.md`;
 //! the partial-contact keys of docs/physics/spatial-partial.md section 7). All values SI.
 //!
 //! When the contact is complete at t = 0 the closed form of docs/physics/spatial.md holds at every

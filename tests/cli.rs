@@ -1,4 +1,4 @@
-//! `wearlab solve`: the JSON contract of design.md and the exit codes.
+//! `wearlab solve`: the JSON contract of `docs/cli.md` and the exit codes.
 
 use assert_cmd::Command;
 use serde_json::Value;

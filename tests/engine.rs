@@ -1,4 +1,4 @@
-//! The engine's stages: an edit recomputes only what it touches (design.md, "Incremental re-solve").
+//! The engine's stages: an edit recomputes only what it touches (`docs/performance.md`, "The engine's stages").
 
 use std::sync::mpsc::channel;
 use std::time::Duration;
@@ -190,7 +190,7 @@ fn the_cache_keeps_the_latest_eight_operating_points() {
     assert_eq!(engine.counts.operating_point, 10);
 }
 
-// --- the period cell: partial contact and the running-in (issue 14) ---
+// --- the period cell: partial contact and the running-in ---
 
 use std::cell::Cell;
 

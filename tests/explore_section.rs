@@ -200,7 +200,7 @@ fn the_section_opens_a_curve_or_a_map_and_the_groups_are_the_problems() {
             .contains("the narrow model has no theta")
     );
     assert!(opening(&bundled("hertz-check.toml").unwrap().unwrap()).is_none());
-    // the plane groups of issue 12: (a+b)/h, (a+b)/R, k m, mu chi, theta, P/(m R)
+    // the plane groups: (a+b)/h, (a+b)/R, k m, mu chi, theta, P/(m R)
     let symbols: Vec<&str> = quantity::groups(&sweep)
         .iter()
         .map(|q| q.quantity().symbol)

@@ -17,7 +17,7 @@ fn value(groups: &[Group], name: &str) -> f64 {
 #[test]
 fn hertz_width_and_load_groups() {
     // Johnson, Contact Mechanics (1985) eq. 4.45: a = sqrt(4 R P/(pi E*)), E* = E/(1 - nu^2); the
-    // plane modulus m = pi E*/2 (paper 001 after (3.1)), so (a+b)/R = 2a/R = sqrt(8 P/(m R))
+    // plane modulus m = pi E*/2 (Soldatenkov (2007), after eq. (3.1)), so (a+b)/R = 2a/R = sqrt(8 P/(m R))
     let (e, nu, r, p) = (2.1e11, 0.3, 0.05, 1e4);
     let sol = solve(
         &plane(e, nu, f64::INFINITY, 0.0, 0.0, 0.0, r, p),

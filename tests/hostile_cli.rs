@@ -1,6 +1,6 @@
-//! The hostile corpus of issue 9: files and arguments that once hung, panicked or printed
-//! nonsense with exit 0, each with the exit code and the message it must now give. The files are
-//! in tests/hostile/ (each says in its first line what it once did); FIFOs, devices and oversized
+//! The hostile corpus: files and arguments that could hang, panic or print nonsense with exit 0,
+//! each with the exit code and the message it must give. The files are in tests/hostile/ (each
+//! says in its first line what it probes); FIFOs, devices and oversized
 //! files are made at test time.
 
 use std::io::Read;

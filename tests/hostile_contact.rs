@@ -1,4 +1,4 @@
-//! "Commensurate" means it (issue 9, class 3): the cell minimum is certified only for wavenumbers
+//! "Commensurate" means it: the cell minimum is certified only for wavenumbers
 //! that are whole multiples of one base to within the precision of the numbers; otherwise, or
 //! when the grid would be too fine, the check says it gave up and why.
 

@@ -1,4 +1,4 @@
-//! Saving a preset (issue 9, class 8, the library's part): atomic, through symbolic links, keeping
+//! Saving a preset (the library's part): atomic, through symbolic links, keeping
 //! the mode of the file it replaces, cleaning up after interrupted saves, creating no folders.
 #![cfg(unix)]
 

@@ -1,4 +1,4 @@
-//! The narrow-strip (Winkler) solution (paper 001 section 5) against independent routes.
+//! The narrow-strip (Winkler) solution (Soldatenkov (2007) section 5) against independent routes.
 
 mod common;
 
@@ -92,7 +92,7 @@ fn closed_form_agrees_with_ode_integration_from_the_leading_edge() {
 
 #[test]
 fn small_wear_formula_of_the_paper() {
-    // End of paper 001 section 5 (confirmed in docs/physics/plane.md): mu* = mu + (3/5)(1 + mu^2) k (2P^2/(3 beta R))^(1/3),
+    // End of Soldatenkov (2007) section 5 (confirmed in docs/physics/plane.md): mu* = mu + (3/5)(1 + mu^2) k (2P^2/(3 beta R))^(1/3),
     // relative error about 0.004 (lambda L)^2. The formula also takes Q2 = P, neglecting mu psi, and
     // psi ~ L^5 ~ Q2^(5/3): that adds (5/3) mu (mu* - mu)/(1 + mu^2) relative, which dominates at
     // very small wear (3.6e-6 at k = 1e-12 here).
@@ -131,7 +131,7 @@ fn without_wear_the_winkler_strip_has_no_deformation_friction() {
 
 #[test]
 fn energy_identity_is_zero_for_winkler() {
-    // I = J = 0 for the Winkler relations (paper 001 section 5): both vanish to quadrature accuracy.
+    // I = J = 0 for the Winkler relations (Soldatenkov (2007) section 5): both vanish to quadrature accuracy.
     for inp in cases() {
         let sol = solve(&inp, Model::Narrow).unwrap();
         let en = energy(&sol);

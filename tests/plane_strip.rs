@@ -41,9 +41,9 @@ fn reference_table_of_plane_md() {
     }
 }
 
-/// (a, b, Q2, mu*) of the solver this one replaced (commit fc95cc2: dense Householder QR at every
+/// (a, b, Q2, mu*) of an independent strip solver (commit fc95cc2: dense Householder QR at every
 /// width, N = 40 + 4 L/h, Golub–Welsch rules, Brent from the half-plane width), at its own test
-/// cases, printed to 17 digits before the change.
+/// cases, printed to 17 digits.
 const PREVIOUS_SOLVER: [(&str, PlaneInputsFn, [f64; 4]); 6] = [
     (
         "table h=1e-3 P=1e5",
@@ -263,7 +263,7 @@ fn energy_identity_with_the_exact_kernels() {
 
 #[test]
 fn nearly_incompressible_layer_against_an_independent_boundary_element_width() {
-    // Issue 9: E = 2 MPa, nu = 0.49, h = 0.1 mm, R = 0.1 m, P = 1.86e4 N/m, no friction or wear;
+    // E = 2 MPa, nu = 0.49, h = 0.1 mm, R = 0.1 m, P = 1.86e4 N/m, no friction or wear;
     // an independent FFT boundary-element code (converged to 1e-7) gives a = b = 2.276 mm.
     let inp = plane(2e6, 0.49, 1e-4, 0.0, 0.0, 0.0, 0.1, 1.86e4);
     let sol = solve(&inp, Model::Strip).unwrap();

@@ -1,6 +1,6 @@
 //! The validity criteria of the wide and narrow models (src/physics/plane/criteria.rs) against the
 //! strip model of any thickness, and the strip model itself at the study's extremes against
-//! independent routes (issue 13).
+//! independent routes.
 //!
 //! `coarse_study` runs in `cargo test`: off the study's grid (so the tables' conservative reading
 //! between grid points is tested too), every answer flagged "holds" must be within 2 % in contact
@@ -164,7 +164,7 @@ fn the_estimate_bounds_the_measured_deviation() {
 
 #[test]
 fn the_reason_is_given_in_words() {
-    // issue 13's example: Winkler at nu = 0.49 and (a+b)/h = 10 is far off (here with k m = 0.5:
+    // Winkler at nu = 0.49 and (a+b)/h = 10 is far off (here with k m = 0.5:
     // 47 = D/0.02 with D = 0.94 from the study's table, criteria::NARROW_OFFSET)
     let (inputs, strip) = strip_at_width(0.49, 0.0, 0.5, 10.0);
     let sol = solve(&inputs, Model::Narrow).unwrap();
@@ -218,7 +218,7 @@ fn the_strip_model_at_the_studys_extremes() {
         );
     }
     // small (a+b)/h: the strip joins the wide closed form (the half-plane with the first-order
-    // thickness correction, paper 001 section 4) at second order
+    // thickness correction, Soldatenkov (2007) section 4) at second order
     for (nu, mu, km) in [(0.0, 1.0, 3.0), (0.499, 1.0, 3.0), (0.499, 0.0, 0.0)] {
         let off = [0.04, 0.08].map(|lambda| {
             let (inputs, strip) = strip_at_width(nu, mu, km, lambda);

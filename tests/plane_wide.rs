@@ -1,4 +1,4 @@
-//! The wide-strip / half-plane solution (paper 001 section 4) against independent routes.
+//! The wide-strip / half-plane solution (Soldatenkov (2007) section 4) against independent routes.
 
 mod common;
 

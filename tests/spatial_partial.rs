@@ -330,7 +330,7 @@ fn adhesion_in_contact_converges_with_the_cycle_guard() {
 
 #[test]
 fn mu_star_over_the_whole_range_of_mean_pressure() {
-    // issue 14, item 3: one curve, partial contact below the complete-contact load, the closed
+    // one curve, partial contact below the complete-contact load, the closed
     // form (docs/physics/spatial.md section 5) above it; the "wave-thick-layer" preset's wave
     use std::ops::ControlFlow;
     use wearlab::physics::Spacing;

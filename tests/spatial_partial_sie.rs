@@ -1,5 +1,4 @@
-//! mu > 0 on the 1-D half-plane (docs/physics/spatial-partial.md section 6, route 6 and the
-//! issue's third verification): the FFT active-set solver against a singular integral equation
+//! mu > 0 on the 1-D half-plane (docs/physics/spatial-partial.md section 6, route 6): the FFT active-set solver against a singular integral equation
 //! for the contact pressure, solved here by Gauss–Jacobi collocation with Galin's edge exponents
 //! and written without any of the solver's code (only the library's Gauss–Jacobi rule, tested on
 //! its own in src/physics/quadrature.rs, and Brent's root finder).

@@ -139,7 +139,7 @@ fn cases(default: u32) -> u32 {
 
 proptest! {
     // The whole allowed range (`physics::limits`, corners included): every result is finite or
-    // an error in words. `cargo test` runs 300 cases; the issue-9 run used PROPTEST_CASES=20000.
+    // an error in words. `cargo test` runs 300 cases; PROPTEST_CASES=20000 runs a deeper search.
     #![proptest_config(ProptestConfig::with_cases(cases(300)))]
     #[test]
     fn spatial_results_are_finite_or_explained(

@@ -25,7 +25,7 @@ fn half_space() -> Material {
     common::layer(2e11, 0.3, f64::INFINITY)
 }
 
-/// The wave of issue 14's example: 1 um, 1 mm on a half-space at pbar = 0.3 p*.
+/// The 1-D wave of `docs/verification.md`'s running-in check: 1 um, 1 mm on a half-space at pbar = 0.3 p*.
 fn westergaard_wave(mu: f64, tau0: f64) -> SpatialInputs {
     let (delta, l) = (1e-6, 1e-3);
     let p_star = PI * 2e11 / (1.0 - 0.09) * delta / l;
@@ -47,8 +47,8 @@ fn running_in_completes_the_contact_and_conserves_the_wear() {
     let run = go(&setup);
     let beta = decay_rate(&input);
     let t_cc = run.time_to_complete.unwrap();
-    // issue 14 quotes an independent simulation of this case (mu = 0): 2.71 decay times,
-    // where the closed-form bound says 1.20; friction shortens it a little
+    // an independent simulation of this case (mu = 0; `docs/verification.md`) gives 2.71 decay
+    // times, where the closed-form bound says 1.20; friction shortens it a little
     println!(
         "t_cc beta = {:.5}, {} steps",
         t_cc * beta,

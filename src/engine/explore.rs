@@ -1,4 +1,4 @@
-//! The explorer's sweeps and regime maps (issue 12) on a background thread of their own: the
+//! The explorer's sweeps and regime maps on a background thread of their own: the
 //! library's `sweeps::curve` and `sweeps::map`, the newest request first, a map delivered after
 //! each of its passes (coarse first, then refined), and the work in progress cancelled as soon as
 //! a newer request arrives (an input edited, another axis chosen). Finished results are kept in a

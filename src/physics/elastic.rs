@@ -1,7 +1,7 @@
 //! Transfer functions of an elastic strip (layer) bonded to a rigid base, shared by the plane and
 //! the spatial problems.
 //!
-//! Plane strain, paper 001 eq. (3.2) with the corrections of `docs/physics/plane.md` section 2
+//! Plane strain, Soldatenkov (2007) eq. (3.2) with the corrections of `docs/physics/plane.md` section 2
 //! (ch 2X in K12). Everything is evaluated with e = exp(-2X) after dividing the numerator and the
 //! denominator by ch 2X, so no term overflows for any X >= 0, including X = +inf (half-plane).
 
@@ -17,7 +17,7 @@ pub fn chi(nu: f64) -> f64 {
     (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
 }
 
-/// m = pi E / (2 (1 - nu^2)) [Pa], the modulus of the plane problem (paper 001, after (3.1)).
+/// m = pi E / (2 (1 - nu^2)) [Pa], the modulus of the plane problem (Soldatenkov (2007), after eq. (3.1)).
 pub fn plane_modulus(youngs_modulus: f64, nu: f64) -> f64 {
     std::f64::consts::PI * youngs_modulus / (2.0 * (1.0 - nu * nu))
 }

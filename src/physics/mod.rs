@@ -40,7 +40,7 @@ impl Material {
     }
 }
 
-/// Coulomb friction with adhesion: q1 = mu q2 + tau0 (paper 001 (3.10), paper 000 (1.1)).
+/// Coulomb friction with adhesion: q1 = mu q2 + tau0 (Soldatenkov (2007) eq. (3.10), the wavy-punch paper eq. (1.1)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Friction {
     /// Sliding friction coefficient mu (dimensionless), >= 0.

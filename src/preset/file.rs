@@ -1,4 +1,4 @@
-//! The preset file format (schema 1, TOML, SI units; `design.md`): the file's layout with the
+//! The preset file format (schema 1, TOML, SI units; `docs/presets.md`): the file's layout with the
 //! spans kept for error messages, reading, writing as TOML, and the atomic save.
 
 use std::io::Write;

@@ -1,4 +1,4 @@
-//! Preset files (schema 1, TOML, SI units; `design.md`): the validated preset, its defaults and
+//! Preset files (schema 1, TOML, SI units; `docs/presets.md`): the validated preset, its defaults and
 //! its errors. The file format is in `file`, the checks in `check`, the bundled list in `bundled`.
 
 mod bundled;

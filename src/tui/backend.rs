@@ -1,6 +1,6 @@
 //! The explorer's terminal backend: ratatui's crossterm backend for everything but `draw`, whose
-//! escape codes are shorter, for the map screens over SSH (issue 10; README, "Bytes to the
-//! terminal"). Per changed cell it writes only what changed in
+//! escape codes are shorter, for the map screens over SSH (`docs/performance.md`, "Bytes to
+//! the terminal"). Per changed cell it writes only what changed in
 //! ONE select-graphic-rendition code (foreground, background and attributes together, or a reset
 //! and the new style when that is shorter), and moves the cursor by the shortest of a relative
 //! move (`CSI n C` on the same row, `CR LF` or `CSI n B`/`CSI n A` to another row) and an

@@ -1,4 +1,4 @@
-//! The explorer's sweep chart and regime map (issue 12), the UI side (part of `update`: pure):
+//! The explorer's sweep chart and regime map, the UI side (part of `update`: pure):
 //! which view is shown, the sweep and the map chosen (or their defaults: the preset's
 //! `[explore]` section, else mu* against the load or the mean pressure, and mu* - mu over the
 //! friction and wear coefficients), the dimensionless view, the map's cursor, and the requests

@@ -1,5 +1,5 @@
 //! How far the wide and narrow models are from the strip model of any thickness, as formulas
-//! derived from a study against it (issue 13; `tests/plane_validity.rs` reruns it, coarsely in
+//! derived from a study against it (`tests/plane_validity.rs` reruns it, coarsely in
 //! `cargo test`, in full with `--ignored`).
 //!
 //! The study: the strip model (docs/physics/plane.md section 6, exact to 1e-10) at contact widths

@@ -1,4 +1,4 @@
-//! The energy identity I = J of Soldatenkov (2007) (2.9) and the energy losses of its section 2,
+//! The energy identity I = J of Soldatenkov (2007) eq. (2.9) and the energy losses of its section 2,
 //! evaluated numerically from the solved q1, q2.
 //!
 //! Per unit sliding speed (N/m: power per unit speed), the work of the tangential force T splits

@@ -1,4 +1,4 @@
-//! Space-domain kernels of the strip (docs/physics/plane.md section 2, paper 001 (3.5)-(3.7)), tabulated once
+//! Space-domain kernels of the strip (docs/physics/plane.md section 2, Soldatenkov (2007) eq. (3.5)-(3.7)), tabulated once
 //! per Poisson ratio for the strip of any thickness:
 //!   R_j(z)   = A_j(z) - 1/z,  A_j(z) = pi/(2 sh(pi z/2)) + int_0^inf L_j(X) sin(zX) dX,
 //!   chi B12(z) = int_0^inf chi L12(X) cos(zX) dX,   chi l12(z) = int_0^inf chi L12(X) sin(zX)/X dX,

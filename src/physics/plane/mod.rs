@@ -1,4 +1,4 @@
-//! The plane problem (paper 001, Soldatenkov 2007, `docs/references.md`; verified formulas in `docs/physics/plane.md`):
+//! The plane problem (Soldatenkov (2007), `docs/references.md`; verified formulas in `docs/physics/plane.md`):
 //! a rigid parabolic punch g(x) = x^2/(2R) slides with Coulomb friction and adhesion over an
 //! elastic strip bonded to a rigid base; the strip wears, W' = -k q2.
 //!
@@ -254,7 +254,7 @@ impl PlaneSolution {
     }
 }
 
-/// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, paper 001 (3.13).
+/// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, Soldatenkov (2007) eq. (3.13).
 fn total_friction(friction: &Friction, psi: f64, delta_g: f64, load: f64) -> f64 {
     let mu = friction.coefficient;
     mu + ((1.0 + mu * mu) * psi + mu * delta_g * friction.adhesion) / load

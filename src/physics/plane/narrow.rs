@@ -1,4 +1,4 @@
-//! Narrow strip ((a+b)/h -> inf), the Winkler foundation: paper 001 section 5, docs/physics/plane.md section 4.
+//! Narrow strip ((a+b)/h -> inf), the Winkler foundation: Soldatenkov (2007) section 5, docs/physics/plane.md section 4.
 //!
 //! v = -beta (q2 - q2(0)), lambda = k/beta, q2' - lambda q2 = -g'/beta (5.3). With L = a + b,
 //! y = lambda L and u = a + x in [0, L], everything is written in overflow-safe, cancellation-free

@@ -1,4 +1,4 @@
-//! Wide strip ((a+b)/h -> 0) and half-plane (h = inf): paper 001 section 4, docs/physics/plane.md section 3.
+//! Wide strip ((a+b)/h -> 0) and half-plane (h = inf): Soldatenkov (2007) section 4, docs/physics/plane.md section 3.
 
 use std::f64::consts::PI;
 

@@ -1,4 +1,4 @@
-//! The spatial problem (paper 000, `docs/references.md`; the derivation in `docs/physics/spatial.md`): a rigid wavy punch of
+//! The spatial problem (the wavy-punch paper, `docs/references.md`; the derivation in `docs/physics/spatial.md`): a rigid wavy punch of
 //! N harmonics in complete contact with an elastic layer bonded to a rigid base; the layer slides
 //! in -x at speed V under Coulomb friction tau = mu p + tau0 (1.1); the punch wears,
 //! dg/dt = -k_w p with k_w = k V (1.2).

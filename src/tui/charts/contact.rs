@@ -1,4 +1,4 @@
-//! The spatial charts drawn from the contact solved on the period cell (issue 14): the nodal
+//! The spatial charts drawn from the contact solved on the period cell: the nodal
 //! pressure with the zones out of contact, the running-in in time, mu* against the mean pressure
 //! over the whole range. `fields` decides, for every chart, whether the closed form of the
 //! harmonics holds at t or the nodes of the cell are drawn.

@@ -101,8 +101,8 @@ fn every_x_tick_has_its_value_a_log_axis_says_so_and_legends_avoid_data() {
             settle(&mut app, cmds);
         }
     }
-    // the review: jgh-egg-box's dispersion chart at 80x24 had its legend over the curve of a
-    // plot of four rows; empty rows across the plot now hold it
+    // jgh-egg-box's dispersion chart at 80x24, a plot of four rows: the legend goes on empty
+    // rows across the plot, not over the curve
     assert!(
         !covering.iter().any(|c| c.starts_with("jgh-egg-box")),
         "{covering:#?}"
@@ -112,8 +112,8 @@ fn every_x_tick_has_its_value_a_log_axis_says_so_and_legends_avoid_data() {
 
 #[test]
 fn a_legend_says_why_a_curve_it_names_cannot_be_seen() {
-    // the review: thin-strip-winkler's sweep named "++ mu* wide" while the wide model fails over
-    // the whole range (all of it drawn in its dim mark); hertz-check's b lies under a (mu = 0)
+    // thin-strip-winkler's sweep: the wide model fails over the whole range (all of it drawn in
+    // its dim mark), so "++ mu* wide" alone would name a curve that cannot be seen; hertz-check's b lies under a (mu = 0)
     let mut app = solved("thin-strip-winkler.toml");
     press(&mut app, KeyCode::Char('v'));
     let cmds = press(&mut app, KeyCode::Enter);
@@ -137,9 +137,9 @@ fn a_legend_says_why_a_curve_it_names_cannot_be_seen() {
 
 #[test]
 fn the_sweep_cursor_reads_each_mu_star_alike_and_tags_a_failing_model() {
-    // the review: thin-strip-winkler's sweep cursor read 'mu* narrow = 0.303962  mu* wide =
-    // 0.429323  mu* strip = 0.30406', the wide model's value untagged though its legend says
-    // it fails over the whole range
+    // thin-strip-winkler's sweep cursor: every mu* with six significant digits (not
+    // 'mu* strip = 0.30406'), and the wide model's value tagged, as its legend says it fails
+    // over the whole range
     let mut app = solved("thin-strip-winkler.toml");
     press(&mut app, KeyCode::Char('v'));
     let cmds = press(&mut app, KeyCode::Enter);
@@ -162,8 +162,8 @@ fn the_sweep_cursor_reads_each_mu_star_alike_and_tags_a_failing_model() {
 
 #[test]
 fn a_reference_line_under_a_curve_says_so() {
-    // the review: jgh-egg-box's charts named '┈┈ mu = 0' (and '┈┈ c = 0') where the curve lies
-    // on the line over its whole width, so that the line shows nowhere
+    // jgh-egg-box's charts: the curve lies on the line '┈┈ mu = 0' (and '┈┈ c = 0') over its
+    // whole width, so that the line shows nowhere and its legend says so
     let mut app = solved("jgh-egg-box.toml");
     let mut seen = 0;
     for _ in 0..5 {

@@ -1,4 +1,4 @@
-//! The pressure map in filled bands (issue 10): edges at nice values over the range, one colour
+//! The pressure map in filled bands: edges at nice values over the range, one colour
 //! (or shade) a band on the map and on the bar, and every edge labelled on the bar.
 
 use ratatui::buffer::Buffer;

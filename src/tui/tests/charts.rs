@@ -213,8 +213,8 @@ fn the_svg_holds_the_pins_and_the_toggled_axis() {
 
 #[test]
 fn without_a_duration_the_time_charts_span_five_of_the_slowest_decay_times() {
-    // the case: the default spatial side of a plane preset (1/beta = 4.68 ms against
-    // the old fixed 200 s); and wave-thick-layer.toml with its duration line taken out
+    // the default spatial side of a plane preset (1/beta = 4.68 ms: a fixed span such as 200 s
+    // would show nothing of it); and wave-thick-layer.toml with its duration line taken out
     let text = crate::preset::BUNDLED
         .iter()
         .find(|b| b.file == "wave-thick-layer.toml")

@@ -155,8 +155,8 @@ fn sweep_screens() {
     explored(&mut app, &cmds);
     let small = screen(&app, 80, 24, PLAIN);
     // at 80x24 the status folds to four lines and the lesson to one: 6 rows from the top tick
-    // to the x axis (there were 5; 7 before the x title took a row of its own so that the
-    // labels reach 10m, the range's end)
+    // to the x axis (the x title has a row of its own, so that the labels reach 10m, the
+    // range's end)
     let lines: Vec<&str> = small.lines().collect();
     let top = lines.iter().position(|l| l.contains('┤')).unwrap();
     let axis = lines.iter().position(|l| l.contains(" └")).unwrap();
@@ -177,8 +177,8 @@ fn sweep_screens() {
 #[test]
 fn one_legend_entry_for_the_dim_parts_of_several_models_takes_no_models_colour() {
     // coating-thickness-sweep in colour: the wide and the narrow model both fail somewhere,
-    // named once ("dim: the model's validity check fails"); its sample was the wide model's
-    // colour, as if only the wide model's parts were dim
+    // named once ("dim: the model's validity check fails"); its sample takes no model's
+    // colour, since the dim parts are of both models
     let mut app = app("coating-thickness-sweep.toml");
     let cmds = app.start();
     settle(&mut app, cmds.clone());
@@ -373,7 +373,7 @@ fn e_in_a_sweep_names_the_file_only_while_it_holds_what_is_shown() {
 #[test]
 fn the_help_explains_the_view_on_screen() {
     // in the sweep or map view the help's chart section is about that view, not about the chart
-    // under it ("This chart (1/4): pressure and shear" while the sweep was shown)
+    // under it (not "This chart (1/4): pressure and shear" while the sweep is shown)
     let text = |app: &App| {
         crate::tui::view::popups::help_lines(app, PLAIN, 78)
             .iter()

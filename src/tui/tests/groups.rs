@@ -79,8 +79,8 @@ fn the_help_defines_every_group() {
 
 #[test]
 fn a_quantity_reads_the_same_in_the_status_and_in_groups() {
-    // the review: D gave (a+b)/h = 16.58 beside "valid: (a+b)/h = 16.575", and phi 0.07227 in D
-    // against +0.07 in the dimensional harmonics table (status::number is the one rule now)
+    // one rule (status::number) for both views: not (a+b)/h = 16.58 in D beside "valid: (a+b)/h =
+    // 16.575", nor phi 0.07227 in D against +0.07 in the dimensional harmonics table
     let mut app = solved("thin-strip-winkler.toml");
     let dimensional = screen(&app, 120, 40, PLAIN);
     press(&mut app, KeyCode::Char('D'));

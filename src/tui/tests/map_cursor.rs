@@ -1,5 +1,5 @@
-//! The pressure map's cell cursor (student finding 1: `x` on the map said there was a cursor and
-//! drew none): the keys move it over the grid, the readout is the map's own value at its grid
+//! The pressure map's cell cursor (`x` on the map shows it and
+//! draws it): the keys move it over the grid, the readout is the map's own value at its grid
 //! point, it stays while time changes, and the screens read as a student would.
 
 use ratatui::crossterm::event::KeyCode;

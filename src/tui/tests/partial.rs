@@ -1,5 +1,5 @@
-//! Partial contact and its running-in in the explorer (issue 14): the screens, read as a student
-//! would before they were accepted; time replaying the cached running-in; progress while it is
+//! Partial contact and its running-in in the explorer: the screens, each read as a student
+//! would read it; time replaying the cached running-in; progress while it is
 //! stepped; the zones out of contact drawn apart, with and without colour.
 
 use crate::engine::{Engine, Output, Progress};

@@ -66,7 +66,7 @@ fn help_picker_choices_error_and_too_small() {
     };
     update(&mut app, Msg::PresetsListed(entries));
     insta::assert_snapshot!("picker_80x24", screen(&app, 80, 24, PLAIN));
-    // the review: 9 of 14 presets at 80x24 with no hint that more follow
+    // at 80x24 not every preset fits: the picker says that more follow
     let count = crate::tui::effects::list_presets(None);
     let Msg::PresetsListed(listed) = count else {
         panic!()
@@ -141,7 +141,8 @@ fn the_help_explains_every_status_symbol_of_both_problems() {
 
 #[test]
 fn every_help_line_fits_and_long_symbols_stand_above_their_text() {
-    // the review: "partial contact (N%) [-]the contact, solved on the nodes of the period cel"
+    // no help line is cut (e.g. "partial contact (N%) [-]the contact, solved on the nodes of the
+    // period cel"): a long symbol stands on a line above its text
     for file in ["polymer-coating.toml", "contact-lost.toml"] {
         let app = app(file);
         for width in [76, 98] {
@@ -167,7 +168,7 @@ fn every_help_line_fits_and_long_symbols_stand_above_their_text() {
 
 #[test]
 fn a_long_message_takes_two_lines_and_is_never_cut_mid_word() {
-    // the review: typing 10um for E ended "…write a plain number or a prefix" at 80 columns
+    // typing 10um for E gives a message longer than 80 columns: it wraps, never cut mid-word
     let mut app = solved("polymer-coating.toml");
     select(&mut app, "E", None);
     press(&mut app, KeyCode::Enter);
@@ -189,7 +190,7 @@ fn a_long_message_takes_two_lines_and_is_never_cut_mid_word() {
     }
 }
 
-/// The chart modes of issue 11, each at 80x24 and 120x40.
+/// A chart mode's screen, at 80x24 and 120x40.
 fn both(name: &str, app: &App, style: RenderOptions) {
     insta::assert_snapshot!(format!("{name}_80x24"), screen(app, 80, 24, style));
     insta::assert_snapshot!(format!("{name}_120x40"), screen(app, 120, 40, style));
@@ -273,7 +274,7 @@ fn i_shows_the_whole_description_and_scrolls_it() {
 
 #[test]
 fn a_window_leaves_the_message_rows_free() {
-    // rubber-backward-drift's name and file take two rows at 80x24: under `i` the name was hidden
+    // rubber-backward-drift's name and file take two rows at 80x24: under `i` the name stays visible
     let mut app = solved("rubber-backward-drift.toml");
     app.doc.path = Some("presets/rubber-backward-drift.toml".into());
     press(&mut app, KeyCode::Char('i'));

@@ -1,5 +1,5 @@
-//! Results are labelled by the inputs they carry: never a stale result under new labels (issue 8),
-//! and the loop shows a result without waiting for a key (issue 10).
+//! Results are labelled by the inputs they carry: never a stale result under new labels,
+//! and the loop shows a result without waiting for a key.
 
 use std::sync::mpsc::channel;
 use std::time::{Duration, Instant};

@@ -73,7 +73,7 @@ fn negative_ranges_read_like_positive_ones() {
 
 #[test]
 fn a_tiny_span_gets_an_offset_in_the_title() {
-    // the case: mu* varies in the 5th digit, the old ticks read "0.3 / 0.3 / 0.3"
+    // mu* varying in the 5th digit: plain ticks would all read "0.3"
     let t = ticks([0.299_951, 0.300_012], Scale::Linear, "mu*", "", 8);
     assert_eq!(t.title, "mu* - 0.3 (x1e-5)");
     assert_eq!(labels(&t), ["-4", "-3", "-2", "-1", "0", "1"]);
@@ -138,8 +138,8 @@ fn symlog_labels_are_distinct_and_show_zero_and_both_signs() {
     assert_eq!(t.title, "c [m/s] (symlog)");
     assert_eq!(labels(&t), ["-1u", "-100n", "-10n", "0", "10n", "100n"]);
     // dispersion.toml's drift velocity on 8 rows (at most 4 ticks): -275 nm/s to +45 nm/s with
-    // c = 1 nm/s (symlog_for: a tenth of the smaller branch). The zero line is labelled 0 (it
-    // was drawn on the -1n row) and the positive branch has a tick of its own
+    // c = 1 nm/s (symlog_for: a tenth of the smaller branch). The zero line is labelled 0 (not
+    // on the -1n row) and the positive branch has a tick of its own
     let range = [scale.to_plot(-3e-7).unwrap(), scale.to_plot(5e-8).unwrap()];
     let t = ticks(range, scale, "c", "m/s", 4);
     assert_eq!(labels(&t), ["-100n", "0", "50n"]);

@@ -299,7 +299,7 @@ fn question_mark_opens_a_scrolling_help_that_any_other_key_closes() {
 
 #[test]
 fn help_scrolling_stops_at_the_end_of_the_text() {
-    // the review: after PgDn x12, past the end, the first three PgUp did nothing
+    // PgDn past the end stops at the end, so that the first PgUp scrolls back at once
     for (w, h) in [(80, 24), (120, 40)] {
         let mut app = app("contact-lost.toml");
         app.ui.screen = ratatui::layout::Rect::new(0, 0, w, h);

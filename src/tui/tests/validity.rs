@@ -1,7 +1,7 @@
-//! The plane status's validity lines (issue 13): the model holds and its measured distance from
+//! The plane status's validity lines: the model holds and its measured distance from
 //! the exact strip model follows the point; it does not hold and the reason is said in a few
 //! words; the strip model is said to be the exact one. Each snapshot is the status panel alone,
-//! read as a student would before it was accepted.
+//! to be read as a student would read it.
 
 use super::*;
 use crate::tui::view::layout;
@@ -75,7 +75,7 @@ fn the_strip_model_is_said_to_be_the_exact_one() {
 
 #[test]
 fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
-    // the review: h = 10 um on the default preset cut the status mid-sentence at 80x24
+    // h = 10 um on the default preset: several warnings at 80x24, none cut mid-sentence
     let app = solved_with("polymer-coating.toml", |p| p.material.thickness = 10e-6);
     let tall = status(&app, 120, 40);
     assert!(

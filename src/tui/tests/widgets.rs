@@ -145,19 +145,19 @@ fn mark_labels_sit_over_their_marks_or_are_left_out() {
     // columns: round(f * 39): 0.5 -> 20, 0.52 -> 20, 0.7 -> 27
     plot.x_marks = vec![mark(0.7, "-a"), mark(0.5, "tip")];
     assert_eq!(labels(&plot), owned(&[(19, "tip"), (26, "-a")]));
-    // on the same column: both named in one label over it (the second was left out; before
-    // that drawn at column 23, under nothing of its own)
+    // on the same column: both named in one label over it (neither left out nor drawn apart
+    // from its mark)
     plot.x_marks = vec![mark(0.52, "-a"), mark(0.5, "tip")];
     assert_eq!(labels(&plot), owned(&[(17, "-a/tip")]));
-    // a column apart: one label covering both, the left mark's first (the review: two marks a
-    // column apart could not both be labelled); columns 0.5 -> 20, 0.54 -> 21
+    // a column apart: one label covering both, the left mark's first (two marks a column apart
+    // both labelled); columns 0.5 -> 20, 0.54 -> 21
     plot.x_marks = vec![mark(0.54, "complete"), mark(0.5, "now")];
     assert_eq!(labels(&plot), owned(&[(14, "now/complete")]));
     // at the right end: shifted left to end with the plot, still over its mark
     plot.x_marks = vec![mark(1.0, "complete")];
     assert_eq!(labels(&plot), owned(&[(32, "complete")]));
-    // "now" three columns right of a validity mark: both named, "now" first (thin-strip-winkler's
-    // sweep at 80x24 named "narrow ok>" and left "now" out); columns 0.4 -> 16, 0.48 -> 19
+    // "now" three columns right of a validity mark: both named, "now" not left out (as on
+    // thin-strip-winkler's sweep at 80x24); columns 0.4 -> 16, 0.48 -> 19
     plot.x_marks = vec![mark(0.4, "narrow ok>"), mark(0.48, "now")];
     assert_eq!(labels(&plot), owned(&[(7, "narrow ok>"), (18, "now")]));
 }

@@ -1,4 +1,4 @@
-//! The status of a contact solved on the period cell (issue 14): partial or complete, the
+//! The status of a contact solved on the period cell: partial or complete, the
 //! contact fraction, p_max, mu* and psi of the state shown, and where the running-in stands
 //! (stepping, with the simulated time reached, or the simulated time to complete contact).
 

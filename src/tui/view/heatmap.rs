@@ -23,7 +23,7 @@ pub const SYMBOL: &str = "p";
 const BAR: u16 = 8;
 
 /// The most bands: few enough that each is told apart from its neighbours and found on the bar,
-/// and that a map redraws in under 8 kB over SSH at 120x40 in 256 colours (issue 10: bytes go
+/// and that a map redraws in under 8 kB over SSH at 120x40 in 256 colours (bytes go
 /// with the colour changes along each row). Measured on the four bundled maps, 6 is the most
 /// that all meet it: at 7 dispersion.toml has 7 bands of 0.25 MPa (9.9 kB), at 8 also
 /// jgh-egg-box.toml 8 of 25 MPa (8.9 kB) and contact-lost.toml 8 of 2 MPa (8.6 kB).

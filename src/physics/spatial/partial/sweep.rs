@@ -1,4 +1,4 @@
-//! mu* against the mean pressure over the whole range (issue 14, item 3): partial contact below
+//! mu* against the mean pressure over the whole range: partial contact below
 //! the complete-contact load, the closed form above it, one curve.
 
 use std::ops::ControlFlow;
