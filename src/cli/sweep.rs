@@ -13,7 +13,7 @@ use wearlab::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use wearlab::sweeps::quantity::{self, QuantityKey};
 use wearlab::sweeps::{output, sweep};
 
-use crate::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
+use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
 
 /// What `wearlab sweep` was asked.
 pub struct Request<'a> {

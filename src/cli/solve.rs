@@ -1,0 +1,119 @@
+//! `wearlab solve PRESET [--format json|csv] [--points N] [--time T] [--probe X,Y] [--set ...]`:
+//! the library's report of one preset (`report::plane_report`, `spatial_report`) on stdout.
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use wearlab::physics::SolveError;
+use wearlab::physics::limits::{self, Limit};
+use wearlab::preset::Problem;
+use wearlab::{finite, report, spatial_report};
+
+use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
+
+/// Profile points when `--points` is not given.
+const DEFAULT_POINTS: usize = 201;
+
+fn number(text: &str, name: &str, limit: &Limit) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number (allowed {})", limit.allowed))?;
+    limit.check(name, v)?;
+    Ok(v)
+}
+
+/// Reads `--points N`.
+pub fn parse_points(text: &str) -> Result<usize, String> {
+    number(text, "--points", &limits::PROFILE_POINTS).map(|n| n as usize)
+}
+
+/// Reads `--time T` [s].
+pub fn parse_time(text: &str) -> Result<f64, String> {
+    number(text, "--time", &limits::TIME)
+}
+
+/// Reads `--probe X,Y` [m].
+pub fn parse_probe(text: &str) -> Result<[f64; 2], String> {
+    match text.split(',').collect::<Vec<_>>().as_slice() {
+        [x, y] => Ok([
+            number(x, "x", &limits::PROBE)?,
+            number(y, "y", &limits::PROBE)?,
+        ]),
+        _ => Err(format!("'{text}' is not a point X,Y in metres")),
+    }
+}
+
+fn solver_failure(e: SolveError) -> ExitCode {
+    say(&format!("error: {e}"));
+    match e {
+        SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
+        SolveError::NoSolution(_) => ExitCode::from(EXIT_UNSOLVABLE),
+    }
+}
+
+/// The options of `solve` that apply to one problem only.
+pub struct Overrides {
+    pub points: Option<usize>,
+    pub time: Option<f64>,
+    pub probes: Vec<[f64; 2]>,
+    /// `--set KEY=VALUE`, in order.
+    pub settings: Vec<String>,
+}
+
+impl Overrides {
+    /// An option given for the other problem is an error: a script that asks for `--time` on a
+    /// plane preset expects an answer that depends on it, and would silently get one that does not.
+    fn check(&self, problem: Problem) -> Result<(), String> {
+        let (misplaced, this, other) = match problem {
+            Problem::Plane if self.time.is_some() => ("--time", "plane", "spatial"),
+            Problem::Plane if !self.probes.is_empty() => ("--probe", "plane", "spatial"),
+            Problem::Spatial if self.points.is_some() => ("--points", "spatial", "plane"),
+            _ => return Ok(()),
+        };
+        Err(format!(
+            "{misplaced} applies to {other} presets only; this preset solves problem = \"{this}\""
+        ))
+    }
+}
+
+/// Runs `wearlab solve`.
+pub fn run(path: &Path, format: Format, options: &Overrides) -> ExitCode {
+    let preset = match load_with(path, &options.settings) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    if let Err(why) = options.check(preset.problem) {
+        say(&format!("error: {why}"));
+        return ExitCode::from(EXIT_INVALID);
+    }
+    match preset.problem {
+        Problem::Plane => {
+            let points = options.points.unwrap_or(DEFAULT_POINTS);
+            match report::plane_report(&preset, points) {
+                Ok(r) => match format {
+                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                    Format::Csv => {
+                        let csv = report::profile_csv(&r.profile);
+                        let guard = finite::check_csv(&csv);
+                        print(&csv, guard)
+                    }
+                },
+                Err(e) => solver_failure(e),
+            }
+        }
+        Problem::Spatial => {
+            match spatial_report::spatial_report(&preset, options.time, &options.probes) {
+                Ok(r) => match format {
+                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                    Format::Csv => {
+                        let csv = spatial_report::field_csv(&r);
+                        let guard = finite::check_csv(&csv);
+                        print(&csv, guard)
+                    }
+                },
+                Err(e) => solver_failure(e),
+            }
+        }
+    }
+}
