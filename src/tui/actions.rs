@@ -7,11 +7,12 @@ use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
 use crate::tui::chart_keys;
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
-use crate::tui::explore::{self, View};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
 use crate::tui::map_cursor;
-use crate::tui::sweep_form;
+use crate::tui::sweep_form_keys;
+use crate::tui::sweep_keys;
+use crate::tui::sweep_state::View;
 
 /// The most harmonics a punch has (`limits::HARMONICS`).
 pub const MAX_HARMONICS: usize = crate::physics::limits::HARMONICS.max as usize;
@@ -115,19 +116,19 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::Pin | Action::ClearPins | Action::LogY | Action::Export | Action::ExportSvg
             if app.explore.view.is_some() =>
         {
-            app.complain(explore::not_here(app));
+            app.complain(sweep_keys::not_here(app));
             Vec::new()
         }
         Action::Export => export(app, app.ui.chart, Format::Csv),
         Action::ExportSvg => export(app, app.ui.chart, Format::Svg),
-        Action::Sweep => sweep_form::open(app, View::Sweep),
-        Action::Map => sweep_form::open(app, View::Map),
+        Action::Sweep => sweep_form_keys::open(app, View::Sweep),
+        Action::Map => sweep_form_keys::open(app, View::Map),
         Action::Dimensionless => {
-            explore::toggle_dimensionless(app);
+            sweep_keys::toggle_dimensionless(app);
             Vec::new()
         }
         Action::Cursor | Action::MoveCursor(_) if app.explore.view == Some(View::Map) => {
-            explore::move_cell(app, action);
+            sweep_keys::move_cell(app, action);
             Vec::new()
         }
         Action::Cursor | Action::MoveCursor(_) if map_cursor::on_map(app) => {
@@ -218,7 +219,7 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.doc.dirty = false;
     app.ui.selected = 0;
     app.ui.chart = Chart::first(app.doc.preset.problem);
-    explore::reopen(app);
+    sweep_keys::reopen(app);
     app.ui.playing = false;
     app.say(format!("opened {}", entry.source));
     vec![app.request()]

@@ -10,10 +10,9 @@ use ratatui::crossterm::event::KeyEvent;
 use crate::engine::explore::{ExploreAnswer, ExploreRequest};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
-use crate::tui::explore::Explore;
 use crate::tui::form::{self, Change, Row};
-use crate::tui::sweep_form::SweepForm;
-use crate::tui::view::MIN_SIZE;
+use crate::tui::sweep_state::Explore;
+use crate::tui::sweep_state::SweepForm;
 
 /// The preset being edited and its history.
 #[derive(Clone, Debug)]
@@ -27,6 +26,9 @@ pub struct Document {
     /// Earlier presets with the change that left each, newest last.
     pub undo: Vec<(Preset, Change)>,
 }
+
+/// The smallest terminal the explorer draws in (and the screen assumed before the first draw).
+pub const MIN_SIZE: (u16, u16) = (80, 24);
 
 /// Undo keeps this many steps.
 pub const UNDO_DEPTH: usize = 200;
@@ -281,7 +283,7 @@ pub struct App {
 }
 
 impl App {
-    /// A new app on a preset; the first solve is asked by `start`.
+    /// A new app on a preset; the first solve is asked by `start` (update.rs).
     pub fn new(preset: Preset, path: Option<PathBuf>, places: Places) -> App {
         App {
             places,
@@ -309,13 +311,6 @@ impl App {
             },
             solve: Solve::default(),
         }
-    }
-
-    /// The command that asks for the first solve.
-    pub fn start(&mut self) -> Vec<Command> {
-        let mut commands = vec![self.request()];
-        commands.extend(crate::tui::explore::follow(self));
-        commands
     }
 
     /// A new request for the current preset and chart.

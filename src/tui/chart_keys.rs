@@ -8,7 +8,7 @@ use crate::tui::charts::contact::Fields;
 use crate::tui::charts::range::{Frame, constant, frames, plotted};
 use crate::tui::charts::{Figure, Plot, Scale};
 use crate::tui::keys::Action;
-use crate::tui::view::shown;
+use crate::tui::on_screen::on_screen;
 
 /// Pins a chart keeps at most.
 pub const MAX_PINS: usize = 3;
@@ -64,9 +64,9 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
 /// The plots of the shown answer on the visible chart (none for a map or while solving).
 fn plots(app: &App) -> Vec<Plot> {
     if app.explore.view.is_some() {
-        return crate::tui::view::explore::sweep_plots(app).unwrap_or_default();
+        return crate::tui::view::sweep::sweep_plots(app).unwrap_or_default();
     }
-    let Some((answer, _)) = shown(app).answer() else {
+    let Some((answer, _)) = on_screen(app).answer() else {
         return Vec::new();
     };
     match app.ui.chart.build(answer) {
@@ -139,7 +139,7 @@ pub fn moved(frames: &[Frame], at: f64, points: i32) -> f64 {
 }
 
 fn pin(app: &mut App) {
-    let Some((answer, _)) = shown(app).answer() else {
+    let Some((answer, _)) = on_screen(app).answer() else {
         app.say("nothing to pin yet (solving…)");
         return;
     };

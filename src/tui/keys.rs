@@ -1,13 +1,11 @@
 //! Every key of the explorer in one place: the bindings of the main screen (key, action, help
-//! line, footer item) here, the keys of the prompts in `prompt_keys` (re-exported). Key handling,
+//! line, footer item) here, the keys of the prompts in `prompt_keys`. Key handling,
 //! the `?` help, the footers and README's key table are all drawn from these tables.
 
 use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use crate::tui::view::RenderOptions;
-
-pub use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action, prompt_footer};
+use crate::tui::view::theme::RenderOptions;
 
 /// What a key on the main screen does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,14 +1,13 @@
 //! The pressure map's cell cursor (chart 1/5), the UI side (part of `update`: pure) and its
 //! readout: `x` shows or hides it at the grid point in the middle of the map, `[ ]` move it a
 //! grid point along x, `{ }` along y, as on the regime map. It is a grid point (column, row), so
-//! that while time plays it stays at its x, y and the status reads the value there as it changes.
-//! The value is the map's own, read from the figure drawn: no physics here.
+//! that while time plays it stays at its x, y and the status reads the value there as it changes
+//! (`view::map_readout`).
 
 use crate::tui::app::App;
 use crate::tui::charts::{Chart, Figure, Map, SpatialChart};
 use crate::tui::keys::Action;
-use crate::tui::view::heatmap;
-use crate::tui::view::shown;
+use crate::tui::on_screen::on_screen;
 
 /// Whether the visible chart is the pressure map (the keys `x [ ] { }` then work its cursor).
 pub fn on_map(app: &App) -> bool {
@@ -20,7 +19,7 @@ pub fn visible(app: &App) -> Option<Map> {
     if !on_map(app) {
         return None;
     }
-    let (answer, _) = shown(app).answer()?;
+    let (answer, _) = on_screen(app).answer()?;
     match app.ui.chart.build(answer) {
         Ok(Figure::Map(map)) => Some(map),
         _ => None,
@@ -87,30 +86,4 @@ pub fn moved((i, j): (usize, usize), step: i32, (nx, ny): (usize, usize)) -> (us
 /// The grid point of the cursor on `map` (a grid of another size, after an edit, clamps it).
 pub fn cell(map: &Map, (i, j): (usize, usize)) -> (usize, usize) {
     (i.min(map.x.len() - 1), j.min(map.y.len() - 1))
-}
-
-/// The status's readout at the cursor: x and y of the grid point and the map's value there with
-/// its unit (`units::format_si`), or that there is no contact.
-pub fn readout(map: &Map, at: (usize, usize)) -> Vec<String> {
-    let (i, j) = cell(map, at);
-    let v = map.values[j * map.x.len() + i];
-    let value = match map.empty {
-        Some(label) if v == 0.0 => label.to_string(),
-        _ => format!(
-            "{} = {}",
-            heatmap::SYMBOL,
-            crate::units::format_si(v, map.unit)
-        ),
-    };
-    vec![
-        format!("cursor x = {}", crate::units::format_si(map.x[i], "m")),
-        format!("y = {}:", crate::units::format_si(map.y[j], "m")),
-        value,
-    ]
-}
-
-/// The readout of the visible map's cursor, when it is on.
-pub fn status(app: &App) -> Option<Vec<String>> {
-    let at = app.ui.map_cell?;
-    visible(app).map(|map| readout(&map, at))
 }

@@ -9,13 +9,16 @@ pub mod chart_keys;
 pub mod charts;
 pub mod effects;
 pub mod event_loop;
-pub mod explore;
 pub mod form;
 pub mod glossary;
 pub mod keys;
 pub mod map_cursor;
+pub mod on_screen;
 pub mod prompt_keys;
-pub mod sweep_form;
+pub mod sweep_form_keys;
+pub mod sweep_keys;
+pub mod sweep_shown;
+pub mod sweep_state;
 pub mod update;
 pub mod view;
 

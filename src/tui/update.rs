@@ -9,12 +9,23 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use crate::tui::actions::{act, apply, export, open, quit};
 use crate::tui::app::{App, Command, Mode, Msg};
 use crate::tui::chart_keys;
-use crate::tui::keys::{self, Prompt, PromptAction};
+use crate::tui::keys;
+use crate::tui::prompt_keys::{self, Prompt, PromptAction};
+
+impl App {
+    /// The commands that ask for the first solve (and the first sweep, when the preset opens on
+    /// one).
+    pub fn start(&mut self) -> Vec<Command> {
+        let mut commands = vec![self.request()];
+        commands.extend(crate::tui::sweep_keys::sweep_request(self));
+        commands
+    }
+}
 
 /// Changes the model for one message; returns what the loop must do.
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     let mut commands = dispatch(app, msg);
-    commands.extend(crate::tui::explore::follow(app));
+    commands.extend(crate::tui::sweep_keys::sweep_request(app));
     commands
 }
 
@@ -52,7 +63,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             Vec::new()
         }
         Msg::Explored(answer) => {
-            crate::tui::explore::on_answer(app, *answer);
+            crate::tui::sweep_keys::on_answer(app, *answer);
             Vec::new()
         }
         Msg::ExportExists(path, text) => {
@@ -130,7 +141,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
         Mode::Choosing(selected) => {
             let choices = app.row().param().choices().unwrap_or_default();
-            match keys::prompt_action(Prompt::List, &key) {
+            match prompt_keys::prompt_action(Prompt::List, &key) {
                 Some(PromptAction::Accept) => {
                     app.ui.mode = Mode::Normal;
                     app.ui.message = None;
@@ -169,7 +180,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             entries,
             selected,
             scroll,
-        } => match keys::prompt_action(Prompt::Picker, &key) {
+        } => match prompt_keys::prompt_action(Prompt::Picker, &key) {
             Some(PromptAction::Accept) => {
                 app.ui.mode = Mode::Normal;
                 let Some(entry) = entries.get(selected).cloned() else {
@@ -252,7 +263,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 Vec::new()
             }
         }
-        Mode::Form(form) => crate::tui::sweep_form::key(app, *form, key),
+        Mode::Form(form) => crate::tui::sweep_form_keys::key(app, *form, key),
         Mode::ConfirmQuit(from) => {
             if yes(&key) {
                 return vec![Command::Quit];
@@ -265,7 +276,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
 }
 
 fn yes(key: &KeyEvent) -> bool {
-    keys::prompt_action(Prompt::Question, key) == Some(PromptAction::Yes)
+    prompt_keys::prompt_action(Prompt::Question, key) == Some(PromptAction::Yes)
 }
 
 fn moved(selected: usize, len: usize, action: Option<PromptAction>) -> usize {
@@ -285,7 +296,7 @@ fn text_key(
     mode: fn(String) -> Mode,
     accept: fn(&mut App, String) -> Vec<Command>,
 ) -> Vec<Command> {
-    match keys::prompt_action(Prompt::Text, &key) {
+    match prompt_keys::prompt_action(Prompt::Text, &key) {
         Some(PromptAction::Accept) => accept(app, buffer),
         Some(PromptAction::Cancel) => {
             let what = match app.ui.mode {
@@ -351,7 +362,7 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
 /// The scroll of a text window (the help, the preset's description) after a key, stopping at
 /// `last`; None closes it.
 fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
-    match keys::prompt_action(Prompt::Help, key)? {
+    match prompt_keys::prompt_action(Prompt::Help, key)? {
         PromptAction::Up => Some(scroll.min(last).saturating_sub(1)),
         PromptAction::Down => Some(scroll.saturating_add(1).min(last)),
         PromptAction::PageUp => Some(scroll.min(last).saturating_sub(10)),

@@ -123,7 +123,7 @@ pub fn caption(preset: &Preset, width: usize) -> Vec<String> {
         preset.problem.name()
     )];
     lines.extend(
-        crate::tui::view::status::pack(&items, width, "")
+        crate::tui::view::wrapping::pack(&items, width, "")
             .into_iter()
             .map(|l| l.replace(",  ", ", ")),
     );

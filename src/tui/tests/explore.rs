@@ -8,7 +8,7 @@ use ratatui::crossterm::event::KeyCode;
 
 use super::*;
 use crate::tui::app::Mode;
-use crate::tui::explore::View;
+use crate::tui::sweep_state::View;
 
 /// Computes the explorer's requests among `commands` as its thread would (every map pass, then
 /// the end) and delivers the answers.
@@ -161,7 +161,7 @@ fn sweep_screens() {
     let top = lines.iter().position(|l| l.contains('┤')).unwrap();
     let axis = lines.iter().position(|l| l.contains(" └")).unwrap();
     assert!(axis - top >= 6, "{small}");
-    assert!(small.contains(crate::tui::view::explore::LESSON_ELSEWHERE));
+    assert!(small.contains(crate::tui::view::sweep::LESSON_ELSEWHERE));
     // without colour each model's failing part has its own mark, named in the legend
     assert!(
         small.contains(",, wide fails") && small.contains("'' narrow fails"),
@@ -263,7 +263,7 @@ fn the_map_cursor_reads_mu_star_with_six_decimals() {
     settle(&mut app, cmds.clone());
     explored(&mut app, &cmds);
     press(&mut app, KeyCode::Char('x'));
-    let items = crate::tui::view::explore::readout(&app).unwrap();
+    let items = crate::tui::view::sweep::readout(&app).unwrap();
     let read = items.iter().find(|i| i.starts_with("mu* = ")).unwrap();
     let decimals = read.trim_start_matches("mu* = ").split('.').nth(1).unwrap();
     assert_eq!(decimals.len(), 6, "{items:?}");
@@ -283,7 +283,7 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
     // 12 significant digits (units::CLEAN_DIGITS) - no 0.4999999999999999 nor 1.0000000000000002e-6
     for b in crate::preset::BUNDLED {
         let mut app = app(b.file);
-        let count = crate::tui::explore::parameters(&app.doc.preset).len();
+        let count = crate::tui::sweep_shown::parameters(&app.doc.preset).len();
         for n in 0..count {
             press(&mut app, KeyCode::Char('v'));
             for _ in 0..n {

@@ -6,7 +6,8 @@ use crate::physics::plane::Model;
 use crate::preset::Problem;
 
 use super::{ASCII, PLAIN};
-use crate::tui::keys::{Action, BINDINGS, Prompt, footer, lookup, prompt_footer};
+use crate::tui::keys::{Action, BINDINGS, footer, lookup};
+use crate::tui::prompt_keys::{Prompt, prompt_footer};
 
 /// Every action, for the test that each one is bound.
 const ACTIONS: [Action; 31] = [

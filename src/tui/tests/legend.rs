@@ -54,7 +54,7 @@ fn the_legend_goes_to_an_empty_corner_and_nowhere_else_without_one() {
 
 /// Every data cell of every plot still shows its curve after the whole chart is drawn.
 fn no_data_cell_covered(app: &App, w: u16, h: u16, style: RenderOptions) {
-    let Some((answer, _)) = crate::tui::view::shown(app).answer() else {
+    let Some((answer, _)) = crate::tui::on_screen::on_screen(app).answer() else {
         panic!("no answer")
     };
     let Ok(Figure::Plots(plots)) = app.ui.chart.build(answer) else {

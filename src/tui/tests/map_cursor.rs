@@ -6,7 +6,8 @@ use ratatui::crossterm::event::KeyCode;
 
 use super::*;
 use crate::tui::charts::Map;
-use crate::tui::map_cursor::{self, readout};
+use crate::tui::map_cursor;
+use crate::tui::view::map_readout::{self, readout};
 use crate::units::format_si;
 
 /// A 3 x 2 map whose every value differs (units of Pa), one of them no contact.
@@ -76,7 +77,7 @@ fn x_and_brackets_move_a_cell_cursor_that_stays_while_time_changes() {
     let moved = later.values[31 * 64 + 35];
     assert_ne!(moved, at_zero.values[31 * 64 + 35]);
     assert_eq!(
-        map_cursor::status(&app).unwrap()[2],
+        map_readout::status(&app).unwrap()[2],
         format!("p = {}", format_si(moved, "Pa"))
     );
     press(&mut app, KeyCode::Char('x'));

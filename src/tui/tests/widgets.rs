@@ -2,8 +2,9 @@
 
 use crate::tui::charts::range::{bounds, frames};
 use crate::tui::charts::{Axis, Plot, Scale, Series};
-use crate::tui::view::status::{pack, visible};
+use crate::tui::view::status_values::visible;
 use crate::tui::view::wrap;
+use crate::tui::view::wrapping::pack;
 
 fn axis(unit: &'static str, scale: Scale) -> Axis {
     Axis {

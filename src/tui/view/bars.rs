@@ -7,7 +7,8 @@ use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
 use crate::tui::app::{App, Mode};
-use crate::tui::keys::{self, Prompt};
+use crate::tui::keys;
+use crate::tui::prompt_keys::{self, Prompt};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::{wrap, wrap_within};
 
@@ -90,7 +91,7 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
 pub fn draw_footer(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let text = match prompt(&app.ui.mode) {
         None => keys::footer(app.doc.preset.problem, area.width as usize, style),
-        Some(p) => style.text(&keys::prompt_footer(p)).into_owned(),
+        Some(p) => style.text(&prompt_keys::prompt_footer(p)).into_owned(),
     };
     frame.render_widget(Paragraph::new(text).style(style.footer()), area);
 }

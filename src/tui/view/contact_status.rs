@@ -8,9 +8,10 @@ use crate::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEP
 use crate::units::format_si;
 use ratatui::text::Line;
 
-use crate::tui::view::status::{mu_star, pack};
+use crate::tui::view::status_values::mu_star;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
+use crate::tui::view::wrapping::pack;
 
 /// The contact fraction as a whole percentage, never rounded up to 100 % nor down to 0 %.
 pub fn percent(fraction: f64) -> String {

@@ -10,8 +10,10 @@ use ratatui::text::Line;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status::{mu_star, number, pack, per_output, prose, visible, with_validity};
+use crate::tui::view::status_values::{mu_star, number, per_output, prose, visible};
 use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::validity_status::with_validity;
+use crate::tui::view::wrapping::pack;
 
 /// The status panel's title: it says when the values are groups.
 pub fn title(app: &App) -> &'static str {

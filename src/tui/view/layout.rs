@@ -21,8 +21,7 @@
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
-/// The smallest terminal the explorer draws in.
-pub const MIN_SIZE: (u16, u16) = (80, 24);
+pub use crate::tui::app::MIN_SIZE;
 
 /// The regions of the main screen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -7,9 +7,9 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::tui::app::App;
-use crate::tui::explore::View;
-use crate::tui::view::explore;
+use crate::tui::sweep_state::View;
 use crate::tui::view::layout::centered;
+use crate::tui::view::sweep;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
 use crate::tui::{glossary, keys};
@@ -43,8 +43,8 @@ pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'st
     let (i, n) = chart.position();
     // what the chart area shows: the sweep or the map over the charts when one is on
     let (title, text) = match app.explore.view {
-        Some(View::Sweep) => ("This view: the sweep chart (v)".into(), explore::SWEEP_HELP),
-        Some(View::Map) => ("This view: the regime map (M)".into(), explore::MAP_HELP),
+        Some(View::Sweep) => ("This view: the sweep chart (v)".into(), sweep::SWEEP_HELP),
+        Some(View::Map) => ("This view: the regime map (M)".into(), sweep::MAP_HELP),
         None => (
             format!("This chart ({i}/{n}): {}", chart.title()),
             chart.help(),

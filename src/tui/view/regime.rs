@@ -16,7 +16,7 @@ use crate::tui::charts::Scale;
 use crate::tui::charts::palette::level;
 use crate::tui::charts::range::bounds;
 use crate::tui::charts::ticks::ticks;
-use crate::tui::view::status;
+use crate::tui::view::status_values;
 use crate::tui::view::theme::RenderOptions;
 
 /// Columns of the y tick labels.
@@ -295,7 +295,7 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
     ];
     items.extend(
         s.theta
-            .map(|t| format!("theta = {}", status::number("theta", t))),
+            .map(|t| format!("theta = {}", status_values::number("theta", t))),
     );
     let verdict = |ok: bool| if ok { "holds" } else { "fails" };
     items.extend(s.wide_holds.map(|h| format!("wide {}", verdict(h))));

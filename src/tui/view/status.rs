@@ -2,7 +2,7 @@
 //! inputs (never from the form). Values are packed into lines whole, never broken across lines;
 //! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
 
-use crate::engine::{Answer, Output, SpatialOutput};
+use crate::engine::{Answer, SpatialOutput};
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
 use crate::physics::plane::validity::StripCheck;
@@ -17,45 +17,16 @@ use crate::tui::charts::contact;
 use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot};
+use crate::tui::on_screen::OnScreen;
+use crate::tui::view::status_values::{mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::{Shown, note, validity_status, wrap};
+use crate::tui::view::validity_status::with_validity;
+use crate::tui::view::wrapping::pack;
 use crate::tui::view::{contact_status, groups_status};
-
-/// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item
-/// that fits a line (one longer than a line is wrapped by `wrap`, whole values together);
-/// continuation lines start with `indent`.
-pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
-    let mut lines = Vec::new();
-    let mut line = String::new();
-    for item in items {
-        let len = line.chars().count();
-        if !line.is_empty() && len + 2 + item.chars().count() > width {
-            lines.push(std::mem::replace(&mut line, indent.to_string()));
-        } else if !line.is_empty() && line != indent {
-            line.push_str("  ");
-        }
-        let room = width.saturating_sub(line.chars().count());
-        if item.chars().count() <= room {
-            line.push_str(item);
-            continue;
-        }
-        // too long for any line: wrapped, each part on a line of its own but the last
-        let mut parts = wrap(item, width.saturating_sub(indent.len()).max(1)).into_iter();
-        if let Some(first) = parts.next() {
-            line.push_str(&first);
-        }
-        for part in parts {
-            lines.push(std::mem::replace(&mut line, format!("{indent}{part}")));
-        }
-    }
-    if !line.is_empty() {
-        lines.push(line);
-    }
-    lines
-}
+use crate::tui::view::{note, wrap};
 
 /// Draws the status of the shown result into `area`.
-pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, area: Rect) {
+pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let block = Block::default().borders(Borders::ALL).title(format!(
         " {}{} ",
         groups_status::title(app),
@@ -69,8 +40,8 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     let width = inner.width as usize;
     // the cursor readout first, each value whole
     let readout = match app.explore.view {
-        Some(_) => crate::tui::view::explore::readout(app),
-        None => cursor_readout(app, answer).or_else(|| crate::tui::map_cursor::status(app)),
+        Some(_) => crate::tui::view::sweep::readout(app),
+        None => cursor_readout(app, answer).or_else(|| crate::tui::view::map_readout::status(app)),
     };
     let mut lines: Vec<Line> = readout
         .map(|items| pack(&items, width, "  "))
@@ -96,24 +67,6 @@ pub fn draw(app: &App, shown: &Shown, style: RenderOptions, frame: &mut Frame, a
     }
 }
 
-/// The status lines of an output: a failed solve in words, else the lines `plane` or `spatial`
-/// make of it (the dimensional status and the dimensionless view differ only there).
-pub fn per_output(
-    output: &Output,
-    style: RenderOptions,
-    plane: impl FnOnce(&OperatingPoint, Option<&StripCheck>) -> Vec<Line<'static>>,
-    spatial: impl FnOnce(&SpatialOutput) -> Vec<Line<'static>>,
-) -> Vec<Line<'static>> {
-    match output {
-        Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref()),
-            Err(e) => vec![Line::styled(e.to_string(), style.error())],
-        },
-        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
-        Output::Spatial(Ok(out)) => spatial(out),
-    }
-}
-
 /// The cursor readout of the visible chart, when the cursor is on and the chart has curves.
 fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
     let cursor = app.ui.cursor?;
@@ -127,31 +80,6 @@ fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
     let mut items = readout(&frames, cursor);
     items[0] = format!("cursor {}:", items[0]);
     Some(items)
-}
-
-/// "mu* = 0.299822 (mu 0.3)": six decimals, so that mu* - mu reads off to 1e-6 (it is often
-/// a few 1e-5).
-pub fn mu_star(value: f64, mu: f64) -> String {
-    format!("mu* = {value:.6} (mu {mu})")
-}
-
-/// How a dimensionless quantity, named as in `sweeps::groups`, is written wherever a screen
-/// shows it (the status, the groups of `D`, the map's cursor): four significant digits
-/// (`format_si`), the phase lead with its sign. mu* has its own rule (`mu_star`).
-pub fn number(name: &str, value: f64) -> String {
-    let text = format_si(value, "");
-    match name {
-        "harmonics.N.phase_lead" if value > 0.0 => format!("+{text}"),
-        _ => text,
-    }
-}
-
-/// A sentence wrapped to the panel, in one style.
-pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
-    wrap(text, width)
-        .into_iter()
-        .map(|l| Line::styled(l, style))
-        .collect()
 }
 
 fn plane(
@@ -184,22 +112,6 @@ fn residual(r: f64) -> String {
     } else {
         format!("I-J residual {r:.1e}")
     }
-}
-
-/// A plane status: `items` packed into lines, then the validity lines in the room left (the
-/// dimensional status and the dimensionless view share it).
-pub fn with_validity(
-    items: &[String],
-    p: &OperatingPoint,
-    check: Option<&StripCheck>,
-    style: RenderOptions,
-    width: usize,
-    height: usize,
-) -> Vec<Line<'static>> {
-    let mut lines: Vec<Line> = pack(items, width, "").into_iter().map(Line::from).collect();
-    let room = height.saturating_sub(lines.len());
-    lines.extend(validity_status::lines(p, check, style, width, room));
-    lines
 }
 
 fn spatial(
@@ -329,23 +241,4 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
         );
     }
     lines
-}
-
-/// Which harmonic blocks fit in `room` lines: (first, count), keeping the selected one in view.
-pub fn visible(blocks: &[Vec<String>], selected: Option<usize>, room: usize) -> (usize, usize) {
-    let fits_from = |first: usize| {
-        let mut used = 0;
-        blocks[first..]
-            .iter()
-            .take_while(|b| {
-                used += b.len();
-                used <= room
-            })
-            .count()
-    };
-    let want = selected.unwrap_or(0).min(blocks.len().saturating_sub(1));
-    let first = (0..=want)
-        .find(|&f| f + fits_from(f) > want)
-        .unwrap_or(want);
-    (first, fits_from(first))
 }

@@ -7,9 +7,10 @@ use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::validity::StripCheck;
 use ratatui::text::Line;
 
-use crate::tui::view::status::{number, prose};
+use crate::tui::view::status_values::{number, prose};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap_within;
+use crate::tui::view::wrapping::pack;
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
 /// the verdict when the model holds, the check against the strip model once it has come (how
@@ -96,4 +97,20 @@ pub fn lines(
         style.error(),
     ));
     lines
+}
+
+/// A plane status: `items` packed into lines, then the validity lines in the room left (the
+/// dimensional status and the dimensionless view share it).
+pub fn with_validity(
+    items: &[String],
+    p: &OperatingPoint,
+    check: Option<&StripCheck>,
+    style: RenderOptions,
+    width: usize,
+    height: usize,
+) -> Vec<Line<'static>> {
+    let mut out: Vec<Line> = pack(items, width, "").into_iter().map(Line::from).collect();
+    let room = height.saturating_sub(out.len());
+    out.extend(lines(p, check, style, width, room));
+    out
 }

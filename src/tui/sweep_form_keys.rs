@@ -7,97 +7,16 @@
 
 use crate::physics::Spacing;
 use crate::physics::limits;
-use crate::preset::Key;
-use crate::sweeps::{Axis, QuantityKey};
-use crate::units::{format_si_exact, parse_si};
+use crate::sweeps::Axis;
+use crate::units::parse_si;
 
 use crate::sweeps::curve::CurveSpec;
 use crate::sweeps::map::MapSpec;
 use crate::tui::app::{App, Command, Mode};
-use crate::tui::explore::{View, curve_spec, map_spec, parameters, quantities};
-use crate::tui::keys::{self, Prompt, PromptAction};
+use crate::tui::prompt_keys::{self, Prompt, PromptAction};
+use crate::tui::sweep_shown::{curve_spec, map_spec, parameters, quantities};
+use crate::tui::sweep_state::{Draft, Field, SweepForm, View};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-
-/// One axis as typed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Draft {
-    /// The parameter.
-    pub key: Key,
-    /// The first value, as typed (the parameter's unit when none is typed).
-    pub from: String,
-    /// The last value.
-    pub to: String,
-    /// The number of points.
-    pub points: String,
-    /// Log spacing (else linear).
-    pub log: bool,
-}
-
-impl Draft {
-    fn of(axis: &Axis) -> Draft {
-        Draft {
-            key: axis.key,
-            from: format_si_exact(axis.range.min, axis.key.param().unit),
-            to: format_si_exact(axis.range.max, axis.key.param().unit),
-            points: axis.range.points.to_string(),
-            log: axis.range.spacing == Spacing::Log,
-        }
-    }
-}
-
-/// A row of the form.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Field {
-    /// The parameter of axis n (←→ choose).
-    Param(usize),
-    /// Its first value (typed).
-    From(usize),
-    /// Its last value (typed).
-    To(usize),
-    /// Its number of points (typed).
-    Points(usize),
-    /// Log or linear (←→).
-    Scale(usize),
-    /// The quantity shown (←→).
-    Quantity,
-}
-
-/// The form's state.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SweepForm {
-    /// A sweep (one axis) or a map (two).
-    pub view: View,
-    /// The axes.
-    pub axes: Vec<Draft>,
-    /// The quantity.
-    pub quantity: QuantityKey,
-    /// The selected row.
-    pub row: usize,
-}
-
-impl SweepForm {
-    /// The rows, in order.
-    pub fn fields(&self) -> Vec<Field> {
-        (0..self.axes.len())
-            .flat_map(|n| {
-                [
-                    Field::Param(n),
-                    Field::From(n),
-                    Field::To(n),
-                    Field::Points(n),
-                    Field::Scale(n),
-                ]
-            })
-            .chain([Field::Quantity])
-            .collect()
-    }
-
-    /// The selected row.
-    pub fn field(&self) -> Field {
-        let fields = self.fields();
-        fields[self.row.min(fields.len() - 1)]
-    }
-}
 
 /// Opens the form on what the view shows now.
 pub fn open(app: &mut App, view: View) -> Vec<Command> {
@@ -135,7 +54,7 @@ fn cycle<T: PartialEq + Copy>(all: &[T], now: T, up: bool) -> T {
 pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
     let preset = &app.doc.preset;
     let rows = form.fields().len();
-    match keys::prompt_action(Prompt::Form, &key) {
+    match prompt_keys::prompt_action(Prompt::Form, &key) {
         Some(PromptAction::Accept) => return accept(app, form),
         Some(PromptAction::Cancel) => {
             app.ui.mode = Mode::Normal;

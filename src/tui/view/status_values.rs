@@ -1,0 +1,73 @@
+//! How the status panels write what they show: a failed solve in words, mu* and the
+//! dimensionless numbers, a sentence wrapped to the panel, and which harmonics fit.
+
+use crate::engine::{Output, SpatialOutput};
+use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::validity::StripCheck;
+use crate::units::format_si;
+use ratatui::text::Line;
+
+use crate::tui::view::theme::RenderOptions;
+use crate::tui::view::wrap;
+
+/// The status lines of an output: a failed solve in words, else the lines `plane` or `spatial`
+/// make of it (the dimensional status and the dimensionless view differ only there).
+pub fn per_output(
+    output: &Output,
+    style: RenderOptions,
+    plane: impl FnOnce(&OperatingPoint, Option<&StripCheck>) -> Vec<Line<'static>>,
+    spatial: impl FnOnce(&SpatialOutput) -> Vec<Line<'static>>,
+) -> Vec<Line<'static>> {
+    match output {
+        Output::Plane(out) => match &out.point {
+            Ok(p) => plane(p, out.strip_check.as_ref()),
+            Err(e) => vec![Line::styled(e.to_string(), style.error())],
+        },
+        Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
+        Output::Spatial(Ok(out)) => spatial(out),
+    }
+}
+
+/// "mu* = 0.299822 (mu 0.3)": six decimals, so that mu* - mu reads off to 1e-6 (it is often
+/// a few 1e-5).
+pub fn mu_star(value: f64, mu: f64) -> String {
+    format!("mu* = {value:.6} (mu {mu})")
+}
+
+/// How a dimensionless quantity, named as in `sweeps::groups`, is written wherever a screen
+/// shows it (the status, the groups of `D`, the map's cursor): four significant digits
+/// (`format_si`), the phase lead with its sign. mu* has its own rule (`mu_star`).
+pub fn number(name: &str, value: f64) -> String {
+    let text = format_si(value, "");
+    match name {
+        "harmonics.N.phase_lead" if value > 0.0 => format!("+{text}"),
+        _ => text,
+    }
+}
+
+/// A sentence wrapped to the panel, in one style.
+pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
+    wrap(text, width)
+        .into_iter()
+        .map(|l| Line::styled(l, style))
+        .collect()
+}
+
+/// Which harmonic blocks fit in `room` lines: (first, count), keeping the selected one in view.
+pub fn visible(blocks: &[Vec<String>], selected: Option<usize>, room: usize) -> (usize, usize) {
+    let fits_from = |first: usize| {
+        let mut used = 0;
+        blocks[first..]
+            .iter()
+            .take_while(|b| {
+                used += b.len();
+                used <= room
+            })
+            .count()
+    };
+    let want = selected.unwrap_or(0).min(blocks.len().saturating_sub(1));
+    let first = (0..=want)
+        .find(|&f| f + fits_from(f) > want)
+        .unwrap_or(want);
+    (first, fits_from(first))
+}
