@@ -19,7 +19,7 @@ use wearlab::preset::{Preset, bundled};
 use wearlab::tui;
 
 use tui::app::{App, Command, Msg, Places};
-use tui::event_loop::{Loop, Wake};
+use tui::event_loop::{Loop, LoopEvent};
 use tui::update::update;
 use tui::view::{RenderOptions, view};
 
@@ -120,7 +120,7 @@ fn bench(c: &mut Criterion) {
             i += 1;
             l.app.doc.preset.plane.load = 5000.0 + i as f64 * 1e-3;
             let before = l.app.solve.generation;
-            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            keys.send(LoopEvent::Input(Event::Key(right()))).unwrap();
             // the key, then the answer with the new operating point
             let shown = |a: &App| a.solve.shown.as_ref().map(|s| s.generation);
             while l.app.solve.generation == before || shown(&l.app) != Some(l.app.solve.generation)
@@ -169,7 +169,7 @@ fn edit_to_first_partial_state(c: &mut Criterion, name: &str, preset: Preset) {
             i += 1;
             l.app.doc.preset.spatial.mean_pressure = base * (1.0 + 1e-9 * i as f64);
             let before = l.app.solve.generation;
-            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            keys.send(LoopEvent::Input(Event::Key(right()))).unwrap();
             while l.app.solve.generation == before || !partial_on_screen(&l.app) {
                 l.step().unwrap();
             }
@@ -222,7 +222,7 @@ fn map_first_pass(c: &mut Criterion) {
             i += 1;
             l.app.doc.preset.plane.load = 5000.0 * (1.0 + 1e-6 * i as f64);
             let before = l.app.explore.generation;
-            keys.send(Wake::Input(Event::Key(right()))).unwrap();
+            keys.send(LoopEvent::Input(Event::Key(right()))).unwrap();
             while l.app.explore.generation == before || !map_on_screen(&l.app) {
                 l.step().unwrap();
             }

@@ -1,15 +1,15 @@
-//! The explorer's thread (`engine::explore::Explorer`): a newer request cancels a map in
+//! The explorer's thread (`engine::sweep_worker::SweepWorker`): a newer request cancels a map in
 //! progress, whose end is then never delivered, and the newer one is answered to the end.
 
 use std::sync::mpsc::channel;
 use std::time::Duration;
 
-use wearlab::engine::explore::{ExploreRequest, Explorer};
+use wearlab::engine::sweep_worker::{SweepRequest, SweepWorker};
 use wearlab::physics::plane::Model;
 use wearlab::preset::bundled;
 use wearlab::sweeps::Opening;
 
-fn map_request(model: Model) -> ExploreRequest {
+fn map_request(model: Model) -> SweepRequest {
     let mut preset = bundled("friction-or-wear-map.toml").unwrap().unwrap();
     preset.plane.model = model;
     preset.material.thickness = 1e-3;
@@ -17,13 +17,13 @@ fn map_request(model: Model) -> ExploreRequest {
         Opening::Map(m) => Opening::Map(m),
         other => panic!("{other:?}"),
     };
-    ExploreRequest { preset, job }
+    SweepRequest { preset, job }
 }
 
 #[test]
 fn a_newer_input_cancels_a_map_in_progress() {
     let (tx, rx) = channel();
-    let explorer = Explorer::spawn(move |a| tx.send(a).is_ok());
+    let explorer = SweepWorker::spawn(move |a| tx.send(a).is_ok());
     // a 41 x 41 strip map takes seconds; the first pass comes, then the newer request
     explorer.submit(1, map_request(Model::Strip));
     let first = rx

@@ -7,7 +7,7 @@ use crate::engine::{Answer, Request};
 use crate::preset::{Preset, Problem, SaveTarget};
 use ratatui::crossterm::event::KeyEvent;
 
-use crate::engine::explore::{ExploreAnswer, ExploreRequest};
+use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
@@ -221,7 +221,7 @@ pub enum Msg {
     /// An export finished: the file, or why not.
     Exported(PathBuf, Result<(), String>),
     /// The explorer's thread answered (a pass of) a sweep or a map.
-    Explored(Box<ExploreAnswer>),
+    Explored(Box<SweepAnswer>),
 }
 
 /// What the loop must do after an update (the I/O and the solving happen there).
@@ -252,8 +252,8 @@ pub enum Command {
         overwrite: bool,
     },
     /// Compute this sweep or map on the explorer's thread (cancelling older work), answered
-    /// by `Explored`.
-    Explore(u64, Box<ExploreRequest>),
+    /// by `SweepResult`.
+    Explore(u64, Box<SweepRequest>),
     /// Leave.
     Quit,
 }

@@ -29,10 +29,14 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
                 }
             };
         }
-        Action::MoveCursor(points) => match app.ui.cursor {
+        Action::MoveCursor(by) => match app.ui.cursor {
             Some(at) => {
                 let plots = plots(app);
-                app.ui.cursor = Some(moved(&frames(&plots, &pins(app), false), at, points));
+                app.ui.cursor = Some(cursor_moved(
+                    &frames(&plots, &pins(app), false),
+                    at,
+                    by.data_points(),
+                ));
             }
             None => app.say("x shows the cursor first"),
         },
@@ -105,7 +109,7 @@ pub fn start(frames: &[Frame]) -> f64 {
 
 /// The cursor `points` data points of the first curve away from `at` (a fraction of the x
 /// range), or `points` hundredths of the range where there is no curve.
-pub fn moved(frames: &[Frame], at: f64, points: i32) -> f64 {
+pub fn cursor_moved(frames: &[Frame], at: f64, points: i32) -> f64 {
     let Some(f) = frames.first() else {
         return (at + points as f64 / 100.0).clamp(0.0, 1.0);
     };

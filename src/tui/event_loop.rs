@@ -6,7 +6,7 @@ use std::io;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender};
 use std::time::{Duration, Instant};
 
-use crate::engine::explore::{ExploreAnswer, Explorer};
+use crate::engine::sweep_worker::{SweepAnswer, SweepWorker};
 use crate::engine::{Answer, Worker};
 use ratatui::Terminal;
 use ratatui::backend::Backend;
@@ -23,13 +23,13 @@ pub const FRAME: Duration = Duration::from_millis(200);
 
 /// What wakes the loop.
 #[derive(Debug)]
-pub enum Wake {
+pub enum LoopEvent {
     /// A terminal event from the input thread.
     Input(Event),
     /// An answer from the worker.
     Answer(Box<Answer>),
     /// An answer from the explorer's thread (a sweep, a pass of a map).
-    Explored(Box<ExploreAnswer>),
+    Explored(Box<SweepAnswer>),
 }
 
 /// The event loop over any backend (a real terminal, or a test buffer).
@@ -39,9 +39,9 @@ pub struct Loop<B: Backend> {
     /// The model.
     pub app: App,
     render: RenderOptions,
-    wake: Receiver<Wake>,
+    wake: Receiver<LoopEvent>,
     worker: Worker,
-    explorer: Explorer,
+    explorer: SweepWorker,
     next_frame: Instant,
 }
 
@@ -51,12 +51,13 @@ impl<B: Backend> Loop<B> {
         terminal: Terminal<B>,
         app: App,
         render: RenderOptions,
-        tx: Sender<Wake>,
-        rx: Receiver<Wake>,
+        tx: Sender<LoopEvent>,
+        rx: Receiver<LoopEvent>,
     ) -> io::Result<Loop<B>> {
         let explored = tx.clone();
-        let explorer = Explorer::spawn(move |a| explored.send(Wake::Explored(Box::new(a))).is_ok());
-        let worker = Worker::spawn(move |a| tx.send(Wake::Answer(Box::new(a))).is_ok());
+        let explorer =
+            SweepWorker::spawn(move |a| explored.send(LoopEvent::Explored(Box::new(a))).is_ok());
+        let worker = Worker::spawn(move |a| tx.send(LoopEvent::Answer(Box::new(a))).is_ok());
         let mut l = Loop {
             terminal,
             app,
@@ -165,11 +166,13 @@ impl<B: Backend> Loop<B> {
 }
 
 /// The message of a wake-up (key releases and mouse events are none).
-fn message(wake: Wake) -> Option<Msg> {
+fn message(wake: LoopEvent) -> Option<Msg> {
     match wake {
-        Wake::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => Some(Msg::Key(key)),
-        Wake::Input(_) => None,
-        Wake::Answer(answer) => Some(Msg::Answer(answer)),
-        Wake::Explored(answer) => Some(Msg::Explored(answer)),
+        LoopEvent::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => {
+            Some(Msg::Key(key))
+        }
+        LoopEvent::Input(_) => None,
+        LoopEvent::Answer(answer) => Some(Msg::Answer(answer)),
+        LoopEvent::Explored(answer) => Some(Msg::Explored(answer)),
     }
 }

@@ -7,6 +7,43 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::tui::view::theme::RenderOptions;
 
+/// Where a cursor key moves a cursor: `[ ]` a short step back or forward (a data point along a
+/// curve, a grid point along x on a map), `{ }` a long one (ten data points along a curve, a grid
+/// point along y on a map).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CursorMove {
+    /// `[`: a short step back.
+    Back,
+    /// `]`: a short step forward.
+    Forward,
+    /// `{`: a long step back.
+    LongBack,
+    /// `}`: a long step forward.
+    LongForward,
+}
+
+impl CursorMove {
+    /// The data points a curve's cursor moves (negative: left): 1 for `[ ]`, 10 for `{ }`.
+    pub fn data_points(self) -> i32 {
+        match self {
+            CursorMove::Back => -1,
+            CursorMove::Forward => 1,
+            CursorMove::LongBack => -10,
+            CursorMove::LongForward => 10,
+        }
+    }
+
+    /// The grid points a map's cursor moves (columns, rows): `[ ]` along x, `{ }` along y.
+    pub fn grid_step(self) -> (i32, i32) {
+        match self {
+            CursorMove::Back => (-1, 0),
+            CursorMove::Forward => (1, 0),
+            CursorMove::LongBack => (0, -1),
+            CursorMove::LongForward => (0, 1),
+        }
+    }
+}
+
 /// What a key on the main screen does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
@@ -42,8 +79,8 @@ pub enum Action {
     ExportSvg,
     /// Show or hide the cursor readout.
     Cursor,
-    /// Move the cursor by this many data points (negative: left).
-    MoveCursor(i32),
+    /// Move the cursor (`[ ] { }`).
+    MoveCursor(CursorMove),
     /// Pin the visible chart's curves.
     Pin,
     /// Clear the visible chart's pins.
@@ -209,9 +246,9 @@ pub const BINDINGS: [Binding; 22] = [
         ("+/-", "harmonic", "", 3), Some(Problem::Spatial),
     ),
     binding(
-        &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(-1)),
-          (ch(']'), Action::MoveCursor(1)), (ch('{'), Action::MoveCursor(-10)),
-          (ch('}'), Action::MoveCursor(10))],
+        &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(CursorMove::Back)),
+          (ch(']'), Action::MoveCursor(CursorMove::Forward)), (ch('{'), Action::MoveCursor(CursorMove::LongBack)),
+          (ch('}'), Action::MoveCursor(CursorMove::LongForward))],
         "x, [ ], { }", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten; the status gives x and every curve's value there; on the pressure map x shows a cell cursor X at the map's middle, [ ] move it a grid point along x, { } along y, and the status gives x, y and p there (it stays while time plays, p follows)",
         ("x", "cursor", "", 7), None,
     ),

@@ -6,7 +6,7 @@
 
 use crate::tui::app::App;
 use crate::tui::charts::{Chart, Figure, Map, SpatialChart};
-use crate::tui::keys::Action;
+use crate::tui::keys::{Action, CursorMove};
 use crate::tui::on_screen::on_screen;
 
 /// Whether the visible chart is the pressure map (the keys `x [ ] { }` then work its cursor).
@@ -33,18 +33,20 @@ pub fn act(app: &mut App, action: Action) {
         return;
     };
     let dims = (map.x.len(), map.y.len());
-    let (cell, said) = stepped(action, app.ui.map_cell, dims, || (dims.0 / 2, dims.1 / 2));
+    let (cell, said) = cursor_key(action, app.ui.map_cell, dims, || (dims.0 / 2, dims.1 / 2));
     app.ui.map_cell = cell;
     app.say(match said {
-        Some(Said::On) => "cursor X: [ ] move it along x, { } along y; the status reads p there",
-        Some(Said::Off) => "cursor off",
-        Some(Said::NotShown) => "x shows the cursor first",
+        Some(CursorChange::On) => {
+            "cursor X: [ ] move it along x, { } along y; the status reads p there"
+        }
+        Some(CursorChange::Off) => "cursor off",
+        Some(CursorChange::NotShown) => "x shows the cursor first",
         None => return,
     });
 }
 
 /// What a grid cursor's key did, for the caller's message.
-pub enum Said {
+pub enum CursorChange {
     /// `x` showed it.
     On,
     /// `x` hid it.
@@ -53,34 +55,36 @@ pub enum Said {
     NotShown,
 }
 
-/// A grid cursor after `x` (shown at `start`, or hidden), `[ ]` or `{ }` (`moved`) on a grid of
+/// A grid cursor after `x` (shown at `start`, or hidden), `[ ]` or `{ }` (`moved_cell`) on a grid of
 /// `nx` x `ny` points, and what to say (None: it moved): the pressure map's and the regime map's
 /// cursors alike.
-pub fn stepped(
+pub fn cursor_key(
     action: Action,
     cell: Option<(usize, usize)>,
     dims: (usize, usize),
     start: impl FnOnce() -> (usize, usize),
-) -> (Option<(usize, usize)>, Option<Said>) {
+) -> (Option<(usize, usize)>, Option<CursorChange>) {
     match (action, cell) {
-        (Action::Cursor, Some(_)) => (None, Some(Said::Off)),
-        (Action::Cursor, None) => (Some(start()), Some(Said::On)),
-        (Action::MoveCursor(step), Some(at)) => (Some(moved(at, step, dims)), None),
-        (_, cell) => (cell, Some(Said::NotShown)),
+        (Action::Cursor, Some(_)) => (None, Some(CursorChange::Off)),
+        (Action::Cursor, None) => (Some(start()), Some(CursorChange::On)),
+        (Action::MoveCursor(by), Some(at)) => (Some(moved_cell(at, by, dims)), None),
+        (_, cell) => (cell, Some(CursorChange::NotShown)),
     }
 }
 
-/// A grid cursor (column, row) on a grid of `nx` x `ny` points after `[ ]` (a step of 1: a point
-/// along x) or `{ }` (a step of 10: a point along y), kept on the grid: the pressure map's and
-/// the regime map's cursors alike.
-pub fn moved((i, j): (usize, usize), step: i32, (nx, ny): (usize, usize)) -> (usize, usize) {
-    let by = |k: usize, d: i32, n: usize| {
+/// A grid cursor (column, row) on a grid of `nx` x `ny` points after `[ ]` (a point along x) or
+/// `{ }` (a point along y), kept on the grid: the pressure map's and the regime map's cursors
+/// alike.
+pub fn moved_cell(
+    (i, j): (usize, usize),
+    by: CursorMove,
+    (nx, ny): (usize, usize),
+) -> (usize, usize) {
+    let step = |k: usize, d: i32, n: usize| {
         (k.min(n - 1) as i64 + d as i64).clamp(0, n as i64 - 1) as usize
     };
-    match step {
-        -1 | 1 => (by(i, step, nx), j.min(ny - 1)),
-        _ => (i.min(nx - 1), by(j, step.signum(), ny)),
-    }
+    let (dx, dy) = by.grid_step();
+    (step(i, dx, nx), step(j, dy, ny))
 }
 
 /// The grid point of the cursor on `map` (a grid of another size, after an edit, clamps it).

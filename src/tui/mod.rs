@@ -36,7 +36,7 @@ use ratatui::crossterm::execute;
 
 use app::{App, Places};
 use backend::Compact;
-pub use event_loop::{Loop, Wake};
+pub use event_loop::{Loop, LoopEvent};
 use view::RenderOptions;
 
 /// Options of the explorer from the command line and the environment.
@@ -66,7 +66,7 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
         presets: user_preset_dir(),
     };
     // raw mode, the alternate screen and the panic hook that restores them; the terminal drawn
-    // on is our own, whose backend writes fewer bytes (backend.rs)
+    // on is our own, whose backend writes fewer bytes (`backend`)
     drop(ratatui::init());
     let terminal = match Terminal::new(Compact::new(io::stdout())) {
         Ok(t) => t,
@@ -82,7 +82,7 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
     let input = tx.clone();
     std::thread::spawn(move || {
         while let Ok(ev) = event::read() {
-            if input.send(Wake::Input(ev)).is_err() {
+            if input.send(LoopEvent::Input(ev)).is_err() {
                 return;
             }
         }

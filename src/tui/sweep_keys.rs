@@ -2,7 +2,7 @@
 //! view, the map's cursor, a newly opened preset's view, what the chart keys say there, and the
 //! requests to the sweep worker (`engine::explore`), one whenever what should be shown changes.
 
-use crate::engine::explore::ExploreAnswer;
+use crate::engine::sweep_worker::SweepAnswer;
 use crate::preset::Problem;
 use crate::sweeps::Opening;
 use crate::sweeps::axis::Axis;
@@ -10,7 +10,7 @@ use crate::sweeps::map::MapSpec;
 
 use crate::tui::app::{App, Command};
 use crate::tui::keys::Action;
-use crate::tui::map_cursor::{Said, stepped};
+use crate::tui::map_cursor::{CursorChange, cursor_key};
 use crate::tui::sweep_shown::{map_spec, shown, wanted};
 use crate::tui::sweep_state::Explore;
 
@@ -29,7 +29,7 @@ pub fn sweep_request(app: &mut App) -> Vec<Command> {
 }
 
 /// Keeps an answer unless an answer to a newer request is already shown.
-pub fn on_answer(app: &mut App, answer: ExploreAnswer) {
+pub fn on_answer(app: &mut App, answer: SweepAnswer) {
     let newer = app.explore.shown.as_ref().is_none_or(|s| {
         answer.generation > s.generation || (answer.generation == s.generation && !s.complete)
     });
@@ -65,16 +65,16 @@ pub fn move_cell(app: &mut App, action: Action) {
         return;
     };
     let (nx, ny) = (spec.x.range.points, spec.y.range.points);
-    let (cell, said) = stepped(action, app.explore.cell, (nx, ny), || {
+    let (cell, said) = cursor_key(action, app.explore.cell, (nx, ny), || {
         own_cell(app, &spec).unwrap_or((nx / 2, ny / 2))
     });
     app.explore.cell = cell;
     app.say(match said {
-        Some(Said::On) => {
+        Some(CursorChange::On) => {
             "cursor: [ ] move it along x, { } along y; the status reads the map there"
         }
-        Some(Said::Off) => "cursor off",
-        Some(Said::NotShown) => "x shows the cursor first",
+        Some(CursorChange::Off) => "cursor off",
+        Some(CursorChange::NotShown) => "x shows the cursor first",
         None => return,
     });
 }
@@ -84,7 +84,7 @@ pub fn move_cell(app: &mut App, action: Action) {
 /// student's own point.
 fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
     let (answer, _) = shown(app)?;
-    let crate::engine::explore::Explored::Map(map) = &answer.explored else {
+    let crate::engine::sweep_worker::SweepResult::Map(map) = &answer.explored else {
         return None;
     };
     let nearest = |values: &[f64], at: f64, log: bool| {

@@ -4,7 +4,7 @@
 //! against the load or the mean pressure, and mu* - mu over the friction and wear coefficients),
 //! the request for them, and the answer on screen.
 
-use crate::engine::explore::{ExploreAnswer, ExploreRequest};
+use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::preset::{Key, Preset, Problem};
 use crate::sweeps::axis::{Axis, GRID_POINTS};
 use crate::sweeps::curve::CurveSpec;
@@ -123,12 +123,12 @@ pub fn map_spec(app: &App) -> Option<MapSpec> {
 }
 
 /// The request for what the view should show now.
-pub fn wanted(app: &App) -> Option<ExploreRequest> {
+pub fn wanted(app: &App) -> Option<SweepRequest> {
     let job = match app.explore.view? {
         View::Sweep => Opening::Curve(curve_spec(app)?),
         View::Map => Opening::Map(map_spec(app)?),
     };
-    Some(ExploreRequest {
+    Some(SweepRequest {
         preset: app.doc.preset.clone(),
         job,
     })
@@ -136,7 +136,7 @@ pub fn wanted(app: &App) -> Option<ExploreRequest> {
 
 /// The answer on screen and whether it answers what should be shown now (else it is drawn dim,
 /// as the previous inputs', while the newer one is computed).
-pub fn shown(app: &App) -> Option<(&ExploreAnswer, bool)> {
+pub fn shown(app: &App) -> Option<(&SweepAnswer, bool)> {
     let answer = app.explore.shown.as_ref()?;
     let current = app.explore.requested.as_ref() == Some(&*answer.request);
     let same_kind = matches!(

@@ -2,7 +2,7 @@
 //! the sweep and the map chosen, the dimensionless view, the map's cursor, the requests sent to
 //! the sweep worker and its newest answer; and the state of the `v`/`M` form.
 
-use crate::engine::explore::{ExploreAnswer, ExploreRequest};
+use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::physics::Spacing;
 use crate::preset::{Key, Preset};
 use crate::sweeps::curve::CurveSpec;
@@ -35,9 +35,9 @@ pub struct Explore {
     /// The generation of the newest request.
     pub generation: u64,
     /// The newest request sent.
-    pub requested: Option<ExploreRequest>,
+    pub requested: Option<SweepRequest>,
     /// The newest answer received.
-    pub shown: Option<ExploreAnswer>,
+    pub shown: Option<SweepAnswer>,
 }
 
 impl Explore {

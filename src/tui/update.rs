@@ -160,7 +160,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                     Vec::new()
                 }
                 action => {
-                    app.ui.mode = Mode::Choosing(moved(selected, choices.len(), action));
+                    app.ui.mode = Mode::Choosing(selection_moved(selected, choices.len(), action));
                     Vec::new()
                 }
             }
@@ -215,7 +215,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 Vec::new()
             }
             action => {
-                let moved = moved(selected, entries.len(), action);
+                let moved = selection_moved(selected, entries.len(), action);
                 // another preset's description starts at its top
                 let scroll = if moved == selected { scroll } else { 0 };
                 app.ui.mode = Mode::Picker {
@@ -279,7 +279,7 @@ fn yes(key: &KeyEvent) -> bool {
     prompt_keys::prompt_action(Prompt::Question, key) == Some(PromptAction::Yes)
 }
 
-fn moved(selected: usize, len: usize, action: Option<PromptAction>) -> usize {
+fn selection_moved(selected: usize, len: usize, action: Option<PromptAction>) -> usize {
     match action {
         Some(PromptAction::Up) => selected.saturating_sub(1),
         Some(PromptAction::Down) => (selected + 1).min(len.saturating_sub(1)),

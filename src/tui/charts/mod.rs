@@ -1,7 +1,7 @@
 //! The charts as data: each problem's charts are an enum, and each chart has a title, a help
 //! text and a pure builder from an engine answer to the figure it draws. The view draws that
 //! figure and `e` exports it, so what is exported is by construction what is drawn. A new chart
-//! is one variant and one arm of its problem's `def` (title, help, builder).
+//! is one variant and one arm of its problem's `spec` (title, help, builder).
 
 pub mod contact;
 pub mod export;
@@ -164,7 +164,7 @@ pub enum NoFigure {
 type Build<O> = fn(&Preset, &O) -> Result<Figure, NoFigure>;
 
 /// A chart's definition.
-struct Def<O> {
+struct ChartSpec<O> {
     title: &'static str,
     help: &'static str,
     overlays: bool,
@@ -187,27 +187,27 @@ pub enum PlaneChart {
 impl PlaneChart {
     const ALL: [PlaneChart; 4] = [Self::Pressure, Self::Wear, Self::MuStar, Self::Edges];
 
-    fn def(self) -> Def<PlaneOutput> {
+    fn spec(self) -> ChartSpec<PlaneOutput> {
         match self {
-            Self::Pressure => Def {
+            Self::Pressure => ChartSpec {
                 title: "pressure and shear",
                 help: "Pressure q2(x) and shear q1 = mu q2 + tau0 over the contact [-a, b]; b is the leading edge. A peak behind the tip (a > b) means friction dominates, ahead of it wear.",
                 overlays: false,
                 build: plane::pressure,
             },
-            Self::Wear => Def {
+            Self::Wear => ChartSpec {
                 title: "wear",
                 help: "Wear per pass: the depth a strip point loses while the punch passes over it (k times the integral of q2 from x to b). Wear rate k q2: depth per unit sliding distance.",
                 overlays: false,
                 build: plane::wear,
             },
-            Self::MuStar => Def {
+            Self::MuStar => ChartSpec {
                 title: "mu* against load",
                 help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The 'now' marker is the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
                 overlays: true,
                 build: plane::mu_star,
             },
-            Self::Edges => Def {
+            Self::Edges => ChartSpec {
                 title: "contact edges against load",
                 help: "Contact edges a (trailing) and b (leading) against load, for the preset's model.",
                 overlays: false,
@@ -241,33 +241,33 @@ impl SpatialChart {
         Self::Dispersion,
     ];
 
-    fn def(self) -> Def<SpatialOutput> {
+    fn spec(self) -> ChartSpec<SpatialOutput> {
         match self {
-            Self::PressureMap => Def {
+            Self::PressureMap => ChartSpec {
                 title: "pressure map",
                 help: "Contact pressure over one period cell in bands of a round step, one colour (or shade) each; the bar labels every band's edges, the words beside it give the unit and the step. In partial contact the zones out of contact (p = 0) are drawn apart, in grey (without colour, · or ~), named beside the bar. The layer slides towards -x; friction on it points to +x. The bands are coarse: x shows a cursor X (from the middle), [ ] move it along x, { } along y, and the status reads x, y and p there.",
                 overlays: false,
                 build: spatial::pressure_map,
             },
-            Self::Line => Def {
+            Self::Line => ChartSpec {
                 title: "pressure and shape along a line",
                 help: "Pressure and shape along the middle line y = const: the pressure leads the shape by the phase lead phi.",
                 overlays: false,
                 build: spatial::line,
             },
-            Self::History => Def {
+            Self::History => ChartSpec {
                 title: "time history",
                 help: "Complete contact: the harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. Partial contact at t = 0: the running-in simulated by wear on the period cell, the contact fraction and mu*(t), with the time at which contact becomes complete marked. The blocks mark the current time; the time slider (Left/Right on t) and space play it.",
                 overlays: false,
                 build: spatial::history,
             },
-            Self::MuStar => Def {
+            Self::MuStar => ChartSpec {
                 title: "mu* against mean pressure",
                 help: "mu* against the mean pressure pbar for the punch as it is at time t, one curve: partial contact below the complete-contact load (marked 'complete'), complete contact above. The 'now' marker is the preset's pbar. Below the complete-contact load the contact set gains or loses whole grid nodes, so mu* moves in small steps: they are the grid's resolution (the grid row of the form), not physics. Solved on the period cell while this chart is visible (without a period cell: only where contact is complete).",
                 overlays: true,
                 build: spatial::mu_star,
             },
-            Self::Dispersion => Def {
+            Self::Dispersion => ChartSpec {
                 title: "dispersion: drift velocity",
                 help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards (X* marked where c changes sign). Where the three directions differ by less than a line width the legend says so ('one line') and a second plot draws the 45 and 75 degree curves' differences from the 0 degree one.",
                 overlays: false,
@@ -325,24 +325,24 @@ impl Chart {
     /// The title.
     pub fn title(self) -> &'static str {
         match self {
-            Chart::Plane(c) => c.def().title,
-            Chart::Spatial(c) => c.def().title,
+            Chart::Plane(c) => c.spec().title,
+            Chart::Spatial(c) => c.spec().title,
         }
     }
 
     /// What the chart means, for the help.
     pub fn help(self) -> &'static str {
         match self {
-            Chart::Plane(c) => c.def().help,
-            Chart::Spatial(c) => c.def().help,
+            Chart::Plane(c) => c.spec().help,
+            Chart::Spatial(c) => c.spec().help,
         }
     }
 
     /// True when the chart draws the other plane models (the engine computes them only then).
     pub fn draws_overlays(self) -> bool {
         match self {
-            Chart::Plane(c) => c.def().overlays,
-            Chart::Spatial(c) => c.def().overlays,
+            Chart::Plane(c) => c.spec().overlays,
+            Chart::Spatial(c) => c.spec().overlays,
         }
     }
 
@@ -350,8 +350,8 @@ impl Chart {
     pub fn build(self, answer: &Answer) -> Result<Figure, NoFigure> {
         let preset = &answer.request.preset;
         match (self, &answer.output) {
-            (Chart::Plane(c), Output::Plane(out)) => (c.def().build)(preset, out),
-            (Chart::Spatial(c), Output::Spatial(Ok(out))) => (c.def().build)(preset, out),
+            (Chart::Plane(c), Output::Plane(out)) => (c.spec().build)(preset, out),
+            (Chart::Spatial(c), Output::Spatial(Ok(out))) => (c.spec().build)(preset, out),
             (Chart::Spatial(_), Output::Spatial(Err(e))) => Err(NoFigure::Error(e.to_string())),
             // the answer is for the other problem: the chart's own is on its way
             _ => Err(NoFigure::Solving),

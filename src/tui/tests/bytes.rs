@@ -1,6 +1,6 @@
 //! What the explorer writes to the terminal (what matters over SSH): bytes of a full redraw, of each
 //! frame while time plays, and of a redraw with nothing changed, counted through the explorer's
-//! backend (backend.rs: the escape codes a terminal would receive; tests/replay.rs checks that
+//! backend (`backend`: the escape codes a terminal would receive; tests/replay.rs checks that
 //! they draw the buffer), not timed.
 
 use std::cell::Cell;

@@ -3,7 +3,7 @@
 
 use std::sync::atomic::AtomicBool;
 
-use crate::engine::explore::{ExploreAnswer, Explored, explore};
+use crate::engine::sweep_worker::{SweepAnswer, SweepResult, explore};
 use ratatui::crossterm::event::KeyCode;
 
 use super::*;
@@ -23,7 +23,7 @@ pub(super) fn explored_seen(app: &mut App, commands: &[Command], seen: &mut dyn 
             continue;
         };
         let request = std::sync::Arc::new((**request).clone());
-        let answer = |explored, complete| ExploreAnswer {
+        let answer = |explored, complete| SweepAnswer {
             generation: *generation,
             request: request.clone(),
             explored,
@@ -31,7 +31,7 @@ pub(super) fn explored_seen(app: &mut App, commands: &[Command], seen: &mut dyn 
         };
         let mut passes = Vec::new();
         let done = explore(&request, &AtomicBool::new(false), &mut |m| {
-            passes.push(answer(Explored::Map(m.clone().into()), false))
+            passes.push(answer(SweepResult::Map(m.clone().into()), false))
         })
         .expect("not cancelled");
         for a in passes {

@@ -6,7 +6,7 @@ use crate::physics::plane::Model;
 use crate::preset::Problem;
 
 use super::{ASCII, PLAIN};
-use crate::tui::keys::{Action, BINDINGS, footer, lookup};
+use crate::tui::keys::{Action, BINDINGS, CursorMove, footer, lookup};
 use crate::tui::prompt_keys::{Prompt, prompt_footer};
 
 /// Every action, for the test that each one is bound.
@@ -42,10 +42,10 @@ const ACTIONS: [Action; 31] = [
     Action::Export,
     Action::ExportSvg,
     Action::Cursor,
-    Action::MoveCursor(-1),
-    Action::MoveCursor(1),
-    Action::MoveCursor(-10),
-    Action::MoveCursor(10),
+    Action::MoveCursor(CursorMove::Back),
+    Action::MoveCursor(CursorMove::Forward),
+    Action::MoveCursor(CursorMove::LongBack),
+    Action::MoveCursor(CursorMove::LongForward),
     Action::Pin,
     Action::ClearPins,
     Action::Expand,

@@ -6,6 +6,7 @@ use ratatui::crossterm::event::KeyCode;
 
 use super::*;
 use crate::tui::charts::Map;
+use crate::tui::keys::CursorMove;
 use crate::tui::map_cursor;
 use crate::tui::view::map_readout::{self, readout};
 use crate::units::format_si;
@@ -41,12 +42,27 @@ fn the_readout_is_the_map_value_at_the_cursor_cell() {
 #[test]
 fn the_cursor_moves_a_grid_point_and_stays_on_the_grid() {
     // [ ] one point along x, { } (a step of 10 in the key table) one along y
-    assert_eq!(map_cursor::moved((1, 0), 1, (3, 2)), (2, 0));
-    assert_eq!(map_cursor::moved((1, 0), 10, (3, 2)), (1, 1));
-    assert_eq!(map_cursor::moved((1, 1), -10, (3, 2)), (1, 0));
+    assert_eq!(
+        map_cursor::moved_cell((1, 0), CursorMove::Forward, (3, 2)),
+        (2, 0)
+    );
+    assert_eq!(
+        map_cursor::moved_cell((1, 0), CursorMove::LongForward, (3, 2)),
+        (1, 1)
+    );
+    assert_eq!(
+        map_cursor::moved_cell((1, 1), CursorMove::LongBack, (3, 2)),
+        (1, 0)
+    );
     // at an edge it stays
-    assert_eq!(map_cursor::moved((0, 0), -1, (3, 2)), (0, 0));
-    assert_eq!(map_cursor::moved((2, 1), 10, (3, 2)), (2, 1));
+    assert_eq!(
+        map_cursor::moved_cell((0, 0), CursorMove::Back, (3, 2)),
+        (0, 0)
+    );
+    assert_eq!(
+        map_cursor::moved_cell((2, 1), CursorMove::LongForward, (3, 2)),
+        (2, 1)
+    );
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! The explorer's terminal backend (backend.rs) checked by a route of its own: its bytes are
+//! The explorer's terminal backend (`backend`) checked by a route of its own: its bytes are
 //! replayed through a terminal emulator (the vt100 crate), and after every draw each cell the
 //! emulator shows must have the symbol, colours and attributes of ratatui's buffer. Over a full
 //! redraw, time playing, edits, the help opening and closing, another chart and resizes, in 256

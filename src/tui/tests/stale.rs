@@ -9,7 +9,7 @@ use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
 use super::*;
 use crate::tui::app::PickerEntry;
-use crate::tui::{Loop, Wake};
+use crate::tui::{Loop, LoopEvent};
 
 fn entry(file: &str) -> PickerEntry {
     PickerEntry {
@@ -125,7 +125,7 @@ fn the_loop_shows_a_result_without_waiting_for_a_key() {
     std::thread::spawn(move || {
         std::thread::sleep(Duration::from_secs(20));
         let quit = KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL);
-        let _ = watchdog.send(Wake::Input(Event::Key(quit)));
+        let _ = watchdog.send(LoopEvent::Input(Event::Key(quit)));
     });
     assert!(l.step().unwrap());
     assert!(start.elapsed() < Duration::from_secs(10));

@@ -272,7 +272,7 @@ fn escape(weight: &[u32], a: (u8, u8), b: (u8, u8)) -> u32 {
 
 /// How to draw a row of text cells, each two half cells of colour codes (top, bottom), with the
 /// fewest bytes: each cell's glyph, foreground and background code. The terminal backend writes
-/// only the colours that differ from the cell written before (backend.rs), so a cell of one
+/// only the colours that differ from the cell written before (`backend`), so a cell of one
 /// colour is a space on that background or a full block in that foreground, keeping the other
 /// colour of its neighbours, and a cell of two colours is `▀` or `▄` (the same two colours
 /// swapped). A search over the pair of colours after each cell (a shortest path); `weight`: the

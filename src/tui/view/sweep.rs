@@ -5,7 +5,7 @@
 //! sit next to what they describe. The status's readout of the sweep's or the map's cursor is
 //! here too.
 
-use crate::engine::explore::Explored;
+use crate::engine::sweep_worker::SweepResult;
 use crate::sweeps::groups::of_input;
 use crate::sweeps::{Opening, opening};
 use crate::units::format_si;
@@ -30,7 +30,7 @@ use crate::tui::view::{regime, wrap};
 /// The plots of the sweep on screen (None while there is none).
 pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
     let (answer, _) = shown(app)?;
-    let (Opening::Curve(spec), Explored::Curve(curve)) = (&answer.request.job, &answer.explored)
+    let (Opening::Curve(spec), SweepResult::Curve(curve)) = (&answer.request.job, &answer.explored)
     else {
         return None;
     };
@@ -128,8 +128,8 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let note = match shown {
         _ if done => String::new(),
         Some((a, true)) => match &a.explored {
-            Explored::Map(m) => format!("  refining (every {}th point)…", m.stride),
-            Explored::Curve(_) => "  computing…".into(),
+            SweepResult::Map(m) => format!("  refining (every {}th point)…", m.stride),
+            SweepResult::Curve(_) => "  computing…".into(),
         },
         Some((_, false)) => "  [previous inputs] computing…".into(),
         None => "  computing…".into(),
@@ -170,7 +170,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         return;
     };
     match &answer.explored {
-        Explored::Curve(_) => {
+        SweepResult::Curve(_) => {
             let plots = sweep_plots(app).unwrap_or_default();
             let frames = frames(&plots, &[], false);
             let extras = Extras {
@@ -179,7 +179,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
             };
             chart::draw(&frames, style, &extras, frame.buffer_mut(), inner);
         }
-        Explored::Map(map) => {
+        SweepResult::Map(map) => {
             if let Opening::Map(spec) = &answer.request.job {
                 regime::draw(
                     spec,
@@ -219,7 +219,8 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
         }
         View::Map => {
             let (answer, _) = shown(app)?;
-            let (Opening::Map(spec), Explored::Map(map)) = (&answer.request.job, &answer.explored)
+            let (Opening::Map(spec), SweepResult::Map(map)) =
+                (&answer.request.job, &answer.explored)
             else {
                 return None;
             };
@@ -233,7 +234,7 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
 /// monotone): "(strip: h = 85.8 um)".
 fn input_at(app: &App, frames: &[range::Frame], cursor: f64) -> Option<String> {
     let (answer, _) = shown(app)?;
-    let (Opening::Curve(spec), Explored::Curve(curve)) = (&answer.request.job, &answer.explored)
+    let (Opening::Curve(spec), SweepResult::Curve(curve)) = (&answer.request.job, &answer.explored)
     else {
         return None;
     };

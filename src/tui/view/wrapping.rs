@@ -45,12 +45,12 @@ pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
 /// most `PAREN` columns and fitting the line ("(narrow: P = 10.0 kN/m)").
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut words: Vec<String> = Vec::new();
-    let tokens = whole(text.split_whitespace().collect(), width.min(PAREN));
+    let tokens = runs_kept_whole(text.split_whitespace().collect(), width.min(PAREN));
     for (i, word) in tokens.iter().enumerate() {
         let word = word.as_str();
         let after = tokens.get(i + 1).map_or("", String::as_str);
         match words.last_mut() {
-            Some(last) if glued(last, word) || named(last, word, after) => {
+            Some(last) if stays_on_line(last, word) || symbol_pair(last, word, after) => {
                 last.push(' ');
                 last.push_str(word);
             }
@@ -117,7 +117,7 @@ const PAREN: usize = 32;
 /// `tokens` with the runs that stay whole joined by spaces: a group's name of two words, and a
 /// parenthesis (from a word that opens one to the word that closes it) that holds a relation,
 /// of at most `most` columns.
-fn whole(tokens: Vec<&str>, most: usize) -> Vec<String> {
+fn runs_kept_whole(tokens: Vec<&str>, most: usize) -> Vec<String> {
     let names: Vec<&str> = [Problem::Plane, Problem::Spatial]
         .into_iter()
         .flat_map(problem_groups)
@@ -125,7 +125,7 @@ fn whole(tokens: Vec<&str>, most: usize) -> Vec<String> {
         .filter(|s| s.contains(' '))
         .collect();
     // "(k m", "mu chi),": a name with the punctuation around it
-    let named = |a: &str, b: &str| {
+    let group_name = |a: &str, b: &str| {
         let pair = format!("{a} {b}");
         let core = pair.trim_start_matches(['(', '"']);
         names.iter().any(|n| {
@@ -151,7 +151,7 @@ fn whole(tokens: Vec<&str>, most: usize) -> Vec<String> {
                 break;
             }
         }
-        if end == i + 1 && i + 1 < tokens.len() && named(tokens[i], tokens[i + 1]) {
+        if end == i + 1 && i + 1 < tokens.len() && group_name(tokens[i], tokens[i + 1]) {
             end = i + 2;
         }
         out.push(tokens[i..end].join(" "));
@@ -165,7 +165,7 @@ const RELATIONS: [&str; 5] = ["=", "<", ">", "<=", ">="];
 
 /// Whether a name of two short symbols before a relation stays whole ("k m = 0.11", "mu chi =
 /// 0.3"): `word` (the words glued so far) ends in a symbol, `next` is one and `after` relates.
-fn named(word: &str, next: &str, after: &str) -> bool {
+fn symbol_pair(word: &str, next: &str, after: &str) -> bool {
     // short words that are English, not symbols ("at h = 1 um")
     const WORDS: [&str; 12] = [
         "at", "to", "in", "of", "is", "on", "by", "as", "an", "or", "if", "so",
@@ -182,7 +182,7 @@ fn named(word: &str, next: &str, after: &str) -> bool {
 
 /// Whether `next` stays on the line of `word` (the words glued so far): a unit after a number,
 /// "]" after "[", "}" after "{", a relation ("=", "<", ...) and what it relates.
-fn glued(word: &str, next: &str) -> bool {
+fn stays_on_line(word: &str, next: &str) -> bool {
     const UNITS: [&str; 9] = ["m", "s", "Pa", "N/m", "m/s", "rad", "rad/m", "1/Pa", "%"];
     const PREFIXES: [&str; 10] = ["", "f", "p", "n", "u", "m", "k", "M", "G", "T"];
     if (word == "[" && next.starts_with(']')) || (word == "{" && next.starts_with('}')) {

@@ -16,7 +16,7 @@ use crate::sweeps::map::{Map, regime_map};
 
 /// A sweep or a map of a preset.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ExploreRequest {
+pub struct SweepRequest {
     /// The inputs (the varied parameters take their values from the job's axes).
     pub preset: Preset,
     /// The curve or the map.
@@ -25,22 +25,22 @@ pub struct ExploreRequest {
 
 /// What is known of a request.
 #[derive(Clone, Debug)]
-pub enum Explored {
+pub enum SweepResult {
     /// The curve (complete).
     Curve(Arc<Curve>),
     /// The map after a pass (`Map::stride` is 1 once complete).
     Map(Arc<Map>),
 }
 
-/// One delivery of the explorer.
+/// One delivery of the sweep worker.
 #[derive(Clone, Debug)]
-pub struct ExploreAnswer {
+pub struct SweepAnswer {
     /// The generation number the request was submitted with.
     pub generation: u64,
     /// The request answered.
-    pub request: Arc<ExploreRequest>,
+    pub request: Arc<SweepRequest>,
     /// The result so far.
-    pub explored: Explored,
+    pub explored: SweepResult,
     /// True when nothing more comes for this request.
     pub complete: bool,
 }
@@ -48,24 +48,24 @@ pub struct ExploreAnswer {
 /// Computes a request: `on_pass` gets each coarse pass of a map; None when `cancel` was set
 /// before the end.
 pub fn explore(
-    request: &ExploreRequest,
+    request: &SweepRequest,
     cancel: &AtomicBool,
     on_pass: &mut dyn FnMut(&Map),
-) -> Option<Explored> {
+) -> Option<SweepResult> {
     match &request.job {
         Opening::Curve(spec) => {
-            curve(&request.preset, spec, cancel).map(|c| Explored::Curve(c.into()))
+            curve(&request.preset, spec, cancel).map(|c| SweepResult::Curve(c.into()))
         }
         Opening::Map(spec) => regime_map(&request.preset, spec, cancel, &mut |m: &Map| {
             if m.stride > 1 {
                 on_pass(m)
             }
         })
-        .map(|m| Explored::Map(m.into())),
+        .map(|m| SweepResult::Map(m.into())),
     }
 }
 
-type Job = (u64, Arc<ExploreRequest>);
+type Job = (u64, Arc<SweepRequest>);
 
 /// The newest request not yet started, and whether the one running must stop.
 struct Shared {
@@ -77,16 +77,16 @@ struct Shared {
 /// Finished results kept.
 const KEPT: usize = 4;
 
-/// The explorer's thread: one job at a time; a newer request replaces any pending one and
+/// The sweep worker: one job at a time; a newer request replaces any pending one and
 /// cancels the running one (its solves stop at the next point).
-pub struct Explorer {
+pub struct SweepWorker {
     shared: Arc<Shared>,
 }
 
-impl Explorer {
+impl SweepWorker {
     /// Starts the thread; `deliver` gets every answer and returns false when nobody listens any
     /// more (the thread then ends).
-    pub fn spawn(mut deliver: impl FnMut(ExploreAnswer) -> bool + Send + 'static) -> Explorer {
+    pub fn spawn(mut deliver: impl FnMut(SweepAnswer) -> bool + Send + 'static) -> SweepWorker {
         let shared = Arc::new(Shared {
             pending: Mutex::new(None),
             wake: Condvar::new(),
@@ -94,7 +94,7 @@ impl Explorer {
         });
         let ours = Arc::clone(&shared);
         thread::spawn(move || {
-            let mut kept: Cache<ExploreRequest, Explored> = Cache::new(KEPT);
+            let mut kept: Cache<SweepRequest, SweepResult> = Cache::new(KEPT);
             loop {
                 let (generation, request) = {
                     let mut pending = ours.pending.lock().expect("never poisoned");
@@ -104,7 +104,7 @@ impl Explorer {
                     ours.cancel.store(false, Ordering::SeqCst);
                     pending.take().expect("checked above")
                 };
-                let answer = |explored, complete| ExploreAnswer {
+                let answer = |explored, complete| SweepAnswer {
                     generation,
                     request: Arc::clone(&request),
                     explored,
@@ -118,7 +118,7 @@ impl Explorer {
                 }
                 let mut listening = true;
                 let result = explore(&request, &ours.cancel, &mut |m| {
-                    listening &= deliver(answer(Explored::Map(Arc::new(m.clone())), false));
+                    listening &= deliver(answer(SweepResult::Map(Arc::new(m.clone())), false));
                 });
                 if let Some(done) = result {
                     kept.insert((*request).clone(), done.clone());
@@ -129,11 +129,11 @@ impl Explorer {
                 }
             }
         });
-        Explorer { shared }
+        SweepWorker { shared }
     }
 
     /// Asks for a sweep or a map; replaces any request not yet started and stops the running one.
-    pub fn submit(&self, generation: u64, request: ExploreRequest) {
+    pub fn submit(&self, generation: u64, request: SweepRequest) {
         let mut pending = self.shared.pending.lock().expect("never poisoned");
         *pending = Some((generation, Arc::new(request)));
         self.shared.cancel.store(true, Ordering::SeqCst);

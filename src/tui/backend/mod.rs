@@ -26,7 +26,7 @@ use sgr::{Pen, RESET, style};
 /// ratatui's crossterm backend with a `draw` that writes fewer bytes.
 pub struct Compact<W: Write> {
     inner: CrosstermBackend<W>,
-    shown: Shown,
+    on_terminal: TerminalCells,
     /// The size to report instead of the terminal's (a replay in the tests).
     size: Option<Size>,
 }
@@ -36,7 +36,7 @@ impl<W: Write> Compact<W> {
     pub fn new(writer: W) -> Self {
         Compact {
             inner: CrosstermBackend::new(writer),
-            shown: Shown::blank(),
+            on_terminal: TerminalCells::blank(),
             size: None,
         }
     }
@@ -54,21 +54,21 @@ const REFILL: u16 = 3;
 
 /// What the terminal shows, as far as this backend knows: the cells it wrote (None where it
 /// does not know), and what is beyond them.
-struct Shown {
+struct TerminalCells {
     rows: Vec<Vec<Option<Cell>>>,
     beyond: Option<Cell>,
 }
 
-impl Shown {
-    fn blank() -> Shown {
-        Shown {
+impl TerminalCells {
+    fn blank() -> TerminalCells {
+        TerminalCells {
             rows: Vec::new(),
             beyond: Some(Cell::default()),
         }
     }
 
-    fn unknown() -> Shown {
-        Shown {
+    fn unknown() -> TerminalCells {
+        TerminalCells {
             rows: Vec::new(),
             beyond: None,
         }
@@ -195,7 +195,7 @@ impl<W: Write> Backend for Compact<W> {
             let next = Pen::of(cell);
             if let Some((cx, cy)) = cursor.filter(|&c| c != (x, y)) {
                 let moved = motion(cursor, x, y);
-                match self.shown.refill(cx, x, y, pen).filter(|_| cy == y) {
+                match self.on_terminal.refill(cx, x, y, pen).filter(|_| cy == y) {
                     Some((text, after))
                         if text.len() + style(after, next).len()
                             < moved.len() + style(pen, next).len() =>
@@ -216,11 +216,11 @@ impl<W: Write> Backend for Compact<W> {
             let width = cell.symbol().width() as u16;
             if width == 1 {
                 cursor = Some((x + 1, y));
-                self.shown.set(x, y, Some(cell.clone()));
+                self.on_terminal.set(x, y, Some(cell.clone()));
             } else {
                 cursor = None;
                 for k in 0..width.max(1) {
-                    self.shown.set(x.saturating_add(k), y, None);
+                    self.on_terminal.set(x.saturating_add(k), y, None);
                 }
             }
         }
@@ -231,7 +231,7 @@ impl<W: Write> Backend for Compact<W> {
     }
 
     fn append_lines(&mut self, n: u16) -> io::Result<()> {
-        self.shown = Shown::unknown();
+        self.on_terminal = TerminalCells::unknown();
         self.inner.append_lines(n)
     }
 
@@ -257,9 +257,9 @@ impl<W: Write> Backend for Compact<W> {
 
     fn clear_region(&mut self, clear_type: ClearType) -> io::Result<()> {
         // the style is reset between draws, so a cleared cell is blank
-        self.shown = match clear_type {
-            ClearType::All => Shown::blank(),
-            _ => Shown::unknown(),
+        self.on_terminal = match clear_type {
+            ClearType::All => TerminalCells::blank(),
+            _ => TerminalCells::unknown(),
         };
         self.inner.clear_region(clear_type)
     }

@@ -8,7 +8,7 @@
 
 mod cache;
 mod cell;
-pub mod explore;
+pub mod sweep_worker;
 mod validity;
 
 use std::sync::{Arc, Condvar, Mutex};
