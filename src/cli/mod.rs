@@ -12,6 +12,7 @@ use wearlab::preset::{self, Preset};
 
 pub mod explorer;
 pub mod solve;
+pub mod stdout_at_start;
 pub mod sweep;
 
 /// Exit code when the result could not be written (closed pipe, full disk).
@@ -54,6 +55,10 @@ pub fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
     if let Err(e) = guard {
         say(&format!("error: {e}"));
         return ExitCode::from(EXIT_UNSOLVABLE);
+    }
+    if stdout_at_start::closed() {
+        say("error: cannot write the result to stdout: it is closed");
+        return ExitCode::from(EXIT_OUTPUT);
     }
     let mut out = io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
