@@ -110,3 +110,29 @@ fn a_failed_write_leaves_the_old_file() {
     assert_eq!(fs::read_to_string(&path).unwrap(), "old");
     assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
 }
+
+#[test]
+fn a_folder_that_cannot_be_written_is_named_not_the_temporary_file() {
+    // a read-only folder, or where the modes do not stop this user (root), /sys
+    let dir = tempfile::tempdir().unwrap();
+    let ro = dir.path().join("read-only");
+    fs::create_dir(&ro).unwrap();
+    fs::set_permissions(&ro, fs::Permissions::from_mode(0o555)).unwrap();
+    let Some(folder) = [ro, "/sys".into()]
+        .into_iter()
+        .find(|d| d.is_dir() && File::create(d.join("probe.toml")).is_err())
+    else {
+        eprintln!("skipped: every folder here can be written");
+        return;
+    };
+    let why = save(&default_preset(), &folder.join("lab.toml"))
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        why,
+        format!(
+            "cannot write in the folder {}: permission denied",
+            folder.display()
+        )
+    );
+}

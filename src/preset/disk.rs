@@ -204,7 +204,17 @@ pub fn write_atomically(
         // a new file gets the usual mode (0666 less the umask), not the 0600 of a temporary file
         builder.permissions(fs::Permissions::from_mode(0o666));
     }
-    let mut tmp = builder.tempfile_in(dir)?;
+    // the temporary file is ours, not the user's: a failure names the folder it was made in
+    let mut tmp = builder.tempfile_in(dir).map_err(|e| {
+        io::Error::new(
+            e.kind(),
+            format!(
+                "cannot write in the folder {}: {}",
+                dir.display(),
+                io::Error::from(e.kind())
+            ),
+        )
+    })?;
     remove_stale(dir, &tmp.as_file().metadata()?, tmp.path());
     if let Ok(old) = fs::metadata(&target) {
         tmp.as_file().set_permissions(old.permissions())?;
