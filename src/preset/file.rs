@@ -238,12 +238,34 @@ pub fn resolve_save_path(
         }
         None => PathBuf::from(typed),
     };
-    let Some(name) = expanded
-        .file_name()
-        .and_then(|n| n.to_str())
-        .filter(|_| !typed.ends_with('/'))
-    else {
-        return Err(format!("'{typed}' is a folder: type a file name"));
+    if let Some(c) = typed.chars().find(|c| c.is_control()) {
+        return Err(format!(
+            "a file name holds no {}: type the name without it",
+            if c == '\t' {
+                "tab"
+            } else {
+                "control character"
+            }
+        ));
+    }
+    // the last part as typed: `Path` reads "x/." as "x"
+    let last = typed.rsplit('/').next().unwrap_or(typed);
+    let before = &typed[..typed.len() - last.len()];
+    let folder = match last {
+        "" => Some(("it ends in /", format!("{typed}lab.toml"))),
+        "." => Some(("'.' is the folder itself", format!("{before}lab.toml"))),
+        ".." => Some(("'..' is the folder above", format!("{typed}/lab.toml"))),
+        _ => None,
+    };
+    if let Some((why, example)) = folder {
+        return Err(format!(
+            "'{typed}' is a folder ({why}): type a file name, e.g. {example}"
+        ));
+    }
+    let Some(name) = expanded.file_name().and_then(|n| n.to_str()) else {
+        return Err(format!(
+            "'{typed}' is not a file name: type one, e.g. lab.toml"
+        ));
     };
     let stem = name.trim_end_matches('.');
     if stem.is_empty() {
@@ -254,6 +276,16 @@ pub fn resolve_save_path(
     } else {
         format!("{stem}.toml")
     };
+    // `file` ends in the ASCII ".toml", so the cut is at a character boundary
+    if file[..file.len() - ".toml".len()]
+        .trim_matches('.')
+        .is_empty()
+    {
+        return Err(format!(
+            "'{typed}' has no name before .toml (the file would be hidden): type one, e.g. \
+             lab.toml"
+        ));
+    }
     let bare = !typed.contains('/');
     Ok(match (bare, preset_dir) {
         (true, Some(dir)) => SaveTarget {
@@ -326,5 +358,48 @@ mod tests {
         assert!(resolve("/tmp/").unwrap_err().contains("is a folder"));
         assert!(resolve("..").unwrap_err().contains("file name"));
         assert!(resolve("...").unwrap_err().contains("no file name"));
+    }
+
+    #[test]
+    fn every_refused_name_says_why() {
+        let cases = [
+            (
+                ".",
+                "'.' is a folder ('.' is the folder itself): type a file name, e.g. lab.toml",
+            ),
+            (
+                "labs/.",
+                "'labs/.' is a folder ('.' is the folder itself): type a file name, e.g. \
+                 labs/lab.toml",
+            ),
+            (
+                "..",
+                "'..' is a folder ('..' is the folder above): type a file name, e.g. ../lab.toml",
+            ),
+            (
+                "labs/",
+                "'labs/' is a folder (it ends in /): type a file name, e.g. labs/lab.toml",
+            ),
+            (
+                ".toml",
+                "'.toml' has no name before .toml (the file would be hidden): type one, e.g. \
+                 lab.toml",
+            ),
+            (
+                "~/..TOML",
+                "'~/..TOML' has no name before .toml (the file would be hidden): type one, e.g. \
+                 lab.toml",
+            ),
+            ("a\tb", "a file name holds no tab: type the name without it"),
+            (
+                "a\u{7}b",
+                "a file name holds no control character: type the name without it",
+            ),
+        ];
+        for (typed, why) in cases {
+            assert_eq!(resolve(typed), Err(why.to_string()), "{typed:?}");
+        }
+        // a name that starts with a dot is the user's choice
+        assert_eq!(path(".lab"), PathBuf::from("/data/presets/.lab.toml"));
     }
 }

@@ -44,6 +44,8 @@ pub(super) fn reason(message: &str, before: &str) -> String {
         format!("missing key {field}")
     } else if let Some(field) = message.strip_prefix("duplicate field ") {
         format!("the key {field} is given twice")
+    } else if message == "invalid basic string, expected `\"`" {
+        "a text in quotes is not closed: the closing \" is missing on this line".into()
     } else if message == "duplicate key" {
         "this key is given twice (each key once per section)".into()
     } else if let Some(rest) = message.strip_prefix("unknown variant ") {
@@ -222,6 +224,15 @@ mod tests {
         for (message, before, words) in cases {
             assert_eq!(reason(message, before), words);
         }
+    }
+
+    #[test]
+    fn a_text_in_quotes_not_closed_is_said_in_words() {
+        let err = crate::preset::parse("schema = 1\nname = \"a\u{e9}=b\n", "x.toml".as_ref());
+        assert_eq!(
+            err.unwrap_err().to_string(),
+            "x.toml:2: a text in quotes is not closed: the closing \" is missing on this line"
+        );
     }
 
     #[test]

@@ -309,20 +309,42 @@ fn text_key(
         }
         Some(PromptAction::Backspace) => {
             buffer.pop();
-            app.ui.mode = mode(buffer);
+            edited(app, mode(buffer));
             Vec::new()
         }
         _ => {
             let chord = key
                 .modifiers
                 .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT);
-            if let (KeyCode::Char(c), false) = (key.code, chord) {
-                buffer.push(c);
-                app.ui.mode = mode(buffer);
+            match (key.code, chord) {
+                (KeyCode::Char(c), false) => {
+                    buffer.push(c);
+                    edited(app, mode(buffer));
+                }
+                (KeyCode::Tab | KeyCode::BackTab, _) => {
+                    let what = match app.ui.mode {
+                        Mode::SaveAs(_) => {
+                            "a file name holds no tabs, and wearlab does not \
+                                            complete names: type the whole name"
+                        }
+                        _ => "a value holds no tabs",
+                    };
+                    app.complain(format!("Tab is not typed: {what}"));
+                }
+                _ => {}
             }
             Vec::new()
         }
     }
+}
+
+/// The prompt after its text changed: the reason a name typed before was refused no longer
+/// applies to the text.
+fn edited(app: &mut App, mode: Mode) {
+    if matches!(mode, Mode::SaveAs(_)) && app.ui.message.as_ref().is_some_and(|m| m.error) {
+        app.ui.message = None;
+    }
+    app.ui.mode = mode;
 }
 
 fn accept_value(app: &mut App, buffer: String) -> Vec<Command> {

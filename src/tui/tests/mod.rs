@@ -15,6 +15,7 @@ mod legend;
 mod map_cursor;
 mod partial;
 mod replay;
+mod save_prompt;
 mod screens;
 mod stale;
 mod ticks;

@@ -66,25 +66,50 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
     (style.text(&text).into_owned(), st)
 }
 
-/// How many lines the message takes on a screen `width` wide: two when it does not fit on one
-/// (the panels above give up their last row meanwhile), else one.
-pub fn message_height(app: &App, style: RenderOptions, width: u16) -> u16 {
-    let (text, _) = message(app, style);
-    if wrap(&text, width as usize).len() > 1 {
-        2
-    } else {
-        1
+/// The most rows a refused name's reason takes above the save prompt.
+const REASON_ROWS: usize = 3;
+
+/// Why the name typed last was refused, while the save prompt stays open for a correction.
+fn refusal(app: &App) -> Option<&str> {
+    match (&app.ui.mode, &app.ui.message) {
+        (Mode::SaveAs(_), Some(m)) if m.error => Some(&m.text),
+        _ => None,
     }
 }
 
+/// The reason's lines above the save prompt, `width` wide.
+fn reason_lines(app: &App, style: RenderOptions, width: usize) -> Vec<String> {
+    refusal(app).map_or_else(Vec::new, |why| {
+        wrap_within(&style.text(why), width, REASON_ROWS, style)
+    })
+}
+
+/// How many lines the message takes on a screen `width` wide: two when it does not fit on one
+/// (the panels above give up their last rows meanwhile), else one; above the save prompt, the
+/// reason a name was refused, wrapped, as well.
+pub fn message_height(app: &App, style: RenderOptions, width: u16) -> u16 {
+    let (text, _) = message(app, style);
+    let own = if wrap(&text, width as usize).len() > 1 {
+        2
+    } else {
+        1
+    };
+    own + reason_lines(app, style, width as usize).len() as u16
+}
+
 /// Draws the message, wrapped at spaces to the lines of `area`; a message longer still ends
-/// in "…" (`wrap_within`).
+/// in "…" (`wrap_within`). Above the save prompt, why the name typed was refused.
 pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let (text, st) = message(app, style);
-    let rows = area.height.max(1) as usize;
-    let lines = wrap_within(&text, area.width as usize, rows, style);
-    let lines: Vec<Line> = lines.into_iter().map(Line::from).collect();
-    frame.render_widget(Paragraph::new(lines).style(st), area);
+    let width = area.width as usize;
+    let reason = reason_lines(app, style, width);
+    let rows = (area.height as usize).saturating_sub(reason.len()).max(1);
+    let lines = wrap_within(&text, width, rows, style);
+    let lines: Vec<Line> = (reason.into_iter())
+        .map(|l| Line::styled(l, style.error()))
+        .chain(lines.into_iter().map(|l| Line::styled(l, st)))
+        .collect();
+    frame.render_widget(Paragraph::new(lines), area);
 }
 
 /// Draws the keys of the main screen or of the prompt being answered.

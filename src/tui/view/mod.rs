@@ -12,6 +12,7 @@ pub mod heatmap;
 pub mod hidden;
 pub mod layout;
 pub mod legend;
+mod long_words;
 pub mod map_readout;
 pub mod picker;
 pub mod popups;
@@ -46,13 +47,12 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         return;
     };
     let message_rows = bars::message_height(app, style, area.width);
-    if message_rows > 1 {
-        // a long message takes the panels' last row rather than being cut
-        areas.form.height -= 1;
-        areas.status.height -= 1;
-        areas.message.y -= 1;
-        areas.message.height += 1;
-    }
+    // a long message takes the panels' last rows rather than being cut
+    let extra = message_rows.saturating_sub(1).min(areas.status.height);
+    areas.form.height -= extra;
+    areas.status.height -= extra;
+    areas.message.y -= extra;
+    areas.message.height += extra;
     let shown = on_screen(app);
     if !app.ui.expanded {
         form::draw(app, style, frame, areas.form);

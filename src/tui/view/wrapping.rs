@@ -3,7 +3,9 @@
 
 use crate::preset::Problem;
 use crate::sweeps::quantity::problem_groups;
+use crate::tui::view::long_words;
 use crate::tui::view::theme::RenderOptions;
+use unicode_width::UnicodeWidthStr;
 
 /// Packs items into lines of at most `width` columns, two spaces apart, never splitting an item
 /// that fits a line (one longer than a line is wrapped by `wrap`, whole values together);
@@ -42,7 +44,8 @@ pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
 /// unit ("5 MPa", "1 um"), inside a key pair ("[ ]", "{ }"), on either side of a relation
 /// ("t = 62.6 s", "residual < 1e-14"), inside a group's name of two words ("mu chi", "P/(m R)":
 /// the library's names, `problem_groups`) nor inside a parenthesis that holds a relation, of at
-/// most `PAREN` columns and fitting the line ("(narrow: P = 10.0 kN/m)").
+/// most `PAREN` columns and fitting the line ("(narrow: P = 10.0 kN/m)"); a single word wider
+/// than half the line (a path) is broken to fill the lines (`long_words`).
 pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut words: Vec<String> = Vec::new();
     let tokens = runs_kept_whole(text.split_whitespace().collect(), width.min(PAREN));
@@ -60,13 +63,24 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines = Vec::new();
     let mut line = String::new();
     for word in &words {
-        if !line.is_empty() && line.chars().count() + 1 + word.chars().count() > width {
-            lines.push(std::mem::take(&mut line));
+        // a single word wider than half a line (a path; not a group kept whole) starts on this
+        // line where enough is left of it, and goes on below
+        let long = width > 0 && !word.contains(' ') && word.width() > width / 2;
+        let room = width.saturating_sub(line.width() + usize::from(!line.is_empty()));
+        let parts = match (long, room >= long_words::LEAST_START) {
+            (false, _) => vec![word.clone()],
+            (true, true) => long_words::pieces(word, room, width),
+            (true, false) => long_words::pieces(word, width, width),
+        };
+        for (k, part) in parts.iter().enumerate() {
+            if !line.is_empty() && (k > 0 || line.width() + 1 + part.width() > width) {
+                lines.push(std::mem::take(&mut line));
+            }
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(part);
         }
-        if !line.is_empty() {
-            line.push(' ');
-        }
-        line.push_str(word);
     }
     if !line.is_empty() {
         lines.push(line);
@@ -76,7 +90,7 @@ pub fn wrap(text: &str, width: usize) -> Vec<String> {
 
 /// `wrap` in at most `rows` lines: a text longer still ends in "…" (`...` with `--ascii`) after
 /// its last whole clause on the last line (after a ',' or ';') where that keeps half the line,
-/// else after its last whole word; never cut inside a word.
+/// else after its last whole word; never cut inside a word, but for a word wider than the line.
 pub fn wrap_within(text: &str, width: usize, rows: usize, style: RenderOptions) -> Vec<String> {
     let mut lines = wrap(text, width);
     if lines.len() <= rows {
@@ -98,10 +112,18 @@ pub fn wrap_within(text: &str, width: usize, rows: usize, style: RenderOptions) 
     match clause {
         Some((chars, end)) if chars * 2 >= room => last.truncate(end),
         _ => {
-            while last.chars().count() > room {
+            while last.width() > room {
                 match last.rfind(' ') {
                     Some(i) => last.truncate(i),
-                    None => last.clear(),
+                    // a piece of a word wider than the line: as much of it as fits
+                    None => {
+                        let piece = long_words::pieces(last, room, room).swap_remove(0);
+                        *last = if piece.width() <= room {
+                            piece
+                        } else {
+                            String::new()
+                        };
+                    }
                 }
             }
         }
