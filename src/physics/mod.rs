@@ -1,6 +1,5 @@
 //! The physics: pure functions of validated parameter structs, SI units throughout.
 
-pub mod checks;
 pub mod elastic;
 pub mod limits;
 pub mod plane;
@@ -87,6 +86,18 @@ pub enum SolveError {
     /// The model has no physical solution for these inputs.
     #[error("{0}")]
     NoSolution(String),
+}
+
+/// Ok when every named value is finite, else `SolveError::NoSolution` naming the first that is
+/// not: the first of the physical checks (`plane::checks`, `spatial::checks`).
+pub(crate) fn check_finite(what: &str, fields: &[(&str, f64)]) -> Result<(), SolveError> {
+    match fields.iter().find(|(_, v)| !v.is_finite()) {
+        Some((name, v)) => Err(SolveError::NoSolution(format!(
+            "{what} is not a finite number: {name} = {v} (these inputs are beyond what the \
+             solver can represent)"
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// How the points of a sweep are spaced.

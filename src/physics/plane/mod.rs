@@ -6,6 +6,7 @@
 //! motion, origin at the punch tip; contact zone [-a, b] with b the leading edge; q2 > 0 pressure;
 //! q1 shear on the strip, positive in +x.
 
+pub mod checks;
 pub mod collocation;
 pub mod criteria;
 pub mod energy;
@@ -25,7 +26,7 @@ pub mod wide;
 
 use serde::{Deserialize, Serialize};
 
-use crate::physics::{Friction, Material, SolveError, checks, limits, validate_common};
+use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 pub use operating_point::{OperatingPoint, operating_point};
 
@@ -181,7 +182,7 @@ impl PlaneSolution {
 }
 
 /// Solves the plane problem at the inputs' load with the chosen model; the solution has passed
-/// the physical checks (`physics::checks::plane`).
+/// the physical checks (`plane::checks`).
 pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
     inputs.validate()?;
     let sol = match model {
@@ -189,7 +190,7 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
         Model::Narrow => narrow::solve(inputs),
         Model::Strip => strip::solve(inputs),
     }?;
-    checks::plane(&sol)?;
+    checks::check(&sol)?;
     Ok(sol)
 }
 

@@ -2,9 +2,10 @@
 
 use serde::Serialize;
 
+use crate::physics::plane::checks;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
-use crate::physics::{SweepRange, checks, limits};
+use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -46,7 +47,7 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
                 Model::Narrow => narrow::solve(&at).ok(),
                 Model::Strip => unreachable!("the strip sweep runs by contact width"),
             }
-            .filter(|sol| checks::plane(sol).is_ok())
+            .filter(|sol| checks::check(sol).is_ok())
         })
         .collect();
     gather(load, &solutions)
@@ -84,7 +85,7 @@ fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sw
     let solutions: Vec<Option<PlaneSolution>> = solutions
         .into_iter()
         .flatten()
-        .filter(|sol| checks::plane(sol).is_ok())
+        .filter(|sol| checks::check(sol).is_ok())
         .map(Some)
         .collect();
     let load = solutions

@@ -6,6 +6,7 @@
 //! Frame: x along the sliding line (the friction force on the layer points in +x), y across it,
 //! z up out of the layer. Shape g = gbar(t) + U(x, y, t) (1.6).
 
+pub mod checks;
 pub mod contact;
 pub mod field;
 pub mod harmonic;
@@ -18,7 +19,7 @@ pub mod state;
 use std::f64::consts::PI;
 
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution};
-use crate::physics::{Friction, Material, SolveError, checks, limits, validate_common};
+use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 pub use state::{SpatialState, StateAt, state_at};
 
@@ -197,14 +198,14 @@ pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -
 }
 
 /// Validates and solves at time t [s] >= 0; the solution has passed the physical checks
-/// (`physics::checks::spatial`).
+/// (`spatial::checks`).
 pub fn solve(inputs: &SpatialInputs, time: f64) -> Result<SpatialSolution, SolveError> {
     inputs.validate()?;
     limits::TIME
         .check("time", time)
         .map_err(SolveError::InvalidInput)?;
     let sol = solve_with(inputs, &evolutions(inputs), time);
-    checks::spatial(&sol)?;
+    checks::check(&sol)?;
     Ok(sol)
 }
 

@@ -6,12 +6,13 @@
 //! This is the seam where a partial-contact state will plug in: a state whose contact check fails
 //! is still a state (the check says why), and everything downstream reads it from here.
 
+use crate::physics::spatial::checks;
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::field::{Field, field};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{MeanPressureSweep, pressure_sweep};
 use crate::physics::spatial::{Cell, SpatialInputs, SpatialSolution, solve_with};
-use crate::physics::{SolveError, SweepRange, checks, limits};
+use crate::physics::{SolveError, SweepRange, limits};
 
 /// Everything about the spatial problem at one instant.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,7 +41,7 @@ pub struct StateAt {
 }
 
 /// The state at `at.time` from validated inputs and their evolutions (`spatial::evolutions`); the
-/// solution has passed the physical checks (`physics::checks::spatial`).
+/// solution has passed the physical checks (`spatial::checks`).
 pub fn state_at(
     inputs: &SpatialInputs,
     evolutions: &[Evolution],
@@ -50,7 +51,7 @@ pub fn state_at(
         .check("time", at.time)
         .map_err(SolveError::InvalidInput)?;
     let solution = solve_with(inputs, evolutions, at.time);
-    checks::spatial(&solution)?;
+    checks::check(&solution)?;
     let cell = Cell::of(&inputs.harmonics);
     let contact = contact::check(&solution, &cell);
     let sweep = pressure_sweep(

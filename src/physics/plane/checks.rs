@@ -1,11 +1,10 @@
-//! The physical checks every solution passes before anyone sees it: exit 0 means right. A
+//! The plane solution's physical checks, passed before anyone sees it: exit 0 means right. A
 //! solution that fails one is `SolveError::NoSolution` naming the failed check (exit 3 on the
-//! command line), never a number with a warning. `plane` runs inside `plane::solve` and on every
-//! point of a load sweep; `spatial` inside `spatial::solve` and `spatial::state_at`.
+//! command line), never a number with a warning. They run inside `plane::solve` and on every
+//! point of a load sweep.
 
-use crate::physics::SolveError;
 use crate::physics::plane::{PlaneSolution, PressureLaw};
-use crate::physics::spatial::SpatialSolution;
+use crate::physics::{SolveError, check_finite};
 
 /// Relative size of a negative collocation pressure that is still round-off.
 const PRESSURE_ROUND_OFF: f64 = 1e-6;
@@ -13,20 +12,10 @@ const PRESSURE_ROUND_OFF: f64 = 1e-6;
 /// searches stop at 1e-6 (sweep ends) or 1e-15 (operating point) in the contact width.
 const BALANCE_TOLERANCE: f64 = 1e-6;
 
-fn finite(what: &str, fields: &[(&str, f64)]) -> Result<(), SolveError> {
-    match fields.iter().find(|(_, v)| !v.is_finite()) {
-        Some((name, v)) => Err(SolveError::NoSolution(format!(
-            "{what} is not a finite number: {name} = {v} (these inputs are beyond what the \
-             solver can represent)"
-        ))),
-        None => Ok(()),
-    }
-}
-
 /// The plane solution's checks: every number finite; the load balance (3.11) holds; Q2 > 0 and
 /// a + b > 0; the pressure is nowhere negative beyond round-off; without a tilt of the surface
 /// (no adhesion, and no friction on a strip of finite thickness) the contact holds the punch tip.
-pub fn plane(sol: &PlaneSolution) -> Result<(), SolveError> {
+pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
     let model = sol.model.name();
     let what = format!("the {model} model's answer");
     let inputs = &sol.inputs;
@@ -35,7 +24,7 @@ pub fn plane(sol: &PlaneSolution) -> Result<(), SolveError> {
         inputs.friction.adhesion,
         inputs.load,
     );
-    finite(
+    check_finite(
         &what,
         &[
             ("a", sol.a),
@@ -131,55 +120,6 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
     }
 }
 
-/// The spatial solution's checks: every number finite, every layer compliance positive, and the
-/// vertical force on the punch P = pbar - mu psi positive (mu* = T/P needs it).
-pub fn spatial(sol: &SpatialSolution) -> Result<(), SolveError> {
-    let what = "the spatial solution";
-    for (n, h) in sol.harmonics.iter().enumerate() {
-        let ev = &h.evolution;
-        finite(
-            &format!("harmonic {} of {what}", n + 1),
-            &[
-                ("M", ev.m),
-                ("1/M", 1.0 / ev.m),
-                ("decay rate", ev.decay_rate),
-                ("phase rate", ev.phase_rate),
-                ("drift velocity", ev.drift_velocity),
-                ("phase lead", ev.phase_lead),
-                ("amplitude", h.state.amplitude),
-                ("phase_x", h.state.phase_x),
-            ],
-        )?;
-        if ev.response.a.is_nan() || ev.response.a <= 0.0 {
-            return Err(SolveError::NoSolution(format!(
-                "harmonic {} of {what} fails a check: the layer's normal compliance at \
-                 k = {:.4e} rad/m is {:e} m/Pa, not positive (round-off of the layer functions)",
-                n + 1,
-                h.initial.wavenumber(),
-                ev.response.a
-            )));
-        }
-    }
-    finite(
-        what,
-        &[
-            ("psi", sol.psi),
-            ("P", sol.load),
-            ("T", sol.tangential),
-            ("mu*", sol.mu_star),
-        ],
-    )?;
-    if sol.load <= 0.0 {
-        return Err(SolveError::NoSolution(format!(
-            "{what} fails a check: the vertical force on the punch P = pbar - mu psi = {:.4e} Pa \
-             is not positive (friction on the slopes outweighs the mean pressure {:.4e} Pa), so \
-             mu* = T/P is undefined",
-            sol.load, sol.inputs.mean_pressure
-        )));
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -206,13 +146,13 @@ mod tests {
     }
 
     fn why(sol: &PlaneSolution) -> String {
-        plane(sol).unwrap_err().to_string()
+        check(sol).unwrap_err().to_string()
     }
 
     #[test]
     fn each_plane_check_names_itself() {
         let good = hertz();
-        assert_eq!(plane(&good), Ok(()));
+        assert_eq!(check(&good), Ok(()));
         assert_eq!(good.model, Model::Wide);
         let mut s = good.clone();
         s.mu_star = f64::NAN;
@@ -236,6 +176,6 @@ mod tests {
         // with adhesion the surface tilts and the zone may leave the tip
         s.inputs.friction.adhesion = 1.0;
         s.inputs.load = s.normal_force - s.inputs.friction.adhesion * s.delta_g;
-        assert_eq!(plane(&s), Ok(()));
+        assert_eq!(check(&s), Ok(()));
     }
 }
