@@ -17,7 +17,6 @@ use regex::Regex;
 /// longer a cycle (remove the line when you break the cycle).
 #[rustfmt::skip]
 const KNOWN_CYCLES: &[&str] = &[
-    "src/physics/plane/collocation.rs src/physics/plane/strip.rs src/physics/plane/two_grid.rs",
     "src/preset/check.rs src/preset/explore_section.rs src/preset/file.rs",
     "src/sweeps/groups.rs src/sweeps/quantities.rs src/sweeps/quantity.rs",
     "src/tui/charts/contact.rs src/tui/charts/spatial.rs",

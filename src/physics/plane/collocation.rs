@@ -24,7 +24,7 @@ use std::sync::Arc;
 use nalgebra::{DMatrix, DVector};
 
 use crate::physics::plane::PlaneInputs;
-use crate::physics::plane::strip::{ColumnKernel, Kernels};
+use crate::physics::plane::strip_kernels::{ColumnKernel, Kernels};
 use crate::physics::plane::strip_factors::{Factors, refine};
 use crate::physics::plane::two_grid::Coarse;
 

@@ -22,7 +22,7 @@ use std::sync::Arc;
 
 use nalgebra::DVector;
 
-use crate::physics::plane::collocation::Rules;
+use crate::physics::plane::strip_rules::Rules;
 use crate::physics::plane::strip_factors::Factors;
 
 /// The coarse search's factorization, lent to the fine system of an operating point.
