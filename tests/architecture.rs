@@ -18,7 +18,6 @@ use regex::Regex;
 #[rustfmt::skip]
 const KNOWN_CYCLES: &[&str] = &[
     "src/preset/check.rs src/preset/explore_section.rs src/preset/file.rs",
-    "src/sweeps/groups.rs src/sweeps/quantities.rs src/sweeps/quantity.rs",
     "src/tui/charts/contact.rs src/tui/charts/spatial.rs",
 ];
 

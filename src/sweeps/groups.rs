@@ -1,10 +1,12 @@
 //! The problem's dimensionless groups at one solution, for the explorer's dimensionless view
-//! (`D`). The quantity table (`quantities`) evaluates the same functions on a solved point, so a
-//! group has one definition; its symbol and its description are the table's. The formulas are
-//! those of `docs/physics/plane.md` and `docs/physics/spatial.md`.
+//! (`D`). The formulas are the physics' (`plane::groups`, `spatial::groups`); the quantity table
+//! (`quantities`) evaluates the same functions on a solved point, so a group has one definition;
+//! its symbol and its description are the table's.
 
+use crate::physics::plane::PlaneSolution;
+use crate::physics::plane::groups::{friction_number, load_number, wear_number, width_over_radius};
 use crate::physics::plane::validity::Validity;
-use crate::physics::plane::{PlaneInputs, PlaneSolution};
+use crate::physics::spatial::groups::{decay_exponent, kh, pressure_ratio, pressure_ratio_sum};
 use crate::physics::spatial::{HarmonicSolution, SpatialSolution};
 use crate::preset::{Preset, Problem};
 use crate::sweeps::quantities::QUANTITIES;
@@ -19,49 +21,6 @@ pub struct Group {
     pub symbol: &'static str,
     /// Its value, dimensionless; +inf only for kh on a half-space.
     pub value: f64,
-}
-
-/// (a+b)/R: the contact width a + b over the punch radius R. The small-slope theory needs it
-/// small; for a half-plane without friction or wear (Hertz) it is sqrt(8 P/(m R)).
-pub fn width_over_radius(s: &PlaneSolution) -> f64 {
-    s.contact_width() / s.inputs.radius
-}
-
-/// k m: the wear coefficient k [1/Pa] times the plane modulus m = pi E/(2(1 - nu^2)) [Pa], how
-/// strongly wear shifts the pressure forwards (gamma m = pi mu chi - k m, eq. 4.3).
-pub fn wear_number(i: &PlaneInputs) -> f64 {
-    i.wear * i.material.plane_modulus()
-}
-
-/// mu chi: the friction coefficient times chi = (1 - 2 nu)/(2(1 - nu)), how strongly friction
-/// shifts the pressure backwards; theta = 0 where mu chi = k m/pi (eq. 4.3, 4.5).
-pub fn friction_number(i: &PlaneInputs) -> f64 {
-    i.friction.coefficient * i.material.chi()
-}
-
-/// P/(m R): the load per unit length P [N/m] over the plane modulus m [Pa] times the radius R
-/// [m]; (a+b)/R grows like its square root.
-pub fn load_number(i: &PlaneInputs) -> f64 {
-    i.load / (i.material.plane_modulus() * i.radius)
-}
-
-/// kh: the harmonic's wavenumber k = |(wx, wy)| [rad/m] times the layer thickness h [m]; below
-/// about 1 the layer is thin for this wave, above about 3 it acts as a half-space. +inf on a
-/// half-space (h = inf).
-pub fn kh(k: f64, h: f64) -> f64 {
-    k * h
-}
-
-/// beta t: the decay rate beta = k V A_c/M^2 [1/s] times the time t [s], the decay exponent
-/// A(t)/A(0) = e^(-beta t) (`docs/physics/spatial.md`); without friction beta t = k V t/A_c.
-pub fn decay_exponent(decay_rate: f64, time: f64) -> f64 {
-    decay_rate * time
-}
-
-/// A/(M pbar): the pressure amplitude A/M [Pa] of a harmonic of shape amplitude A [m] over the
-/// mean pressure pbar [Pa]; the contact is surely complete while these sum below 1.
-pub fn pressure_ratio(amplitude: f64, pressure_per_amplitude: f64, mean_pressure: f64) -> f64 {
-    amplitude * pressure_per_amplitude / mean_pressure
 }
 
 fn group(name: &'static str, value: f64) -> Group {
@@ -140,21 +99,6 @@ pub fn harmonic(s: &SpatialSolution, h: &HarmonicSolution) -> Vec<Group> {
         ),
         group("harmonics.N.phase_lead", e.phase_lead),
     ]
-}
-
-/// The sum over the harmonics of A/(M pbar), 1 - (pbar - sum A/M)/pbar: the contact is surely
-/// complete while it is below 1 (the lower bound of the pressure is then positive).
-pub fn pressure_ratio_sum(s: &SpatialSolution) -> f64 {
-    s.harmonics
-        .iter()
-        .map(|h| {
-            pressure_ratio(
-                h.state.amplitude,
-                h.evolution.pressure_per_amplitude(),
-                s.inputs.mean_pressure,
-            )
-        })
-        .sum()
 }
 
 /// The group a swept input is the natural variable of, for the sweep chart's x axis in the

@@ -1,13 +1,71 @@
-//! The table of quantities (`quantity::Quantity`), plane first, then spatial. The formulas are
+//! The table of quantities, plane first, then spatial, and what one entry holds (`Quantity`). The formulas are
 //! those of `docs/physics/plane.md` and `docs/physics/spatial.md`; the values are read from the
 //! solution the solvers return, never recomputed here.
 
 use crate::physics::plane::Model;
-use crate::preset::Problem;
+use crate::physics::plane::groups as plane_groups;
+use crate::physics::spatial::groups as spatial_groups;
+use crate::preset::{Preset, Problem};
 use crate::spatial_report::HarmonicReport;
-use crate::sweeps::groups;
 use crate::sweeps::point::{PlanePoint, SpatialPoint};
-use crate::sweeps::quantity::{Eval, Origin, Quantity};
+
+/// How a quantity is computed from a point.
+#[derive(Clone, Copy, Debug)]
+pub enum Eval {
+    /// From a plane point.
+    Plane(fn(&PlanePoint) -> Result<f64, String>),
+    /// From a spatial point.
+    Spatial(fn(&SpatialPoint) -> Result<f64, String>),
+    /// From one harmonic (0-based) of a spatial point.
+    Harmonic(fn(&SpatialPoint, usize) -> Result<f64, String>),
+}
+
+/// Where a quantity comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// A key of `wearlab solve`'s JSON report.
+    Report,
+    /// Derived from the solution (the explorer's sweep chart offers it).
+    Derived,
+}
+
+/// One quantity.
+#[derive(Clone, Copy, Debug)]
+pub struct Quantity {
+    /// The name in `--output`, in CSV headers and JSON keys; `N` stands for a harmonic's index.
+    pub name: &'static str,
+    /// The symbol on charts ("mu*", "a+b", "1/beta").
+    pub symbol: &'static str,
+    /// The SI unit ("" for dimensionless).
+    pub unit: &'static str,
+    /// What it is, in words (its sign convention where it has one).
+    pub description: &'static str,
+    /// The problem it belongs to.
+    pub problem: Problem,
+    /// A key of the solve report, or derived.
+    pub origin: Origin,
+    /// One of the problem's dimensionless groups (the explorer's dimensionless view).
+    pub group: bool,
+    /// A yes/no answer, 1 or 0 (written true/false).
+    pub flag: bool,
+    /// The plane models that have it (None: all).
+    pub models: Option<&'static [Model]>,
+    /// How it is computed.
+    pub eval: Eval,
+}
+
+impl Quantity {
+    /// Why the preset's model has no such quantity (theta for the narrow model), if it has none.
+    pub fn missing_in(&self, preset: &Preset) -> Option<String> {
+        let model = preset.plane.model;
+        match self.models {
+            Some(models) if preset.problem == Problem::Plane && !models.contains(&model) => {
+                Some(format!("the {} model has no {}", model.name(), self.symbol))
+            }
+            _ => None,
+        }
+    }
+}
 
 const fn entry(
     name: &'static str,
@@ -147,10 +205,10 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("contact_width", "a+b", "m", "contact width", |p| Ok(p.solution.contact_width())).derived(),
     plane("max_pressure", "max q2", "Pa", "largest contact pressure", |p| Ok(p.max_pressure())).derived(),
     plane("tip_wear", "tip wear", "m", "wear per pass at the punch tip: k times the integral of q2 from the tip to the leading edge", |p| Ok(p.tip_wear())).derived(),
-    plane("width_over_radius", "(a+b)/R", "", "contact width over the punch radius: the small-slope theory needs it small (Hertz: sqrt(8 P/(m R)))", |p| Ok(groups::width_over_radius(&p.solution))).derived().group(),
-    plane("wear_number", "k m", "", "wear coefficient times the plane modulus m = pi E/(2(1 - nu^2)): how strongly wear shifts the pressure forwards", |p| Ok(groups::wear_number(&p.solution.inputs))).derived().group(),
-    plane("friction_number", "mu chi", "", "friction coefficient times chi = (1 - 2nu)/(2(1 - nu)): how strongly friction shifts the pressure backwards; theta = 0 where mu chi = k m/pi", |p| Ok(groups::friction_number(&p.solution.inputs))).derived().group(),
-    plane("load_number", "P/(m R)", "", "load over the plane modulus times the radius: the contact width over the radius grows like its square root", |p| Ok(groups::load_number(&p.solution.inputs))).derived().group(),
+    plane("width_over_radius", "(a+b)/R", "", "contact width over the punch radius: the small-slope theory needs it small (Hertz: sqrt(8 P/(m R)))", |p| Ok(plane_groups::width_over_radius(&p.solution))).derived().group(),
+    plane("wear_number", "k m", "", "wear coefficient times the plane modulus m = pi E/(2(1 - nu^2)): how strongly wear shifts the pressure forwards", |p| Ok(plane_groups::wear_number(&p.solution.inputs))).derived().group(),
+    plane("friction_number", "mu chi", "", "friction coefficient times chi = (1 - 2nu)/(2(1 - nu)): how strongly friction shifts the pressure backwards; theta = 0 where mu chi = k m/pi", |p| Ok(plane_groups::friction_number(&p.solution.inputs))).derived().group(),
+    plane("load_number", "P/(m R)", "", "load over the plane modulus times the radius: the contact width over the radius grows like its square root", |p| Ok(plane_groups::load_number(&p.solution.inputs))).derived().group(),
     spatial("time", "t", "s", "the instant solved", |s| Ok(s.report.time)),
     spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", |s| Ok(s.report.mean_pressure)),
     spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi - tau0 Delta", |s| Ok(s.report.load)),
@@ -177,8 +235,8 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     harmonic("harmonics.N.phase_y", "rho_y", "rad", "phase along y", |s, n| Ok(wave(s, n).phase_y)),
     harmonic("harmonics.N.decay_time", "1/beta", "s", "decay time: the amplitude falls by a factor e in 1/beta", |s, n| decay_time(wave(s, n))).derived(),
     harmonic("harmonics.N.kh", "kh", "", "wavenumber times thickness: below about 1 the layer is thin for this wave, above about 3 it acts as a half-space", kh).derived().group(),
-    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(groups::decay_exponent(wave(s, n).decay_rate, s.report.time))).derived().group(),
-    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(groups::pressure_ratio(wave(s, n).amplitude, wave(s, n).pressure_per_amplitude, s.report.mean_pressure))).derived().group(),
+    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(spatial_groups::decay_exponent(wave(s, n).decay_rate, s.report.time))).derived().group(),
+    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(spatial_groups::pressure_ratio(wave(s, n).amplitude, wave(s, n).pressure_per_amplitude, s.report.mean_pressure))).derived().group(),
 ];
 
 fn decay_time(h: &HarmonicReport) -> Result<f64, String> {
@@ -193,7 +251,7 @@ fn decay_time(h: &HarmonicReport) -> Result<f64, String> {
 fn kh(s: &SpatialPoint, n: usize) -> Result<f64, String> {
     let h = s.inputs.material.thickness;
     if h.is_finite() {
-        Ok(groups::kh(wave(s, n).k, h))
+        Ok(spatial_groups::kh(wave(s, n).k, h))
     } else {
         Err("h = inf (half-space): kh is infinite".into())
     }

@@ -2,59 +2,16 @@
 //! symbol, unit, description, how it is computed from a solved point). The names of quantities
 //! that `wearlab solve` reports are its JSON keys (`mu_star`, `contact.min_pressure`,
 //! `harmonics.N.decay_rate`); the others are derived (`mu_star_minus_mu`, `max_pressure`) or the
-//! problem's dimensionless groups. The table itself is in `quantities`.
+//! problem's dimensionless groups. The table itself, and what one entry holds, are in
+//! `quantities`.
 
 use std::fmt;
 
-use crate::physics::plane::Model;
 use crate::preset::{Preset, Problem};
-use crate::sweeps::point::{PlanePoint, Point, SpatialPoint};
+use crate::sweeps::point::Point;
 use crate::sweeps::quantities::QUANTITIES;
 
-/// How a quantity is computed from a point.
-#[derive(Clone, Copy, Debug)]
-pub enum Eval {
-    /// From a plane point.
-    Plane(fn(&PlanePoint) -> Result<f64, String>),
-    /// From a spatial point.
-    Spatial(fn(&SpatialPoint) -> Result<f64, String>),
-    /// From one harmonic (0-based) of a spatial point.
-    Harmonic(fn(&SpatialPoint, usize) -> Result<f64, String>),
-}
-
-/// Where a quantity comes from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Origin {
-    /// A key of `wearlab solve`'s JSON report.
-    Report,
-    /// Derived from the solution (the explorer's sweep chart offers it).
-    Derived,
-}
-
-/// One quantity.
-#[derive(Clone, Copy, Debug)]
-pub struct Quantity {
-    /// The name in `--output`, in CSV headers and JSON keys; `N` stands for a harmonic's index.
-    pub name: &'static str,
-    /// The symbol on charts ("mu*", "a+b", "1/beta").
-    pub symbol: &'static str,
-    /// The SI unit ("" for dimensionless).
-    pub unit: &'static str,
-    /// What it is, in words (its sign convention where it has one).
-    pub description: &'static str,
-    /// The problem it belongs to.
-    pub problem: Problem,
-    /// A key of the solve report, or derived.
-    pub origin: Origin,
-    /// One of the problem's dimensionless groups (the explorer's dimensionless view).
-    pub group: bool,
-    /// A yes/no answer, 1 or 0 (written true/false).
-    pub flag: bool,
-    /// The plane models that have it (None: all).
-    pub models: Option<&'static [Model]>,
-    /// How it is computed.
-    pub eval: Eval,
-}
+pub use crate::sweeps::quantities::{Eval, Origin, Quantity};
 
 /// A quantity, and for a harmonic's quantity which harmonic (0-based).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -158,19 +115,6 @@ impl QuantityKey {
             (Eval::Spatial(f), Point::Spatial(s)) => f(s),
             (Eval::Harmonic(f), Point::Spatial(s)) => f(s, n),
             _ => Err(format!("{self} belongs to the other problem")),
-        }
-    }
-}
-
-impl Quantity {
-    /// Why the preset's model has no such quantity (theta for the narrow model), if it has none.
-    pub fn missing_in(&self, preset: &Preset) -> Option<String> {
-        let model = preset.plane.model;
-        match self.models {
-            Some(models) if preset.problem == Problem::Plane && !models.contains(&model) => {
-                Some(format!("the {} model has no {}", model.name(), self.symbol))
-            }
-            _ => None,
         }
     }
 }

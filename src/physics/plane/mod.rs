@@ -10,6 +10,7 @@ pub mod checks;
 pub mod collocation;
 pub mod criteria;
 pub mod energy;
+pub mod groups;
 mod jacobi_transforms;
 pub mod kernels;
 pub mod narrow;

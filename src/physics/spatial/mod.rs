@@ -9,6 +9,7 @@
 pub mod checks;
 pub mod contact;
 pub mod field;
+pub mod groups;
 pub mod harmonic;
 pub mod history;
 pub mod partial;
