@@ -9,10 +9,9 @@ use toml::Spanned;
 
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
-use crate::preset::explore_section::{self, FileExplore};
-use crate::preset::{
-    Preset, PresetError, Problem, SCHEMA, SpatialSection, default_spatial_section, disk, parse,
-};
+use crate::preset::explore_section::Explore;
+use crate::preset::{Preset, Problem, SCHEMA, SpatialSection, default_spatial_section, disk};
+use crate::sweeps::axis::Axis;
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
@@ -116,18 +115,33 @@ pub(super) struct FilePreset {
     pub(super) explore: Option<Spanned<FileExplore>>,
 }
 
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileAxis {
+    pub(super) key: Spanned<String>,
+    pub(super) from: Spanned<f64>,
+    pub(super) to: Spanned<f64>,
+    #[serde(default)]
+    pub(super) points: Option<Spanned<i64>>,
+    #[serde(default)]
+    pub(super) scale: Option<Spacing>,
+}
+
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileExplore {
+    pub(super) quantity: Spanned<String>,
+    pub(super) x: Spanned<FileAxis>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) y: Option<Spanned<FileAxis>>,
+}
+
 pub(super) fn zero() -> Spanned<f64> {
     Spanned::new(0..0, 0.0)
 }
 
 pub(super) fn plain<T>(value: T) -> Spanned<T> {
     Spanned::new(0..0, value)
-}
-
-/// Reads and validates a preset file (a regular UTF-8 file of at most
-/// `disk::MAX_PRESET_BYTES`).
-pub fn load(path: &Path) -> Result<Preset, PresetError> {
-    parse(&disk::read_text(path)?, path)
 }
 
 /// The preset as TOML text (schema 1).
@@ -162,12 +176,27 @@ pub fn to_toml(preset: &Preset) -> String {
             })),
         })),
         spatial: Some(plain(spatial_file(&preset.spatial))),
-        explore: preset
-            .explore
-            .as_ref()
-            .map(|e| plain(explore_section::to_file(e))),
+        explore: preset.explore.as_ref().map(|e| plain(explore_file(e))),
     };
     toml::to_string(&file).expect("a preset always serializes")
+}
+
+/// The `[explore]` section as written by `to_toml`.
+fn explore_file(e: &Explore) -> FileExplore {
+    let axis = |a: &Axis| {
+        plain(FileAxis {
+            key: plain(a.key.to_string()),
+            from: plain(a.range.min),
+            to: plain(a.range.max),
+            points: Some(plain(a.range.points as i64)),
+            scale: Some(a.range.spacing),
+        })
+    };
+    FileExplore {
+        quantity: plain(e.quantity.to_string()),
+        x: axis(&e.axes[0]),
+        y: e.axes.get(1).map(axis),
+    }
 }
 
 fn spatial_file(sp: &SpatialSection) -> FileSpatial {

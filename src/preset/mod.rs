@@ -21,10 +21,10 @@ use crate::physics::spatial::{SpatialInputs, StateAt};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
-pub use check::parse;
+pub use check::{load, parse};
 pub use disk::{MAX_PRESET_BYTES, write_atomically};
 pub use explore_section::Explore;
-pub use file::{SaveTarget, load, resolve_save_path, save, to_toml};
+pub use file::{SaveTarget, resolve_save_path, save, to_toml};
 pub use key::Key;
 pub use params::{Access, PARAMS, Param};
 
