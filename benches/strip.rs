@@ -43,7 +43,7 @@ fn inputs(mu: f64, load: f64) -> PlaneInputs {
 
 fn table_and_rules(c: &mut Criterion<CpuTime>) {
     c.bench_function("strip_table", |b| {
-        b.iter(|| wearlab::physics::plane::kernels::StripKernels::new(black_box(0.3)))
+        b.iter(|| wearlab::physics::plane::strip::kernel_table::StripKernels::new(black_box(0.3)))
     });
     // the rule pair of the 56 h operating point: 272 nodes, 273 collocation points, theta = 0.1
     c.bench_function("strip_rules/272", |b| {

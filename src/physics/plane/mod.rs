@@ -7,21 +7,14 @@
 //! q1 shear on the strip, positive in +x.
 
 pub mod checks;
-pub mod collocation;
 pub mod criteria;
 pub mod energy;
 pub mod groups;
-mod jacobi_transforms;
-pub mod kernels;
 pub mod narrow;
 pub mod operating_point;
 pub mod profile;
 pub mod strip;
-mod strip_factors;
-mod strip_kernels;
-mod strip_rules;
 pub mod sweep;
-mod two_grid;
 pub mod validity;
 pub mod wide;
 

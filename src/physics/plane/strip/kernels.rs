@@ -1,12 +1,12 @@
 //! The kernels the strip solver takes (`strip`): the exact strip's (docs/physics/plane.md section
-//! 6, tabulated in `kernels`) or the wide-strip limit, through one trait, and the exact table kept
+//! 6, tabulated in `kernel_table`) or the wide-strip limit, through one trait, and the exact table kept
 //! per Poisson ratio.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::physics::elastic::chi_c12;
-use crate::physics::plane::kernels::StripKernels;
+use crate::physics::plane::strip::kernel_table::StripKernels;
 
 /// A kernel evaluated over a column of arguments: (z values, output).
 pub type ColumnKernel<'a> = Box<dyn Fn(&[f64], &mut [f64]) + 'a>;

@@ -12,7 +12,7 @@
 //! pivoting gives a growth factor of 1e11 at (a+b)/h = 56 with k m = 0.5 and loses 5 digits
 //! (plane.md section 6 reports 1e15 for strong wear); scaled, the growth stayed below 2 in every
 //! case tried, so LU is the rule and Householder QR the fallback when the growth exceeds 1e6
-//! (`strip_factors`). The factors are kept and reused at nearby widths by iterative refinement
+//! (`factors`). The factors are kept and reused at nearby widths by iterative refinement
 //! (residual with the new matrix, correction with the old factors: O(N^2) per width instead of
 //! O(N^3)), and rebuilt when the refinement stops contracting. A system lent the coarse search's
 //! factors (`two_grid`, an operating point with many nodes) refines from those instead and
@@ -24,11 +24,11 @@ use std::sync::Arc;
 use nalgebra::{DMatrix, DVector};
 
 use crate::physics::plane::PlaneInputs;
-use crate::physics::plane::strip_kernels::{ColumnKernel, Kernels};
-use crate::physics::plane::strip_factors::{Factors, refine};
-use crate::physics::plane::two_grid::Coarse;
+use crate::physics::plane::strip::factors::{Factors, refine};
+use crate::physics::plane::strip::kernels::{ColumnKernel, Kernels};
+use crate::physics::plane::strip::two_grid::Coarse;
 
-pub use crate::physics::plane::strip_rules::Rules;
+pub use crate::physics::plane::strip::rules::Rules;
 
 /// Two-grid solves refine to round-off: they contract by some 1e-3 a step, so that stopping at an
 /// estimated 1e-14 left errors of that order in P(L), and the width search took one more width

@@ -1,4 +1,4 @@
-//! Jacobi polynomial transforms of one rule pair of the strip's collocation (`strip_rules`), for
+//! Jacobi polynomial transforms of one rule pair of the strip's collocation (`rules`), for
 //! the two-grid solve (`two_grid`): alpha = 1/2 + theta, beta = 1/2 - theta (alpha + beta = 1).
 //!
 //! The Cauchy part of the scaled system, C y with C_ki = 1/(pi (t_i - xi_k)) for the unknowns
@@ -202,7 +202,7 @@ impl Spectral {
 
 #[cfg(test)]
 mod tests {
-    use crate::physics::plane::collocation::Rules;
+    use crate::physics::plane::strip::collocation::Rules;
     use crate::physics::quadrature::gauss_jacobi;
 
     #[test]

@@ -13,7 +13,7 @@
 //! tend to the half-plane's). The preconditioner therefore splits a residual by degree: the
 //! degrees the coarse system carries (N_c + 1 of them, N_c about N/2) go through the coarse
 //! factors (values at the coarse points, coarse solve, coefficients of its g), the higher ones
-//! through C^-1. Refinement with it (`strip_factors::refine`) contracts the error by about 1e-3 a
+//! through C^-1. Refinement with it (`factors::refine`) contracts the error by about 1e-3 a
 //! step at (a+b)/h = 86 (6, 3 and 1 steps at the width search's three widths; at most 10 at a
 //! width over nu = 0.3-0.499, k m = 0-5, tau0 = 0-1 MPa); where it does not converge (seen on a
 //! nearly incompressible layer without friction) the caller factors the fine matrix.
@@ -22,8 +22,8 @@ use std::sync::Arc;
 
 use nalgebra::DVector;
 
-use crate::physics::plane::strip_rules::Rules;
-use crate::physics::plane::strip_factors::Factors;
+use crate::physics::plane::strip::factors::Factors;
+use crate::physics::plane::strip::rules::Rules;
 
 /// The coarse search's factorization, lent to the fine system of an operating point.
 pub struct Coarse {
@@ -96,7 +96,7 @@ mod tests {
     use nalgebra::DMatrix;
 
     use super::*;
-    use crate::physics::plane::collocation::{Collocation, System};
+    use crate::physics::plane::strip::collocation::{Collocation, System};
     use crate::physics::plane::strip::{Kernels, kernels_for};
     use crate::physics::plane::{PlaneInputs, exponent};
     use crate::physics::{Friction, Material};

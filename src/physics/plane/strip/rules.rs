@@ -6,7 +6,7 @@
 
 use std::sync::{Arc, Mutex, OnceLock};
 
-use crate::physics::plane::jacobi_transforms::Spectral;
+use crate::physics::plane::strip::jacobi_transforms::Spectral;
 use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
 
 /// Rules kept by `Rules::cached`.

@@ -9,18 +9,26 @@
 //! with L/h because the kernels vary on the scale h; beyond MAX_NODES the model says so instead of
 //! answering.
 
+pub mod collocation;
+mod factors;
+mod jacobi_transforms;
+pub mod kernel_table;
+mod kernels;
+mod rules;
+mod two_grid;
+
 use std::cell::RefCell;
 use std::rc::Rc;
 use std::sync::Arc;
 
-use crate::physics::plane::collocation::{Rules, System};
 use crate::physics::plane::narrow::{self, winkler_beta};
+use crate::physics::plane::strip::collocation::{Rules, System};
 use crate::physics::plane::{Found, Model, PlaneInputs, PlaneSolution, PressureLaw, exponent};
 use crate::physics::roots::{bracket, brent_to, secant_log};
 use crate::physics::{SolveError, SweepRange};
 
-pub use crate::physics::plane::collocation::Collocation;
-pub use crate::physics::plane::strip_kernels::{ColumnKernel, Kernels, WideLimit, kernels_for};
+pub use crate::physics::plane::strip::collocation::Collocation;
+pub use crate::physics::plane::strip::kernels::{ColumnKernel, Kernels, WideLimit, kernels_for};
 
 /// The largest node count the strip model uses ((a+b)/h up to 242): beyond it the model returns
 /// `SolveError::NoSolution` rather than an unresolved answer.
