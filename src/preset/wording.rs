@@ -14,7 +14,7 @@ use crate::preset::Problem;
 pub(super) fn reason(message: &str, before: &str) -> String {
     let message = message.trim().replace('\n', " ");
     let key = key_before(before);
-    let named = |text: String| match key {
+    let with_key = |text: String| match key {
         Some(k) => format!("{k}: {text}"),
         None => text,
     };
@@ -23,15 +23,15 @@ pub(super) fn reason(message: &str, before: &str) -> String {
         .or_else(|| message.strip_prefix("invalid value: "))
     {
         match rest.split_once(", expected ") {
-            Some((found, wanted)) => named(format!(
+            Some((found, wanted)) => with_key(format!(
                 "expected {}, found {}",
                 expected(wanted, key),
                 found_words(found)
             )),
-            None => named(rest.to_string()),
+            None => with_key(rest.to_string()),
         }
     } else if message == "wanted string or table" {
-        named(format!("expected {}", choices_for(key)))
+        with_key(format!("expected {}", choices_for(key)))
     } else if let Some(rest) = message.strip_prefix("unknown field ") {
         match rest.split_once(", expected ") {
             Some((field, allowed)) => format!("unknown key {field}; allowed here: {allowed}"),
@@ -49,7 +49,7 @@ pub(super) fn reason(message: &str, before: &str) -> String {
     } else if message == "duplicate key" {
         "this key is given twice (each key once per section)".into()
     } else if let Some(rest) = message.strip_prefix("unknown variant ") {
-        named(format!(
+        with_key(format!(
             "unknown name {}",
             rest.replace(", expected", "; expected")
         ))

@@ -1,6 +1,6 @@
 //! The problem's dimensionless groups at one solution, for the explorer's dimensionless view
 //! (`D`). The formulas are the physics' (`plane::groups`, `spatial::groups`); the quantity table
-//! (`quantities`) evaluates the same functions on a solved point, so a group has one definition;
+//! (`quantity_table`) evaluates the same functions on a solved point, so a group has one definition;
 //! its symbol and its description are the table's.
 
 use crate::physics::plane::PlaneSolution;
@@ -9,8 +9,8 @@ use crate::physics::plane::validity::Validity;
 use crate::physics::spatial::groups::{decay_exponent, kh, pressure_ratio, pressure_ratio_sum};
 use crate::physics::spatial::{HarmonicSolution, SpatialSolution};
 use crate::preset::{Preset, Problem};
-use crate::sweeps::quantities::QUANTITIES;
 use crate::sweeps::quantity::QuantityKey;
+use crate::sweeps::quantity_table::QUANTITIES;
 
 /// One group's value.
 #[derive(Clone, Debug, PartialEq)]

@@ -12,8 +12,8 @@ pub mod locate;
 pub mod map;
 pub mod output;
 pub mod point;
-mod quantities;
 pub mod quantity;
+mod quantity_table;
 pub mod sweep;
 
 pub use axis::Axis;

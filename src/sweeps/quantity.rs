@@ -3,15 +3,15 @@
 //! that `wearlab solve` reports are its JSON keys (`mu_star`, `contact.min_pressure`,
 //! `harmonics.N.decay_rate`); the others are derived (`mu_star_minus_mu`, `max_pressure`) or the
 //! problem's dimensionless groups. The table itself, and what one entry holds, are in
-//! `quantities`.
+//! `quantity_table`.
 
 use std::fmt;
 
 use crate::preset::{Preset, Problem};
 use crate::sweeps::point::Point;
-use crate::sweeps::quantities::QUANTITIES;
+use crate::sweeps::quantity_table::QUANTITIES;
 
-pub use crate::sweeps::quantities::{Eval, Origin, Quantity};
+pub use crate::sweeps::quantity_table::{Eval, Origin, Quantity};
 
 /// A quantity, and for a harmonic's quantity which harmonic (0-based).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -72,7 +72,7 @@ pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
         .map_err(SolveError::InvalidInput)?;
     for (i, h) in harmonics.iter().enumerate() {
         let n = i + 1;
-        let named = |name: &str| format!("harmonic {n}: {name}");
+        let of_harmonic = |name: &str| format!("harmonic {n}: {name}");
         [
             (&limits::AMPLITUDE, "amplitude", h.amplitude),
             (&limits::WAVENUMBER, "wavenumber_x", h.wavenumber_x),
@@ -81,7 +81,7 @@ pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
             (&limits::PHASE, "phase_y", h.phase_y),
         ]
         .iter()
-        .try_for_each(|(limit, name, value)| limit.check(&named(name), *value))
+        .try_for_each(|(limit, name, value)| limit.check(&of_harmonic(name), *value))
         .map_err(SolveError::InvalidInput)?;
         if h.wavenumber() == 0.0 {
             return Err(SolveError::InvalidInput(format!(
