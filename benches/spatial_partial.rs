@@ -9,7 +9,7 @@ use std::hint::black_box;
 use wearlab::physics::spatial::SpatialInputs;
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::running_in::{Stepping, run_in_with};
-use wearlab::preset::bundled;
+use wearlab::preset::{bundled, default_spatial_section};
 
 fn preset(file: &str) -> SpatialInputs {
     bundled(file).unwrap().unwrap().spatial_inputs()
@@ -40,22 +40,25 @@ fn bench(c: &mut Criterion) {
     // the 1-D wave of "contact-lost" (partial at t = 0)
     let wave = preset("contact-lost.toml");
     solve_once(c, "partial_solve/4096x1", &wave, 4096);
-    // running-in to complete contact: the 1-D wave on 1024 nodes with a step giving 300 steps
-    // (the default step gives 65), and the egg-box on 64 x 64 with the default step
+    // running-in to complete contact: the 1-D wave on 1024 nodes and the egg-box on 64 x 64,
+    // with the default time tolerance
+    let tolerance = default_spatial_section().time_tolerance;
     let wave_setup = Setup::new(&wave, 1024).unwrap();
-    let mut stepping = Stepping::of(&wave_setup).unwrap();
-    stepping.dt = 62.73 / 300.0;
     let egg_setup = Setup::new(&egg, 64).unwrap();
-    for (name, setup, stepping) in [
-        ("running_in/1d_1024", &wave_setup, Some(stepping)),
-        ("running_in/2d_64x64", &egg_setup, Stepping::of(&egg_setup)),
+    for (name, setup) in [
+        ("running_in/1d_1024", &wave_setup),
+        ("running_in/2d_64x64", &egg_setup),
     ] {
+        let stepping = Stepping::of(setup, tolerance);
         let go = || run_in_with(setup, stepping, &mut |_| ControlFlow::Continue(())).unwrap();
         let run = go();
         println!(
-            "{name}: {} steps to complete contact at t = {:.4e} s",
+            "{name}: {} steps ({} refused) to complete contact at t = {:.6e} s, time-step error \
+             {:.1e}",
             run.samples.len() - 1,
-            run.time_to_complete.unwrap()
+            run.rejected,
+            run.time_to_complete.unwrap(),
+            run.time_error(f64::INFINITY).unwrap()
         );
         c.bench_function(name, |b| b.iter(|| black_box(go())));
     }

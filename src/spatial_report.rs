@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::physics::spatial::contact::{self, Contact, NotCertified};
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::run_in;
+use crate::physics::spatial::partial::running_in::{MAX_STEPS, run_in};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::state::{SpatialState, StateAt};
@@ -67,6 +67,12 @@ pub struct ContactReport {
     /// The simulated time [s] at which the running-in makes the contact complete; null when it is
     /// complete at t = 0, or still partial at the end of the running-in (README, partial contact).
     pub time_to_complete: Option<f64>,
+    /// The estimated time-stepping error of the running-in at t: the sum of its steps' local
+    /// error estimates, relative to the rms of the punch shape at t = 0 (it bounds the relative
+    /// time-stepping error of max_pressure, mu_star and time_to_complete, and that of mean_gap
+    /// relative to the shape's rms; `spatial.time_tolerance` sets it); null when nothing is
+    /// stepped (complete at t = 0, no wear).
+    pub time_error: Option<f64>,
     /// min of the complete-contact pressure p_cc [Pa] of the shape at t: negative when partial.
     pub min_pressure: f64,
     /// Where [x, y] [m] (null when only the bound is known).
@@ -203,7 +209,16 @@ fn on_the_cell(
     at: &StateAt,
     probes: &[[f64; 2]],
 ) -> Result<SpatialReport, SolveError> {
-    let run = run_in(setup, &mut |_| ControlFlow::Continue(()))?;
+    let run = run_in(setup, at.time_tolerance, &mut |_| ControlFlow::Continue(()))?;
+    if run.step_bound_reached() {
+        return Err(SolveError::NoSolution(format!(
+            "the running-in reached its bound of {MAX_STEPS} time steps at t = {:.6e} s with the \
+             contact still partial: the time tolerance {:.1e} asks for more steps than that \
+             (raise spatial.time_tolerance)",
+            run.end_time(),
+            at.time_tolerance
+        )));
+    }
     let state = run.state_at(at.time)?;
     let o = state.outputs;
     // complete from t = 0: the closed form of the original harmonics holds exactly
@@ -221,6 +236,7 @@ fn on_the_cell(
         complete: o.complete,
         fraction: o.contact_fraction,
         time_to_complete: run.time_to_complete,
+        time_error: run.time_error(at.time),
         min_pressure: if closed_shape {
             c.min_pressure
         } else {
@@ -328,6 +344,7 @@ fn closed_form(inputs: &SpatialInputs, closed: SpatialState, probes: &[[f64; 2]]
             complete: true,
             fraction: 1.0,
             time_to_complete: None,
+            time_error: None,
             min_pressure: c.min_pressure,
             at: c.at,
             lower_bound: c.lower_bound,

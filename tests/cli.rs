@@ -433,3 +433,55 @@ fn strip_model_through_the_command_line() {
     assert!(v["energy"]["residual"].as_f64().unwrap() < 1e-6);
     assert_eq!(v["sweep"]["mu_star"].as_array().unwrap().len(), 40);
 }
+
+#[test]
+fn the_running_in_reports_its_time_step_error_and_takes_a_time_tolerance() {
+    let solve = |path: &std::path::Path| {
+        let out = wearlab()
+            .arg("solve")
+            .arg(path)
+            .args(["--time", "20"])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        v["contact"]["time_error"].as_f64().unwrap()
+    };
+    // partial at t = 0: the running-in is stepped with the default tolerance 1e-6, whose sum of
+    // step estimates stays below 1e-6 beta t (beta t = 0.41 at t = 20 s)
+    let default = solve(std::path::Path::new("presets/contact-lost.toml"));
+    assert!(default > 0.0 && default < 0.5e-6, "{default}");
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string("presets/contact-lost.toml").unwrap();
+    let path = dir.path().join("loose.toml");
+    let loose = text.replace("grid = 64", "grid = 64\ntime_tolerance = 1e-4");
+    std::fs::write(&path, &loose).unwrap();
+    let looser = solve(&path);
+    assert!(looser > 10.0 * default && looser < 0.5e-4, "{looser}");
+    // out of its range: invalid input, with the line
+    let line = 1 + loose
+        .lines()
+        .position(|l| l == "time_tolerance = 1e-4")
+        .unwrap();
+    std::fs::write(&path, loose.replace("1e-4", "1e-9")).unwrap();
+    let out = wearlab().arg("solve").arg(&path).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains(&format!(
+            "loose.toml:{line}: time_tolerance = 1e-9 is out of range"
+        )),
+        "{err}"
+    );
+    // complete from t = 0: nothing is stepped
+    let out = wearlab()
+        .args(["solve", "presets/wave-thick-layer.toml"])
+        .output()
+        .unwrap();
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["contact"]["time_error"], Value::Null);
+}

@@ -153,6 +153,7 @@ proptest! {
                 let at = StateAt {
                     time,
                     grid: 8,
+                    time_tolerance: 1e-6,
                     sweep: SweepRange {
                         min: inp.mean_pressure * 0.5,
                         max: inp.mean_pressure,

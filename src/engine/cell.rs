@@ -68,6 +68,7 @@ impl CellOutput {
 pub(super) struct CellKey {
     pub(super) inputs: SpatialInputs,
     pub(super) grid: usize,
+    pub(super) time_tolerance: f64,
 }
 
 /// A running-in and the error that stopped its stepping, if one did.
@@ -126,7 +127,8 @@ impl Engine {
         if self.runs.get_mut(key).is_none() {
             self.counts.running_in += 1;
             let run = Setup::new(&key.inputs, key.grid).and_then(|setup| {
-                let running_in = RunningIn::start(&setup, Stepping::of(&setup))?;
+                let running_in =
+                    RunningIn::start(&setup, Stepping::of(&setup, key.time_tolerance))?;
                 Ok(Run {
                     running_in,
                     stuck: None,

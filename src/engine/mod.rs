@@ -325,6 +325,7 @@ impl Engine {
         let key = CellKey {
             inputs: inputs.clone(),
             grid: at.grid,
+            time_tolerance: at.time_tolerance,
         };
         let sweep = &at.sweep;
         let pressures = state.sweep.mean_pressure.clone();

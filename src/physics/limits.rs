@@ -156,6 +156,10 @@ pub const PHASE: Limit = range("-1e6 <= rho <= 1e6 (rad)", -1e6, 1e6);
 pub const HARMONICS: Limit = range("a whole number from 1 to 64", 1.0, 64.0).whole();
 /// Time t [s] (up to 30,000 years).
 pub const TIME: Limit = range("0 <= t <= 1e12 (s)", 0.0, 1e12);
+/// Time tolerance of the running-in: the local error allowed per time step, relative to the rms
+/// of the shape at t = 0, per decay time 1/beta of the slowest harmonic (below 1e-8 the steps
+/// would exceed the running-in's bound).
+pub const TIME_TOLERANCE: Limit = range("1e-8 <= time tolerance <= 1e-2", 1e-8, 1e-2);
 /// Duration of the time charts [s].
 pub const DURATION: Limit = range("0 < duration <= 1e12 (s)", f64::MIN_POSITIVE, 1e12);
 /// Points per side of the grid (fields and partial contact); at most `GRID_2D` for a shape that

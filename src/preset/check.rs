@@ -274,6 +274,10 @@ impl Checker<'_> {
                 None => default_spatial_section().duration,
             },
             grid,
+            time_tolerance: match &sp.time_tolerance {
+                Some(t) => self.value(t, "time_tolerance", &limits::TIME_TOLERANCE)?,
+                None => default_spatial_section().time_tolerance,
+            },
             sweep,
             harmonics,
         };

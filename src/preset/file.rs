@@ -87,6 +87,9 @@ pub(super) struct FileSpatial {
     pub(super) duration: Option<Spanned<f64>>,
     #[serde(default = "default_grid")]
     pub(super) grid: Spanned<i64>,
+    /// Absent: the default section's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) time_tolerance: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FilePressureSweep>>,
     #[serde(default)]
@@ -206,6 +209,9 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
         time: plain(sp.time),
         duration: Some(plain(sp.duration)),
         grid: plain(sp.grid as i64),
+        // written only when it is not the default, so that saved presets stay as they were
+        time_tolerance: (sp.time_tolerance != default_spatial_section().time_tolerance)
+            .then(|| plain(sp.time_tolerance)),
         sweep: Some(plain(FilePressureSweep {
             pressure_min: plain(sp.sweep.min),
             pressure_max: plain(sp.sweep.max),

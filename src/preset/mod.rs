@@ -77,6 +77,8 @@ pub struct SpatialSection {
     pub duration: f64,
     /// Points per side of the field grid.
     pub grid: usize,
+    /// The time tolerance of the running-in (see `limits::TIME_TOLERANCE`).
+    pub time_tolerance: f64,
     /// The mean pressures of the mu*(pbar) sweep.
     pub sweep: SweepRange,
     /// The punch harmonics at t = 0.
@@ -154,6 +156,7 @@ impl Preset {
         StateAt {
             time: self.spatial.time,
             grid: self.spatial.grid,
+            time_tolerance: self.spatial.time_tolerance,
             sweep: self.spatial.sweep,
         }
     }
@@ -170,7 +173,8 @@ pub fn default_plane_section() -> PlaneSection {
 }
 
 /// The `[spatial]` section a preset without one gets: pbar = 50 MPa, V = 1 m/s, one 1-D wave of
-/// 1 mm wavelength and 40 nm amplitude, t = 0, duration 200 s, a 64-point grid.
+/// 1 mm wavelength and 40 nm amplitude, t = 0, duration 200 s, a 64-point grid, a time tolerance
+/// of 1e-6 (time-stepping errors of the running-in's outputs below about 1e-6 relative).
 pub fn default_spatial_section() -> SpatialSection {
     SpatialSection {
         mean_pressure: 5e7,
@@ -178,6 +182,7 @@ pub fn default_spatial_section() -> SpatialSection {
         time: 0.0,
         duration: 200.0,
         grid: 64,
+        time_tolerance: 1e-6,
         sweep: default_pressure_sweep(5e7),
         harmonics: vec![Harmonic {
             amplitude: 4e-8,

@@ -24,12 +24,13 @@ pub const PLANE: [Entry; 9] = [
 
 /// The spatial problem's status symbols.
 #[rustfmt::skip]
-pub const SPATIAL: [Entry; 15] = [
+pub const SPATIAL: [Entry; 16] = [
     ("t", "s", "the instant shown (space plays time)"),
     ("partial contact (N%)", "-", "the contact, solved on the nodes of the period cell, is partial: N % of the cell touches (p > 0); 'complete contact' when all of it does"),
     ("p_max", "Pa", "largest contact pressure in the cell (p_min (nodes): the smallest, once contact is complete)"),
     ("running in", "s", "the wear of the punch is being simulated, step by step: the simulated time reached and the time asked for; until t is reached the state shown is the last one reached"),
     ("complete after t (simulated)", "s", "when the simulated running-in makes the contact complete; wear concentrates on the crests that touch, so the closed-form bound (formal bound: complete contact assumed all along) can be far off"),
+    ("time-step error", "-", "how far the simulated running-in may be from the exact one because time advances in finite steps, relative to the values shown (an estimate); spatial.time_tolerance in the preset sets it: smaller means more steps"),
     ("after complete contact", "", "the harmonics' closed-form rates below (1/beta, c, phi) hold once the contact is complete, not while it is partial"),
     ("mu*", "-", "total friction coefficient mu + (1 + mu^2) psi/P at time t"),
     ("psi", "Pa", "deformation component of friction per unit area, psi = -<p dg/dx>; > 0 adds to friction"),

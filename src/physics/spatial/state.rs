@@ -36,6 +36,8 @@ pub struct StateAt {
     pub time: f64,
     /// Points per side of the field grid.
     pub grid: usize,
+    /// The time tolerance of the running-in in partial contact (`limits::TIME_TOLERANCE`).
+    pub time_tolerance: f64,
     /// The mean pressures of the mu*(pbar) sweep [Pa].
     pub sweep: SweepRange,
 }

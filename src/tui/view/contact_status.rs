@@ -87,16 +87,21 @@ pub fn head(
             "running in to complete contact: t = {}",
             format_si(reached, "s")
         ),
-        Progress::Done { reached } => done(c, closed, reached),
+        Progress::Done { reached } => done(c, closed, reached, true),
     };
     let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
-    let done = matches!(c.progress, Progress::Done { .. });
-    let said = then && !o.complete && done && complete_at.is_some();
-    let running = if said {
-        format!("{running}, then:")
-    } else {
-        running
+    let done_at = match c.progress {
+        Progress::Done { reached } => Some(reached),
+        Progress::Running { .. } => None,
     };
+    let said = then && !o.complete && done_at.is_some() && complete_at.is_some();
+    let then = if said { ", then:" } else { "" };
+    let mut running = format!("{running}{then}");
+    // the time-step error only where the line keeps to one row (the harmonics' rows under it
+    // need the room)
+    if let Some(reached) = done_at.filter(|_| running.chars().count() > width) {
+        running = format!("{}{then}", done(c, closed, reached, false));
+    }
     lines.extend(
         wrap(&running, width)
             .into_iter()
@@ -105,16 +110,26 @@ pub fn head(
     (lines, !o.complete, said)
 }
 
-/// The end of the running-in (its last stepped state at `reached` [s]), in words.
-fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64) -> String {
-    let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
+/// The end of the running-in (its last stepped state at `reached` [s]), in words, with the
+/// estimate of its time-stepping error when `error` (relative: the values shown are that close
+/// to the exact running-in on this grid).
+fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64, error: bool) -> String {
+    let history = c.history.as_deref().ok();
+    let complete_at = history.and_then(|h| h.time_to_complete);
+    let error = history
+        .and_then(|h| h.time_error)
+        .filter(|_| error)
+        .map_or(String::new(), |e| format!(", time-step error < {e:.1e}"));
     match complete_at {
-        Some(t) => format!("complete after t = {} (simulated)", format_si(t, "s")),
+        Some(t) => format!(
+            "complete after t = {} (simulated{error})",
+            format_si(t, "s")
+        ),
         None if closed.inputs.wear_rate() == 0.0 => "no wear: the contact stays as it is".into(),
         None => format!(
             "still partial at t = {}: complete contact not reached within the running-in's bound \
              ({HORIZON_DECAY_TIMES} decay times 1/beta of the slowest harmonic, at most {MAX_STEPS} \
-             steps)",
+             steps{error})",
             format_si(reached, "s")
         ),
     }

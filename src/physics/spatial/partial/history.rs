@@ -3,7 +3,8 @@
 use serde::Serialize;
 
 use crate::physics::SolveError;
-use crate::physics::spatial::partial::running_in::{RunningIn, Sample};
+use crate::physics::spatial::partial::running_in::RunningIn;
+use crate::physics::spatial::partial::state::Outputs;
 
 /// The outputs against time over [0, duration].
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -24,12 +25,14 @@ pub struct History {
     pub min_pressure_complete: Vec<f64>,
     /// The simulated time to complete contact [s] (None: complete at t = 0, or not reached).
     pub time_to_complete: Option<f64>,
+    /// The estimated time-stepping error of the last stepped state, relative to the rms of the
+    /// shape at t = 0 ([`RunningIn::time_error`]; None when nothing is stepped).
+    pub time_error: Option<f64>,
 }
 
 impl History {
-    fn push(&mut self, s: &Sample) {
-        let o = &s.outputs;
-        self.time.push(s.time);
+    fn push(&mut self, time: f64, o: &Outputs) {
+        self.time.push(time);
         self.contact_fraction.push(o.contact_fraction);
         self.max_pressure.push(o.max_pressure);
         self.mu_star.push(o.mu_star);
@@ -46,12 +49,13 @@ impl RunningIn {
     pub fn history(&self, duration: f64, points: usize) -> Result<History, SolveError> {
         let mut h = History {
             time_to_complete: self.time_to_complete,
+            time_error: self.time_error(f64::INFINITY),
             ..History::default()
         };
         self.samples
             .iter()
             .filter(|s| s.time <= duration)
-            .for_each(|s| h.push(s));
+            .for_each(|s| h.push(s.time, &s.outputs));
         let Some(from) = self.complete_from.filter(|from| *from < duration) else {
             return Ok(h);
         };
@@ -67,10 +71,7 @@ impl RunningIn {
             if !state.outputs.complete {
                 break;
             }
-            h.push(&Sample {
-                time: t,
-                outputs: state.outputs,
-            });
+            h.push(t, &state.outputs);
         }
         Ok(h)
     }

@@ -7,9 +7,18 @@ use std::ops::ControlFlow;
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::running_in::{
-    RunningIn, Sample, Snapshot, Stepper, Stepping,
+    MAX_TRIES, RunningIn, Sample, Snapshot, Stepper, Stepping, Trial,
 };
 use crate::physics::spatial::partial::state::{State, evaluate};
+
+/// The step factor of the controller: the next step is `SAFETY` (allowed/estimated)^(1/2) times
+/// the last (BDF2's local error grows like h^3, the allowed error like h), within
+/// [`SHRINK`, `GROW`], and not above 1 right after a refused try; `GROW` keeps the step ratio of
+/// variable-step BDF2 below its zero-stability bound 1 + sqrt 2 (Hairer, Norsett, Wanner,
+/// Solving ODEs I, section III.5).
+const SAFETY: f64 = 0.9;
+const SHRINK: f64 = 0.2;
+const GROW: f64 = 2.0;
 
 impl RunningIn {
     /// The running-in of `setup` at t = 0: the first contact state solved, nothing stepped yet
@@ -21,18 +30,23 @@ impl RunningIn {
             0.0,
             None,
         )?;
+        let (pbar, k_w) = (setup.inputs.mean_pressure, setup.inputs.wear_rate());
         Ok(RunningIn {
             setup: setup.clone(),
             stepping,
             samples: vec![Sample {
                 time: 0.0,
                 outputs: first.outputs,
+                time_error: 0.0,
             }],
             time_to_complete: None,
             complete_from: first.outputs.complete.then_some(0.0),
+            rejected: 0,
             end_shape: setup.initial_shape.clone(),
             end_previous: None,
             end_contact: first.contact(),
+            end_slope: first.pressure.iter().map(|p| -k_w * (p - pbar)).collect(),
+            next_step: stepping.map_or(0.0, |s| s.first),
             snapshots: vec![Snapshot {
                 step: 0,
                 previous: None,
@@ -43,13 +57,13 @@ impl RunningIn {
         })
     }
 
-    /// True when nothing more is stepped: contact is complete, there is no wear, or the step
-    /// bound of [`Stepping`] is reached.
+    /// True when nothing more is stepped: contact is complete, there is no wear, or the horizon
+    /// or the step bound of [`Stepping`] is reached.
     pub fn finished(&self) -> bool {
         self.complete_from.is_some()
             || self
                 .stepping
-                .is_none_or(|s| self.samples.len() > s.max_steps)
+                .is_none_or(|s| self.samples.len() > s.max_steps || self.end_time() >= s.horizon)
     }
 
     /// Steps the wear on until the last stepped state is at time `until` [s] or later, or the
@@ -68,15 +82,17 @@ impl RunningIn {
         let (pbar, friction) = (setup.inputs.mean_pressure, setup.inputs.friction);
         let mut stepper = Stepper::new(
             &setup,
-            stepping.dt,
             self.samples.len() - 1,
+            self.end_time(),
             self.end_previous.take(),
             std::mem::take(&mut self.end_shape),
             std::mem::take(&mut self.end_contact),
         );
+        stepper.slope = Some(std::mem::take(&mut self.end_slope));
+        let scale = rms(&setup.initial_shape);
         let mut result = Ok(());
-        while stepper.step < stepping.max_steps && self.end_time() < until {
-            let (sol, mean_gap) = match stepper.advance() {
+        while !self.finished() && self.end_time() < until {
+            let (trial, error) = match self.try_step(&mut stepper, &stepping, scale) {
                 Ok(step) => step,
                 Err(why) => {
                     result = Err(why);
@@ -85,18 +101,22 @@ impl RunningIn {
             };
             let (outputs, _) = evaluate(
                 &mut stepper.op,
-                &stepper.current,
+                &trial.shape,
                 pbar,
                 &friction,
-                &sol,
-                mean_gap,
+                &trial.solution,
+                trial.mean_gap,
             );
-            let time = stepper.step as f64 * stepping.dt;
-            let before = self.samples.last().expect("t = 0 is sampled").outputs;
-            self.samples.push(Sample { time, outputs });
+            let time = trial.time;
+            stepper.accept(trial);
+            let time_error = self.samples.last().expect("t = 0 is sampled").time_error + error;
+            self.samples.push(Sample {
+                time,
+                outputs,
+                time_error,
+            });
             if outputs.complete {
-                let (m1, m2) = (before.min_pressure_complete, outputs.min_pressure_complete);
-                self.time_to_complete = Some(time - stepping.dt * m2 / (m2 - m1));
+                self.time_to_complete = Some(self.zero_of_min_pressure());
                 self.complete_from = Some(time);
                 break;
             }
@@ -112,7 +132,84 @@ impl RunningIn {
         self.end_shape = stepper.current;
         self.end_previous = stepper.previous;
         self.end_contact = stepper.contact;
+        self.end_slope = stepper.slope.unwrap_or_default();
         result
+    }
+
+    /// One step within the tolerance: tried with the proposed step, shrunk while its estimate is
+    /// above `tolerance` beta_min h (at most `MAX_TRIES` tries); the step after it proposed.
+    /// Returns the step and its error estimate relative to `scale` [m].
+    fn try_step(
+        &mut self,
+        stepper: &mut Stepper,
+        stepping: &Stepping,
+        scale: f64,
+    ) -> Result<(Trial, f64), SolveError> {
+        let now = stepper.time;
+        let mut refused = false;
+        for _ in 0..MAX_TRIES {
+            let time = (now + self.next_step).min(stepping.horizon);
+            if time <= now {
+                break;
+            }
+            let trial = stepper.trial(time)?;
+            let h = time - now;
+            let error = stepper.local_error(&trial).map_or(0.0, |e| rms(&e) / scale);
+            let error = if error.is_finite() {
+                error
+            } else {
+                f64::INFINITY
+            };
+            let allowed = stepping.tolerance * stepping.rate * h;
+            let factor = if error > 0.0 {
+                (SAFETY * (allowed / error).sqrt()).clamp(SHRINK, GROW)
+            } else {
+                GROW
+            };
+            self.next_step = h * if refused { factor.min(1.0) } else { factor };
+            if error <= allowed {
+                return Ok((trial, error));
+            }
+            self.rejected += 1;
+            refused = true;
+        }
+        Err(SolveError::NoSolution(format!(
+            "the running-in's time step at t = {now:.6e} s was refused by its error estimate down \
+             to {:.3e} s: the time tolerance {:.1e} cannot be met there",
+            self.next_step, stepping.tolerance
+        )))
+    }
+
+    /// The zero of m(t) = min over the nodes of p_cc in the last step, on the quadratic through
+    /// the last three samples (the line through the last two after the first step).
+    fn zero_of_min_pressure(&self) -> f64 {
+        let n = self.samples.len();
+        let point = |s: &Sample| (s.time, s.outputs.min_pressure_complete);
+        let (t1, m1) = point(&self.samples[n - 2]);
+        let (t2, m2) = point(&self.samples[n - 1]);
+        let curve = |t: f64| match n {
+            0..=2 => m1 + (m2 - m1) * (t - t1) / (t2 - t1),
+            _ => {
+                let (t0, m0) = point(&self.samples[n - 3]);
+                m0 * (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2))
+                    + m1 * (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2))
+                    + m2 * (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1))
+            }
+        };
+        // m(t1) < 0 <= m(t2): bisection down to adjacent floating-point numbers
+        let (mut low, mut high) = (t1, t2);
+        for _ in 0..200 {
+            let mid = 0.5 * (low + high);
+            if mid <= low || mid >= high {
+                break;
+            }
+            if curve(mid) < 0.0 {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        0.5 * (low + high)
     }
 
     /// The last stepped state (one contact solve, started from its contact set): what
@@ -127,4 +224,9 @@ impl RunningIn {
             Some(&self.end_contact),
         )
     }
+}
+
+/// The root mean square of `values`.
+fn rms(values: &[f64]) -> f64 {
+    (values.iter().map(|v| v * v).sum::<f64>() / values.len() as f64).sqrt()
 }

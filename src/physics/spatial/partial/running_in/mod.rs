@@ -1,15 +1,16 @@
 //! Running-in by wear (docs/physics/spatial-partial.md section 5): the zero-mean shape U stepped
 //! implicitly while contact is partial, the mean gbar(t) = gbar(0) - k_w pbar t kept apart.
 //!
-//! One contact solve per step, with the operator K + c dt k_w:
-//!   BE (first step, c = 1):  U1 = U0 - dt k_w (p1 - pbar),
-//!   BDF2 (c = 2/3):          U2 = (4 U1 - U0)/3 - (2/3) dt k_w (p2 - pbar).
-//! (U_new, p_new) then solves the true contact problem for U_new. The time at which contact
-//! becomes complete is the zero of m(t) = min over the nodes of p_cc(U(t)), linearly interpolated
-//! between steps; from the first complete step on, every Fourier mode of the worn shape follows
-//! the closed form U^(t) = U^(t1) exp(-k_w (t - t1)/(A - i mu sx B)).
+//! The steps (BE, then variable-step BDF2: [`stepper`]) are sized by the estimate of their local
+//! error: each step's error, relative to the rms of U(0), stays below `tolerance` beta_min h
+//! (error per unit step, so that the sum over the running-in, the reported estimate, grows like
+//! the tolerance times the decay times 1/beta_min elapsed). The time at which contact becomes
+//! complete is the zero of m(t) = min over the nodes of p_cc(U(t)), interpolated by the quadratic
+//! through the last three steps; from the first complete step on, every Fourier mode of the worn
+//! shape follows the closed form U^(t) = U^(t1) exp(-k_w (t - t1)/(A - i mu sx B)).
 
 mod extend;
+pub mod stepper;
 
 use std::ops::ControlFlow;
 
@@ -19,18 +20,17 @@ use thiserror::Error;
 use crate::physics::SolveError;
 use crate::physics::spatial::harmonic::evolution;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::active_set::{ContactProblem, ContactSolution, solve};
-use crate::physics::spatial::partial::operator::Operator;
 use crate::physics::spatial::partial::state::{Outputs, State};
 
-/// Steps per decay time 1/beta_max of the fastest harmonic: dt = 0.02/beta_max (section 5: BDF2
-/// with beta dt <= 0.02 gives the time to complete contact to about 5e-4).
-pub const STEPS_PER_DECAY_TIME: f64 = 50.0;
+pub use stepper::{Stepper, Trial};
+
 /// The running-in is stepped over at most this many decay times 1/beta_min of the slowest
 /// harmonic; a contact still partial then has no time to complete contact.
 pub const HORIZON_DECAY_TIMES: f64 = 100.0;
 /// And over at most this many steps.
-pub const MAX_STEPS: usize = 20_000;
+pub const MAX_STEPS: usize = 100_000;
+/// Most tries of one step (each rejected try shrinks it).
+pub const MAX_TRIES: usize = 30;
 /// Shape values kept for replaying the steps (32 MiB; snapshots are thinned beyond it).
 pub const SNAPSHOT_VALUES: usize = 1 << 22;
 
@@ -55,11 +55,18 @@ impl From<Stopped> for SolveError {
     }
 }
 
-/// The time step of the running-in.
+/// How the running-in is stepped.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stepping {
-    /// dt [s].
-    pub dt: f64,
+    /// The local error allowed per step, relative to the rms of U(0), per decay time 1/beta_min
+    /// (the preset's `spatial.time_tolerance`).
+    pub tolerance: f64,
+    /// beta_min [1/s]: the closed-form decay rate of the slowest harmonic.
+    pub rate: f64,
+    /// The first step [s].
+    pub first: f64,
+    /// The stepping stops at this time [s] while the contact is still partial.
+    pub horizon: f64,
     /// Most steps.
     pub max_steps: usize,
     /// Most shape values kept for replaying the steps in `state_at` (every k-th step is kept,
@@ -68,9 +75,10 @@ pub struct Stepping {
 }
 
 impl Stepping {
-    /// dt = 1/(50 beta_max) over at most 100/beta_min and `MAX_STEPS` steps, with the
-    /// closed-form decay rates beta of the harmonics of nonzero amplitude; None without wear.
-    pub fn of(setup: &Setup) -> Option<Stepping> {
+    /// The stepping of `setup` with `tolerance`, from the closed-form decay rates beta of the
+    /// harmonics of nonzero amplitude: a first step of `tolerance`/beta_max, over at most
+    /// 100/beta_min and `MAX_STEPS` steps; None without wear.
+    pub fn of(setup: &Setup, tolerance: f64) -> Option<Stepping> {
         let inputs = &setup.inputs;
         let rates: Vec<f64> = inputs
             .harmonics
@@ -84,101 +92,23 @@ impl Stepping {
         if rates.is_empty() || slowest <= 0.0 || !fastest.is_finite() {
             return None;
         }
-        let dt = 1.0 / (STEPS_PER_DECAY_TIME * fastest);
-        let steps = (HORIZON_DECAY_TIMES / slowest / dt).ceil();
         Some(Stepping {
-            dt,
-            max_steps: if steps < MAX_STEPS as f64 {
-                steps as usize
-            } else {
-                MAX_STEPS
-            },
+            tolerance,
+            rate: slowest,
+            first: tolerance / fastest,
+            horizon: HORIZON_DECAY_TIMES / slowest,
+            max_steps: MAX_STEPS,
             memory: SNAPSHOT_VALUES,
         })
     }
 }
 
-/// The implicit stepper: U_{k-1}, U_k and the contact set of step k.
-pub struct Stepper<'a> {
-    /// The problem.
-    pub setup: &'a Setup,
-    /// The operator (its buffers are reused by every step).
-    pub op: Operator,
-    /// dt [s].
-    pub dt: f64,
-    /// k: the steps done.
-    pub step: usize,
-    /// U_{k-1} [m] (None at k = 0: the next step is BE).
-    pub previous: Option<Vec<f64>>,
-    /// U_k [m].
-    pub current: Vec<f64>,
-    /// The contact set of step k (the next step starts from it).
-    pub contact: Vec<bool>,
-}
-
-impl<'a> Stepper<'a> {
-    /// A stepper at step k = `step` with U_{k-1} = `previous`, U_k = `current` and its contact
-    /// set.
-    pub fn new(
-        setup: &'a Setup,
-        dt: f64,
-        step: usize,
-        previous: Option<Vec<f64>>,
-        current: Vec<f64>,
-        contact: Vec<bool>,
-    ) -> Stepper<'a> {
-        Stepper {
-            op: setup.operator(),
-            setup,
-            dt,
-            step,
-            previous,
-            current,
-            contact,
-        }
-    }
-
-    /// One step (BE when k = 0, BDF2 after): U_{k+1}, and the step's contact solution with the
-    /// mean gap [m] of the true problem for U_{k+1}.
-    pub fn advance(&mut self) -> Result<(ContactSolution, f64), SolveError> {
-        let inputs = &self.setup.inputs;
-        let pbar = inputs.mean_pressure;
-        let (base, c) = match &self.previous {
-            None => (self.current.clone(), self.dt * inputs.wear_rate()),
-            Some(before) => (
-                self.current
-                    .iter()
-                    .zip(before)
-                    .map(|(u1, u0)| (4.0 * u1 - u0) / 3.0)
-                    .collect(),
-                2.0 / 3.0 * self.dt * inputs.wear_rate(),
-            ),
-        };
-        let problem = ContactProblem {
-            shape: &base,
-            mean_pressure: pbar,
-            adhesion: inputs.friction.adhesion,
-            diagonal: c,
-        };
-        let sol = solve(&mut self.op, &problem, Some(&self.contact))?;
-        let next = base
-            .iter()
-            .zip(&sol.pressure)
-            .map(|(u, p)| u - c * (p - pbar))
-            .collect();
-        self.previous = Some(std::mem::replace(&mut self.current, next));
-        self.contact = sol.contact();
-        self.step += 1;
-        let mean_gap = sol.offset + c * pbar;
-        Ok((sol, mean_gap))
-    }
-}
-
-/// What a replay starts from: the step index, U_{k-1} (None at k = 0), U_k and its contact set.
+/// What a replay starts from: the step index, t_{k-1} and U_{k-1} (None at k = 0), U_k and its
+/// contact set.
 #[derive(Clone, Debug, PartialEq)]
 struct Snapshot {
     step: usize,
-    previous: Option<Vec<f64>>,
+    previous: Option<(f64, Vec<f64>)>,
     shape: Vec<f64>,
     contact: Vec<bool>,
 }
@@ -190,6 +120,9 @@ pub struct Sample {
     pub time: f64,
     /// The outputs at t.
     pub outputs: Outputs,
+    /// The sum of the steps' local error estimates up to t, relative to the rms of U(0): the
+    /// estimated time-stepping error of the state at t (0 at t = 0).
+    pub time_error: f64,
 }
 
 /// The running-in of one setup: the stepped history, the time to complete contact, and what is
@@ -198,7 +131,7 @@ pub struct Sample {
 pub struct RunningIn {
     /// The problem.
     pub setup: Setup,
-    /// The time step (None without wear: nothing changes).
+    /// The stepping (None without wear: nothing changes).
     pub stepping: Option<Stepping>,
     /// The stepped states' outputs, from t = 0 (only t = 0 when complete from the start).
     pub samples: Vec<Sample>,
@@ -208,27 +141,33 @@ pub struct RunningIn {
     /// The time [s] from which the closed form holds (the first complete state); None while
     /// partial at the end.
     pub complete_from: Option<f64>,
+    /// Steps tried and rejected by the error estimate.
+    pub rejected: usize,
     /// U_k [m] of the last stepped state.
     end_shape: Vec<f64>,
-    /// U_{k-1} [m] and the contact set of the last stepped state (where [`RunningIn::extend`]
-    /// goes on from).
-    end_previous: Option<Vec<f64>>,
+    /// t_{k-1}, U_{k-1}, the contact set and the slope U'_k of the last stepped state, and the
+    /// next step [s] (where [`RunningIn::extend`] goes on from).
+    end_previous: Option<(f64, Vec<f64>)>,
     end_contact: Vec<bool>,
+    end_slope: Vec<f64>,
+    next_step: f64,
     snapshots: Vec<Snapshot>,
     stride: usize,
 }
 
 /// Steps the wear of `setup` from t = 0 until contact is complete (or the bound of
-/// [`Stepping::of`]). `progress` gets the fraction done (how far min p_cc has risen from its
-/// start towards 0) after every step; `ControlFlow::Break` abandons the work.
+/// [`Stepping::of`]) with the time tolerance `tolerance`. `progress` gets the fraction done (how
+/// far min p_cc has risen from its start towards 0) after every step; `ControlFlow::Break`
+/// abandons the work.
 pub fn run_in(
     setup: &Setup,
+    tolerance: f64,
     progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
 ) -> Result<RunningIn, Stopped> {
-    run_in_with(setup, Stepping::of(setup), progress)
+    run_in_with(setup, Stepping::of(setup, tolerance), progress)
 }
 
-/// As [`run_in`] with a given time step (None: no stepping, the state of t = 0 holds).
+/// As [`run_in`] with a given stepping (None: no stepping, the state of t = 0 holds).
 pub fn run_in_with(
     setup: &Setup,
     stepping: Option<Stepping>,
@@ -282,10 +221,31 @@ impl RunningIn {
         self.samples.last().map_or(0.0, |s| s.time)
     }
 
+    /// True when the stepping stopped at its bound of steps, before complete contact and before
+    /// its horizon: the running-in has no answer past [`RunningIn::end_time`].
+    pub fn step_bound_reached(&self) -> bool {
+        self.complete_from.is_none()
+            && self
+                .stepping
+                .is_some_and(|s| self.samples.len() > s.max_steps && self.end_time() < s.horizon)
+    }
+
+    /// The estimated time-stepping error of the state at t [s] >= 0, relative to the rms of
+    /// U(0) (that of the first stepped state at or after t; after complete contact, that of the
+    /// first complete state, which the closed form carries on). None when nothing is stepped.
+    pub fn time_error(&self, t: f64) -> Option<f64> {
+        self.stepping?;
+        if self.complete_from == Some(0.0) {
+            return None;
+        }
+        let k = self.samples.partition_point(|s| s.time < t);
+        Some(self.samples[k.min(self.samples.len() - 1)].time_error)
+    }
+
     /// The state at time t [s] >= 0: the closed form from the first complete state on; before it,
-    /// the contact solution for the shape interpolated linearly between the two steps around t
-    /// (replayed from the nearest snapshot). Refused beyond the end of a running-in that stayed
-    /// partial, and where the closed form separates the contact again.
+    /// the contact solution for the shape of the step from the stepped state before t to t (the
+    /// steps replayed from the nearest snapshot). Refused beyond the end of a running-in that
+    /// stayed partial, and where the closed form separates the contact again.
     pub fn state_at(&self, t: f64) -> Result<State, SolveError> {
         let setup = &self.setup;
         let mut op = setup.operator();
@@ -303,19 +263,19 @@ impl RunningIn {
             }
             return Ok(state);
         }
-        let Some(stepping) = self.stepping else {
+        if self.stepping.is_none() {
             return setup.state(&mut op, setup.initial_shape.clone(), t, None);
-        };
+        }
         let end = self.end_time();
         if t > end {
             return Err(SolveError::NoSolution(format!(
-                "contact is still partial at t = {end:.6e} s, where the running-in stops ({} steps \
-                 of {:.3e} s); ask for t <= {end:.6e} s",
+                "contact is still partial at t = {end:.6e} s, where the running-in stops (after \
+                 {} steps); ask for t <= {end:.6e} s",
                 self.samples.len() - 1,
-                stepping.dt
             )));
         }
-        let k = ((t / stepping.dt).floor() as usize).min(self.samples.len() - 1);
+        // the last stepped state at or before t
+        let k = self.samples.partition_point(|s| s.time <= t).max(1) - 1;
         let snap = self
             .snapshots
             .iter()
@@ -324,24 +284,20 @@ impl RunningIn {
             .expect("step 0 is kept");
         let mut stepper = Stepper::new(
             setup,
-            stepping.dt,
             snap.step,
+            self.samples[snap.step].time,
             snap.previous.clone(),
             snap.shape.clone(),
             snap.contact.clone(),
         );
         while stepper.step < k {
-            stepper.advance()?;
+            stepper.advance(self.samples[stepper.step + 1].time)?;
         }
-        let (mut shape, contact) = (stepper.current.clone(), stepper.contact.clone());
-        let fraction = t / stepping.dt - k as f64;
-        if fraction > 0.0 {
-            stepper.advance()?;
-            shape
-                .iter_mut()
-                .zip(&stepper.current)
-                .for_each(|(u, v)| *u += fraction * (v - *u));
-        }
-        setup.state(&mut op, shape, t, Some(&contact))
+        let shape = if t > self.samples[k].time {
+            stepper.trial(t)?.shape
+        } else {
+            stepper.current.clone()
+        };
+        setup.state(&mut op, shape, t, Some(&stepper.contact))
     }
 }
