@@ -22,7 +22,9 @@ pub fn run(path: Option<PathBuf>, options: tui::Options) -> ExitCode {
         None => preset::default_preset(),
     };
     match tui::run(preset, path, options) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(tui::Ending::Quit) => ExitCode::SUCCESS,
+        // the shell's convention for a process ended by a signal
+        Ok(tui::Ending::Signal(n)) => ExitCode::from(u8::try_from(128 + n).unwrap_or(u8::MAX)),
         Err(e) => {
             say(&format!("error: the terminal failed: {e}"));
             ExitCode::FAILURE

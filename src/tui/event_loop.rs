@@ -30,6 +30,17 @@ pub enum LoopEvent {
     Answer(Box<Answer>),
     /// An answer from the explorer's thread (a sweep, a pass of a map).
     Explored(Box<SweepAnswer>),
+    /// A signal that ends the explorer (its number; `signals.rs`).
+    Signal(i32),
+}
+
+/// How the loop ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ending {
+    /// The user quit (or the channel closed).
+    Quit,
+    /// A signal arrived (its number).
+    Signal(i32),
 }
 
 /// The event loop over any backend (a real terminal, or a test buffer).
@@ -43,6 +54,7 @@ pub struct Loop<B: Backend> {
     worker: Worker,
     explorer: SweepWorker,
     next_frame: Instant,
+    ending: Ending,
 }
 
 impl<B: Backend> Loop<B> {
@@ -66,6 +78,7 @@ impl<B: Backend> Loop<B> {
             worker,
             explorer,
             next_frame: Instant::now() + FRAME,
+            ending: Ending::Quit,
         };
         let commands = l.app.start();
         l.perform(commands);
@@ -73,14 +86,15 @@ impl<B: Backend> Loop<B> {
         Ok(l)
     }
 
-    /// Runs until the user quits.
-    pub fn run(&mut self) -> io::Result<()> {
+    /// Runs until the user quits or a signal ends it.
+    pub fn run(&mut self) -> io::Result<Ending> {
         while self.step()? {}
-        Ok(())
+        Ok(self.ending)
     }
 
     /// Sleeps until a key, a result or the next frame of playing time; handles it and whatever
-    /// else has arrived meanwhile, then redraws once. False when the user quit.
+    /// else has arrived meanwhile, then redraws once. False when the user quit or a signal
+    /// arrived (which ends the loop before anything that came with it is handled).
     pub fn step(&mut self) -> io::Result<bool> {
         let first = if self.app.ui.playing {
             let wait = self.next_frame.saturating_duration_since(Instant::now());
@@ -95,8 +109,16 @@ impl<B: Backend> Loop<B> {
                 Err(_) => return Ok(false),
             }
         };
-        let mut messages: Vec<Msg> = first.into_iter().filter_map(message).collect();
-        messages.extend(self.wake.try_iter().filter_map(message));
+        let mut wakes: Vec<LoopEvent> = first.into_iter().collect();
+        wakes.extend(self.wake.try_iter());
+        if let Some(signal) = wakes.iter().find_map(|w| match w {
+            LoopEvent::Signal(s) => Some(*s),
+            _ => None,
+        }) {
+            self.ending = Ending::Signal(signal);
+            return Ok(false);
+        }
+        let mut messages: Vec<Msg> = wakes.into_iter().filter_map(message).collect();
         let now = Instant::now();
         if self.app.ui.playing && now >= self.next_frame {
             messages.push(Msg::Tick);
@@ -165,13 +187,11 @@ impl<B: Backend> Loop<B> {
     }
 }
 
-/// The message of a wake-up (key releases and mouse events are none).
+/// The message of a wake-up (key releases, mouse events and signals are none).
 fn message(wake: LoopEvent) -> Option<Msg> {
     match wake {
-        LoopEvent::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => {
-            Some(Msg::Key(key))
-        }
-        LoopEvent::Input(_) => None,
+        LoopEvent::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => Some(Msg::Key(key)),
+        LoopEvent::Input(_) | LoopEvent::Signal(_) => None,
         LoopEvent::Answer(answer) => Some(Msg::Answer(answer)),
         LoopEvent::Explored(answer) => Some(Msg::Explored(answer)),
     }

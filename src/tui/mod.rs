@@ -15,6 +15,8 @@ pub mod keys;
 pub mod map_cursor;
 pub mod on_screen;
 pub mod prompt_keys;
+#[cfg(unix)]
+pub mod signals;
 pub mod sweep_form_keys;
 pub mod sweep_keys;
 pub mod sweep_shown;
@@ -31,12 +33,13 @@ use std::sync::mpsc::channel;
 
 use crate::preset::Preset;
 use ratatui::Terminal;
+use ratatui::crossterm::cursor::Show;
 use ratatui::crossterm::event::{self, DisableMouseCapture, EnableMouseCapture};
 use ratatui::crossterm::execute;
 
 use app::{App, Places};
 use backend::Compact;
-pub use event_loop::{Loop, LoopEvent};
+pub use event_loop::{Ending, Loop, LoopEvent};
 use view::RenderOptions;
 
 /// Options of the explorer from the command line and the environment.
@@ -53,9 +56,10 @@ pub fn user_preset_dir() -> Option<PathBuf> {
     dirs::data_dir().map(|d| d.join("wearlab").join("presets"))
 }
 
-/// Runs the explorer until the user quits. The terminal is restored on every exit path,
-/// including a panic (ratatui's init installs a hook that restores it first).
-pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Result<()> {
+/// Runs the explorer until the user quits or a signal of `signals::ENDING` arrives. The terminal
+/// is restored on every exit path: a quit, an error, one of those signals, and a panic
+/// (ratatui's init installs a hook that restores it first).
+pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Result<Ending> {
     let render = RenderOptions {
         ascii: options.ascii,
         color: std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
@@ -65,33 +69,41 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
         home: dirs::home_dir(),
         presets: user_preset_dir(),
     };
+    let (tx, rx) = channel();
+    // before the terminal changes, so that no moment is left where a signal kills it unrestored
+    #[cfg(unix)]
+    let signals = signals::forward(tx.clone())?;
     // raw mode, the alternate screen and the panic hook that restores them; the terminal drawn
     // on is our own, whose backend writes fewer bytes (`backend`)
     drop(ratatui::init());
-    let terminal = match Terminal::new(Compact::new(io::stdout())) {
-        Ok(t) => t,
-        Err(e) => {
-            ratatui::restore();
-            return Err(e);
+    let result = Terminal::new(Compact::new(io::stdout())).and_then(|terminal| {
+        if options.mouse {
+            execute!(io::stdout(), EnableMouseCapture)?;
         }
-    };
-    if options.mouse {
-        execute!(io::stdout(), EnableMouseCapture)?;
-    }
-    let (tx, rx) = channel();
-    let input = tx.clone();
-    std::thread::spawn(move || {
-        while let Ok(ev) = event::read() {
-            if input.send(LoopEvent::Input(ev)).is_err() {
-                return;
+        let input = tx.clone();
+        std::thread::spawn(move || {
+            while let Ok(ev) = event::read() {
+                if input.send(LoopEvent::Input(ev)).is_err() {
+                    return;
+                }
             }
-        }
+        });
+        Loop::new(terminal, App::new(preset, path, places), render, tx, rx)
+            .and_then(|mut l| l.run())
     });
-    let result = Loop::new(terminal, App::new(preset, path, places), render, tx, rx)
-        .and_then(|mut l| l.run());
-    if options.mouse {
+    restore(options.mouse);
+    #[cfg(unix)]
+    signals.close();
+    result
+}
+
+/// Gives the terminal back as it was: mouse reporting off (when it was turned on), the cursor
+/// shown, raw mode off, the main screen. Errors are dropped: after a hang-up there is no
+/// terminal to restore.
+fn restore(mouse: bool) {
+    if mouse {
         let _ = execute!(io::stdout(), DisableMouseCapture);
     }
+    let _ = execute!(io::stdout(), Show);
     ratatui::restore();
-    result
 }
