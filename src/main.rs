@@ -52,6 +52,9 @@ enum Command {
         /// Set a preset value before solving, e.g. material.thickness=10um (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
         settings: Vec<String>,
+        /// Stop after S seconds of wall-clock time with exit code 3 (the solve is not finished).
+        #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
+        max_seconds: Option<f64>,
     },
     /// Solve a preset over a range of one parameter (a curve) or two (a grid); rows on stdout.
     Sweep {
@@ -70,6 +73,10 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
+        /// Stop after S seconds of wall-clock time with exit code 3, saying how many points
+        /// were done.
+        #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
+        max_seconds: Option<f64>,
     },
 }
 
@@ -83,6 +90,7 @@ fn main() -> ExitCode {
             time,
             probe,
             settings,
+            max_seconds,
         }) => solve::run(
             &preset,
             format,
@@ -91,6 +99,7 @@ fn main() -> ExitCode {
                 time,
                 probes: probe,
                 settings,
+                max_seconds,
             },
         ),
         Some(Command::Sweep {
@@ -99,12 +108,14 @@ fn main() -> ExitCode {
             settings,
             output,
             format,
+            max_seconds,
         }) => sweep::run(&sweep::Request {
             path: &preset,
             vary: &vary,
             settings: &settings,
             output: output.as_deref(),
             format,
+            max_seconds,
         }),
         None => explorer::run(
             cli.preset,

@@ -236,3 +236,58 @@ fn the_explorer_needs_a_terminal() {
         "error: wearlab needs a terminal; use `wearlab solve` for scripts\n"
     );
 }
+
+/// Runs `wearlab ARGS --max-seconds 1` on work that takes far longer: exit 3 soon after the
+/// second, with the reason.
+fn stopped_after_a_second(args: &[&str], reason: &str) {
+    let start = std::time::Instant::now();
+    let out = wearlab()
+        .args(args)
+        .args(["--max-seconds", "1"])
+        .output()
+        .unwrap();
+    let took = start.elapsed().as_secs_f64();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{stderr}");
+    assert!(
+        stderr.contains("error: stopped after 1.") && stderr.contains(reason),
+        "{stderr}"
+    );
+    // a second of work and the start-up; 4 s leaves room for a loaded machine
+    assert!(took < 4.0, "took {took:.1} s");
+}
+
+#[test]
+fn max_seconds_stops_a_long_solve_and_a_long_sweep_with_exit_3() {
+    // the egg-box at a long wavelength and a low pressure: the partial-contact solver works
+    // for about a minute before it gives up
+    stopped_after_a_second(
+        &[
+            "solve",
+            "presets/jgh-egg-box.toml",
+            "--set",
+            "spatial.harmonics.0.wavenumber_x=0.0665",
+            "--set",
+            "spatial.mean_pressure=2195",
+        ],
+        "(--max-seconds): the solve had not finished",
+    );
+    // four million points
+    stopped_after_a_second(
+        &[
+            "sweep",
+            "presets/polymer-coating.toml",
+            "--vary",
+            "plane.load=1:1e6:2000:log",
+            "--vary",
+            "friction.coefficient=0:1:2000",
+        ],
+        "of 4000000 points done",
+    );
+    // a bound that is not a positive number is invalid input
+    let out = wearlab()
+        .args(["solve", "presets/hertz-check.toml", "--max-seconds", "0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -69,3 +69,65 @@ pub fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
         }
     }
 }
+
+/// Reads `--max-seconds S`: a bound on the work's wall-clock time, above 0.
+pub fn parse_seconds(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(s) if s > 0.0 && s <= 1e9 => Ok(s),
+        _ => Err(format!("'{text}' is not a number of seconds in (0, 1e9]")),
+    }
+}
+
+/// What became of work run under a time bound.
+pub enum Bounded<T> {
+    /// It finished with this.
+    Done(T),
+    /// The bound came first, after this many seconds.
+    Stopped(f64),
+    /// The work panicked (its message is on stderr already).
+    Panicked,
+}
+
+/// Runs `work` on a thread of its own and waits for it at most `limit` seconds (for ever when
+/// None), calling `tick` every tenth of a second meanwhile (a progress display). Work stopped by
+/// the bound is left running: the process exits with exit code 3 right after.
+pub fn within<T: Send + 'static>(
+    limit: Option<f64>,
+    work: impl FnOnce() -> T + Send + 'static,
+    tick: &dyn Fn(),
+) -> Bounded<T> {
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(work());
+    });
+    let start = std::time::Instant::now();
+    let bound = limit.map(std::time::Duration::from_secs_f64);
+    loop {
+        match rx.recv_timeout(std::time::Duration::from_millis(100)) {
+            Ok(done) => return Bounded::Done(done),
+            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => return Bounded::Panicked,
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {}
+        }
+        if bound.is_some_and(|b| start.elapsed() >= b) {
+            return Bounded::Stopped(start.elapsed().as_secs_f64());
+        }
+        tick();
+    }
+}
+
+/// The exit code of bounded work: its own when it finished; 3 with the reason when the bound
+/// stopped it ("stopped after S s: ..."), `what` saying how far it got.
+pub fn finished(bounded: Bounded<ExitCode>, what: &dyn Fn() -> String) -> ExitCode {
+    match bounded {
+        Bounded::Done(code) => code,
+        Bounded::Stopped(seconds) => {
+            say(&format!(
+                "error: stopped after {seconds:.1} s (--max-seconds): {}",
+                what()
+            ));
+            ExitCode::from(EXIT_UNSOLVABLE)
+        }
+        // the exit code of a panic in Rust's runtime
+        Bounded::Panicked => ExitCode::from(101),
+    }
+}

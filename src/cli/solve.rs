@@ -1,15 +1,19 @@
 //! `wearlab solve PRESET [--format json|csv] [--points N] [--time T] [--probe X,Y] [--set ...]`:
 //! the library's report of one preset (`report::plane_report`, `spatial_report`) on stdout.
 
+use std::io::{self, IsTerminal};
 use std::path::Path;
 use std::process::ExitCode;
+use std::time::Instant;
 
 use wearlab::physics::SolveError;
 use wearlab::physics::limits::{self, Limit};
-use wearlab::preset::Problem;
+use wearlab::preset::{Preset, Problem};
 use wearlab::{finite, report, spatial_report};
 
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, within};
 
 /// Profile points when `--points` is not given.
 const DEFAULT_POINTS: usize = 201;
@@ -52,13 +56,15 @@ fn solver_failure(e: SolveError) -> ExitCode {
     }
 }
 
-/// The options of `solve` that apply to one problem only.
+/// The options of `solve` that apply to one problem only, and its time bound.
 pub struct Overrides {
     pub points: Option<usize>,
     pub time: Option<f64>,
     pub probes: Vec<[f64; 2]>,
     /// `--set KEY=VALUE`, in order.
     pub settings: Vec<String>,
+    /// `--max-seconds`: the bound on the solve's wall-clock time [s].
+    pub max_seconds: Option<f64>,
 }
 
 impl Overrides {
@@ -87,33 +93,64 @@ pub fn run(path: &Path, format: Format, options: &Overrides) -> ExitCode {
         say(&format!("error: {why}"));
         return ExitCode::from(EXIT_INVALID);
     }
+    let (time, probes) = (options.time, options.probes.clone());
+    let points = options.points.unwrap_or(DEFAULT_POINTS);
+    let spinner = ProgressBar::hidden();
+    let start = Instant::now();
+    let bounded = within(
+        options.max_seconds,
+        move || answer(&preset, format, points, time, &probes),
+        &|| show_after_a_second(&spinner, start),
+    );
+    spinner.finish_and_clear();
+    finished(bounded, &|| "the solve had not finished".into())
+}
+
+/// A spinner with the time so far on stderr when it is a terminal (never in a pipe), drawn
+/// once the solve has taken a second.
+fn show_after_a_second(spinner: &ProgressBar, start: Instant) {
+    if spinner.is_hidden() {
+        if start.elapsed().as_secs_f64() < 1.0 || !io::stderr().is_terminal() {
+            return;
+        }
+        spinner.set_draw_target(ProgressDrawTarget::stderr());
+        if let Ok(style) = ProgressStyle::with_template("{spinner} solving, {elapsed} so far") {
+            spinner.set_style(style);
+        }
+    }
+    spinner.tick();
+}
+
+/// Solves the preset and prints its report.
+fn answer(
+    preset: &Preset,
+    format: Format,
+    points: usize,
+    time: Option<f64>,
+    probes: &[[f64; 2]],
+) -> ExitCode {
     match preset.problem {
-        Problem::Plane => {
-            let points = options.points.unwrap_or(DEFAULT_POINTS);
-            match report::plane_report(&preset, points) {
-                Ok(r) => match format {
-                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
-                    Format::Csv => {
-                        let csv = report::profile_csv(&r.profile);
-                        let guard = finite::check_csv(&csv);
-                        print(&csv, guard)
-                    }
-                },
-                Err(e) => solver_failure(e),
-            }
-        }
-        Problem::Spatial => {
-            match spatial_report::spatial_report(&preset, options.time, &options.probes) {
-                Ok(r) => match format {
-                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
-                    Format::Csv => {
-                        let csv = spatial_report::field_csv(&r);
-                        let guard = finite::check_csv(&csv);
-                        print(&csv, guard)
-                    }
-                },
-                Err(e) => solver_failure(e),
-            }
-        }
+        Problem::Plane => match report::plane_report(preset, points) {
+            Ok(r) => match format {
+                Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                Format::Csv => {
+                    let csv = report::profile_csv(&r.profile);
+                    let guard = finite::check_csv(&csv);
+                    print(&csv, guard)
+                }
+            },
+            Err(e) => solver_failure(e),
+        },
+        Problem::Spatial => match spatial_report::spatial_report(preset, time, probes) {
+            Ok(r) => match format {
+                Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                Format::Csv => {
+                    let csv = spatial_report::field_csv(&r);
+                    let guard = finite::check_csv(&csv);
+                    print(&csv, guard)
+                }
+            },
+            Err(e) => solver_failure(e),
+        },
     }
 }

@@ -13,7 +13,7 @@ use wearlab::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use wearlab::sweeps::quantity::{self, QuantityKey};
 use wearlab::sweeps::{output, sweep};
 
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, load_with, print, say};
+use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, within};
 
 /// What `wearlab sweep` was asked.
 pub struct Request<'a> {
@@ -27,6 +27,8 @@ pub struct Request<'a> {
     pub output: Option<&'a str>,
     /// `--format`.
     pub format: Format,
+    /// `--max-seconds`: the bound on the sweep's wall-clock time [s].
+    pub max_seconds: Option<f64>,
 }
 
 fn invalid(why: &str) -> ExitCode {
@@ -114,12 +116,32 @@ pub fn run(request: &Request) -> ExitCode {
         Ok(o) => o,
         Err(why) => return invalid(&why),
     };
-    let bar = progress(axes.iter().map(|a| a.range.points).product());
-    let rows = sweep::run(&preset, &axes, &outputs, &|| bar.inc(1));
+    let points: usize = axes.iter().map(|a| a.range.points).product();
+    let bar = progress(points);
+    let worker = bar.clone();
+    let format = request.format;
+    let bounded = within(
+        request.max_seconds,
+        move || answer(&preset, &axes, &outputs, format, &|| worker.inc(1)),
+        &|| {},
+    );
+    let done = bar.position();
     bar.finish_and_clear();
-    let text = match request.format {
-        Format::Csv => output::csv(&axes, &outputs, &rows),
-        Format::Json => output::json(&preset, &axes, &outputs, &rows),
+    finished(bounded, &|| format!("{done} of {points} points done"))
+}
+
+/// Sweeps and prints the rows.
+fn answer(
+    preset: &Preset,
+    axes: &[Axis],
+    outputs: &[QuantityKey],
+    format: Format,
+    point_done: &(dyn Fn() + Sync),
+) -> ExitCode {
+    let rows = sweep::run(preset, axes, outputs, point_done);
+    let text = match format {
+        Format::Csv => output::csv(axes, outputs, &rows),
+        Format::Json => output::json(preset, axes, outputs, &rows),
     };
     let printed = print(&text, Ok(()));
     match rows.iter().find_map(|r| r.failure.as_ref()) {
