@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::physics::SolveError;
-use crate::physics::plane::Model;
+use crate::physics::plane::PlaneSolution;
 use crate::physics::plane::energy::Energy;
 use crate::physics::plane::operating_point;
 use crate::physics::plane::profile::Profile;
@@ -17,28 +17,9 @@ use crate::preset::Preset;
 pub struct PlaneReport {
     /// Always "plane".
     pub problem: &'static str,
-    /// The model used.
-    pub model: Model,
-    /// P [N/m].
-    pub load: f64,
-    /// Q2 [N/m].
-    pub normal_force: f64,
-    /// T [N/m].
-    pub tangential_force: f64,
-    /// a [m].
-    pub a: f64,
-    /// b [m].
-    pub b: f64,
-    /// theta (wide model only).
-    pub theta: Option<f64>,
-    /// gamma [1/Pa] (wide model only).
-    pub gamma: Option<f64>,
-    /// psi [N/m].
-    pub psi: f64,
-    /// Delta_g [m].
-    pub delta_g: f64,
-    /// mu*.
-    pub mu_star: f64,
+    /// The solution at the preset's load (its keys at the top level of the JSON).
+    #[serde(flatten)]
+    pub solution: PlaneSolution,
     /// I, J of (2.9).
     pub energy: Energy,
     /// Validity flags.
@@ -54,20 +35,9 @@ pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, Solve
     let inputs = preset.plane_inputs();
     let model = preset.plane.model;
     let point = operating_point(&inputs, model, points)?;
-    let sol = &point.solution;
     Ok(PlaneReport {
         problem: "plane",
-        model,
-        load: inputs.load,
-        normal_force: sol.normal_force,
-        tangential_force: sol.tangential_force,
-        a: sol.a,
-        b: sol.b,
-        theta: sol.theta,
-        gamma: sol.gamma,
-        psi: sol.psi,
-        delta_g: sol.delta_g,
-        mu_star: sol.mu_star,
+        solution: point.solution,
         energy: point.energy,
         validity: point.validity,
         profile: point.profile,

@@ -99,16 +99,19 @@ pub(crate) enum PressureLaw {
     Strip(std::sync::Arc<strip::Collocation>),
 }
 
-/// The solution of the plane problem at one load.
-#[derive(Clone, Debug, PartialEq)]
+/// The solution of the plane problem at one load. Serialised with the keys of `wearlab solve`'s
+/// JSON (`docs/cli.md`): the inputs as their load P, without Q1 and the pressure law.
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PlaneSolution {
     /// The model that produced it.
     pub model: Model,
-    /// The inputs it solves.
+    /// The inputs it solves (serialised as `load`, P [N/m]).
+    #[serde(rename = "load", serialize_with = "load_of")]
     pub inputs: PlaneInputs,
     /// Q2 = integral of q2 [N/m], the total normal contact force.
     pub normal_force: f64,
     /// Q1 = mu Q2 + tau0 (a + b) [N/m], the total friction force.
+    #[serde(skip)]
     pub friction_force: f64,
     /// T = Q1 + psi [N/m], the tangential force that drives the punch (3.11).
     pub tangential_force: f64,
@@ -127,7 +130,13 @@ pub struct PlaneSolution {
     pub delta_g: f64,
     /// Total friction coefficient mu* (3.13), dimensionless.
     pub mu_star: f64,
+    #[serde(skip)]
     pub(crate) law: PressureLaw,
+}
+
+/// The inputs of a solution as the JSON shows them: their load P [N/m].
+fn load_of<S: serde::Serializer>(inputs: &PlaneInputs, out: S) -> Result<S::Ok, S::Error> {
+    out.serialize_f64(inputs.load)
 }
 
 impl PlaneSolution {
