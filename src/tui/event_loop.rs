@@ -190,7 +190,9 @@ impl<B: Backend> Loop<B> {
 /// The message of a wake-up (key releases, mouse events and signals are none).
 fn message(wake: LoopEvent) -> Option<Msg> {
     match wake {
-        LoopEvent::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => Some(Msg::Key(key)),
+        LoopEvent::Input(Event::Key(key)) if key.kind != KeyEventKind::Release => {
+            Some(Msg::Key(key))
+        }
         LoopEvent::Input(_) | LoopEvent::Signal(_) => None,
         LoopEvent::Answer(answer) => Some(Msg::Answer(answer)),
         LoopEvent::Explored(answer) => Some(Msg::Explored(answer)),
