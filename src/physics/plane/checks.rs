@@ -93,7 +93,7 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
         }),
         PressureLaw::Strip(col) => {
             // phi at the nodes and, by the interpolant the profile draws, half-way between them
-            // (a contact the nodes do not resolve dips there first: found by tests/plane_fuzz.rs
+            // (a contact the nodes do not resolve dips there first: found by tests/plane/plane_fuzz.rs
             // at 20 000 cases, -14 % of the peak between the first two nodes)
             let nodes = col.nodes();
             let between = nodes.windows(2).map(|w| 0.5 * (w[0] + w[1]));

@@ -1,6 +1,6 @@
 //! How far the wide and narrow models are from the strip model of any thickness, as formulas
-//! derived from a study against it (`tests/plane_validity.rs` reruns it, coarsely in
-//! `cargo test`, in full with `--ignored`).
+//! derived from a study against it (`tests/plane/plane_validity.rs` reruns it coarsely in
+//! `cargo test`; `examples/validity_study.rs` reruns it in full).
 //!
 //! The study: the strip model (docs/physics/plane.md section 6, exact to 1e-10) at contact widths
 //! (a+b)/h = Lambda from 0.05 to 1.45 (steps of 3 %) and at 10, 14, 20, ..., 240, for nu in

@@ -4,7 +4,7 @@
 //! reference (fixed-step BDF2 written here, without the library's stepper, extrapolated to
 //! dt -> 0 by Richardson) on a small 1-D half-plane case.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 use std::ops::ControlFlow;

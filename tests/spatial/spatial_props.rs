@@ -46,7 +46,7 @@ proptest! {
     }
 }
 
-mod limits_strategy;
+use crate::limits_strategy;
 
 use limits_strategy::{across, poisson};
 use wearlab::finite;

@@ -1,6 +1,6 @@
 //! The spatial problem (docs/physics/spatial.md) against independent routes and classical results.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

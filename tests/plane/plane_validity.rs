@@ -4,90 +4,19 @@
 //!
 //! `coarse_study` runs in `cargo test`: off the study's grid (so the tables' conservative reading
 //! between grid points is tested too), every answer flagged "holds" must be within 2 % in contact
-//! width and 5 % in mu* - mu of the strip model. `full_study` (`cargo test --release --test
-//! plane_validity -- --ignored --nocapture`, about 3 minutes of CPU) reruns the study on its whole
-//! grid with the same assertion and prints the worst case of each model among the answers flagged
-//! "holds" (last run: wide 35035 of 68425 flagged, worst 1.86 % in width, 4.76 % in mu* - mu;
-//! narrow 2496 of 5950, worst 1.83 % and 4.93 %).
+//! width and 5 % in mu* - mu of the strip model. `cargo run --release --example validity_study`
+//! (about 3 minutes of CPU) reruns the study on its whole grid with the same assertion and prints
+//! the worst case of each model among the answers flagged "holds" (last run: wide 35035 of 68425
+//! flagged, worst 1.86 % in width, 4.76 % in mu* - mu; narrow 2496 of 5950, worst 1.83 % and
+//! 4.93 %).
 
-mod common;
-
-use common::plane;
+use crate::common::plane;
+use crate::validity_study::{E, H, R, deviation, grid, run, strip_at_width};
 use wearlab::physics::elastic::plane_modulus;
-use wearlab::physics::plane::criteria::{MU_STAR_FLOOR, MU_STAR_TOLERANCE, WIDTH_TOLERANCE};
-use wearlab::physics::plane::strip::{collocate, kernels_for, nodes_for, solution};
-use wearlab::physics::plane::validity::{Deviation, against_strip, check};
-use wearlab::physics::plane::{Model, PlaneInputs, PlaneSolution, solve};
-
-const E: f64 = 1e10;
-const H: f64 = 1e-5;
-const R: f64 = 0.05;
-
-/// The strip solution whose contact width is lambda h, and the inputs at its load.
-fn strip_at_width(nu: f64, mu: f64, km: f64, lambda: f64) -> (PlaneInputs, PlaneSolution) {
-    let base = plane(E, nu, H, mu, 0.0, km / plane_modulus(E, nu), R, 1.0);
-    let n = nodes_for(lambda).div_ceil(16) * 16;
-    let col = collocate(&base, kernels_for(nu).as_ref(), lambda * H, n).unwrap();
-    let inputs = base.with_load(col.load);
-    (inputs, solution(&inputs, col, Model::Strip))
-}
-
-/// A model's deviation from the strip solution, as the study measures it.
-fn deviation(model: &PlaneSolution, strip: &PlaneSolution) -> Deviation {
-    let mu = strip.inputs.friction.coefficient;
-    let floor = MU_STAR_FLOOR * strip.contact_width() / R;
-    Deviation {
-        contact_width: (model.contact_width() / strip.contact_width() - 1.0).abs(),
-        mu_star_minus_mu: (model.mu_star - strip.mu_star).abs()
-            / (strip.mu_star - mu).abs().max(floor),
-    }
-}
-
-/// For every case: if the model is flagged as holding, it must be within tolerance. Returns how
-/// many were flagged and the worst deviation among them (width, mu* - mu), with its case.
-fn run(cases: &[(f64, f64, f64, f64)], model: Model) -> (usize, (f64, String), (f64, String)) {
-    let (mut holds, mut worst_width, mut worst_mu) =
-        (0, (0.0, String::new()), (0.0, String::new()));
-    for &(nu, mu, km, lambda) in cases {
-        let (inputs, strip) = strip_at_width(nu, mu, km, lambda);
-        let Ok(sol) = solve(&inputs, model) else {
-            continue;
-        };
-        let validity = check(&sol);
-        if !validity.failed_criteria.is_empty() {
-            continue;
-        }
-        holds += 1;
-        let d = deviation(&sol, &strip);
-        let case = format!("nu = {nu}, mu = {mu}, k m = {km}, (a+b)/h = {lambda}");
-        assert!(
-            d.within_tolerance(),
-            "{} flagged as holding but off by {d:?} at {case}",
-            model.name()
-        );
-        if d.contact_width > worst_width.0 {
-            worst_width = (d.contact_width, case.clone());
-        }
-        if d.mu_star_minus_mu > worst_mu.0 {
-            worst_mu = (d.mu_star_minus_mu, case);
-        }
-    }
-    (holds, worst_width, worst_mu)
-}
-
-fn grid(nus: &[f64], mus: &[f64], kms: &[f64], lambdas: &[f64]) -> Vec<(f64, f64, f64, f64)> {
-    let mut cases = Vec::new();
-    for &nu in nus {
-        for &mu in mus {
-            for &km in kms {
-                for &lambda in lambdas {
-                    cases.push((nu, mu, km, lambda));
-                }
-            }
-        }
-    }
-    cases
-}
+use wearlab::physics::plane::criteria::{MU_STAR_TOLERANCE, WIDTH_TOLERANCE};
+use wearlab::physics::plane::strip::{collocate, kernels_for, nodes_for};
+use wearlab::physics::plane::validity::{against_strip, check};
+use wearlab::physics::plane::{Model, solve};
 
 #[test]
 fn coarse_study() {
@@ -106,39 +35,6 @@ fn coarse_study() {
         wide.0,
         narrow.0
     );
-}
-
-#[test]
-#[ignore = "the full study, about 3 minutes of CPU in release: run by hand with --ignored"]
-fn full_study() {
-    let nus = [
-        0.0, 0.1, 0.2, 0.25, 0.3, 0.35, 0.4, 0.42, 0.44, 0.45, 0.46, 0.47, 0.48, 0.485, 0.49,
-        0.495, 0.499,
-    ];
-    let mus = [0.0, 0.1, 0.3, 0.6, 1.0];
-    let kms = [0.0, 0.01, 0.05, 0.2, 0.5, 1.0, 3.0];
-    let wide_widths: Vec<f64> = (0..115).map(|i| 0.05 * 1.03f64.powi(i)).collect();
-    let narrow_widths = [
-        10.0, 14.0, 20.0, 28.0, 40.0, 56.0, 80.0, 113.0, 160.0, 240.0,
-    ];
-    for (model, widths) in [
-        (Model::Wide, wide_widths.as_slice()),
-        (Model::Narrow, narrow_widths.as_slice()),
-    ] {
-        let cases = grid(&nus, &mus, &kms, widths);
-        let (holds, width, mu) = run(&cases, model);
-        println!(
-            "{}: {} of {} cases flagged as holding; worst contact width {:.2} % at {}; worst \
-             mu* - mu {:.2} % at {}",
-            model.name(),
-            holds,
-            cases.len(),
-            100.0 * width.0,
-            width.1,
-            100.0 * mu.0,
-            mu.1
-        );
-    }
 }
 
 #[test]

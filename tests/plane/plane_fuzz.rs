@@ -3,7 +3,7 @@
 //! never a panic, and every search ends. `cargo test` runs 300 cases (wide and narrow) and 2
 //! (strip: a solve at the far corners costs seconds); PROPTEST_CASES=N runs N and N/20.
 
-mod limits_strategy;
+use crate::limits_strategy;
 
 use limits_strategy::{across, poisson};
 use proptest::prelude::*;

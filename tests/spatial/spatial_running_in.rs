@@ -2,7 +2,7 @@
 //! conservation, monotone wear, the closed form of complete contact from the stepping, the time
 //! to complete contact, the explicit step's stability bound, replay and cancel.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

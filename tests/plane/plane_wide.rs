@@ -1,6 +1,6 @@
 //! The wide-strip / half-plane solution (Soldatenkov (2007) section 4) against independent routes.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

@@ -1,7 +1,7 @@
 //! Partial contact on the period cell (docs/physics/spatial-partial.md) against classical
 //! closed forms, the closed form of complete contact and the second algorithm.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

@@ -1,5 +1,5 @@
-//! mu > 0 on the 1-D half-plane (docs/physics/spatial-partial.md section 6, route 6): the FFT active-set solver against a singular integral equation
-//! for the contact pressure, solved here by Gauss–Jacobi collocation with Galin's edge exponents
+//! The reference for mu > 0 on the 1-D half-plane (docs/physics/spatial-partial.md section 6,
+//! route 6): a singular integral equation for the contact pressure, solved here by Gauss–Jacobi collocation with Galin's edge exponents
 //! and written without any of the solver's code (only the library's Gauss–Jacobi rule, tested on
 //! its own in src/physics/quadrature.rs, and Brent's root finder).
 //!
@@ -18,7 +18,7 @@
 //! P_{N+1}^(-alpha,-beta) (index -1). For a given half-width e, the N + 1 equations in the N
 //! values psi_i are consistent only for one centre c: the root of the last equation's residual.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 
@@ -28,7 +28,7 @@ use wearlab::physics::roots::brent_to;
 use wearlab::physics::spatial::partial::Setup;
 
 /// cot z - 1/z, smooth for |z| < pi (series below 0.1: the next term, z^9/93555, is < 1e-14).
-fn cot_minus_pole(z: f64) -> f64 {
+pub fn cot_minus_pole(z: f64) -> f64 {
     if z.abs() < 0.1 {
         let z2 = z * z;
         -z * (1.0 / 3.0 + z2 * (1.0 / 45.0 + z2 * (2.0 / 945.0 + z2 / 4725.0)))
@@ -38,37 +38,37 @@ fn cot_minus_pole(z: f64) -> f64 {
 }
 
 /// The problem: half-plane (G, nu), friction mu, punch Delta cos(2 pi x/l).
-struct Wave {
-    g: f64,
-    nu: f64,
-    mu: f64,
-    delta: f64,
-    l: f64,
+pub struct Wave {
+    pub g: f64,
+    pub nu: f64,
+    pub mu: f64,
+    pub delta: f64,
+    pub l: f64,
 }
 
 impl Wave {
-    fn chi(&self) -> f64 {
+    pub fn chi(&self) -> f64 {
         (1.0 - 2.0 * self.nu) / (2.0 * (1.0 - self.nu))
     }
-    fn slope(&self, x: f64) -> f64 {
+    pub fn slope(&self, x: f64) -> f64 {
         -2.0 * PI * self.delta / self.l * (2.0 * PI * x / self.l).sin()
     }
 }
 
 /// The collocation solution for contact half-width e.
-struct Sie {
-    c: f64,
-    e: f64,
-    alpha: f64,
-    beta: f64,
-    t: Vec<f64>,
-    w: Vec<f64>,
-    psi: Vec<f64>,
-    bary: Vec<f64>,
-    pbar: f64,
+pub struct Sie {
+    pub c: f64,
+    pub e: f64,
+    pub alpha: f64,
+    pub beta: f64,
+    pub t: Vec<f64>,
+    pub w: Vec<f64>,
+    pub psi: Vec<f64>,
+    pub bary: Vec<f64>,
+    pub pbar: f64,
 }
 
-fn system(
+pub fn system(
     wave: &Wave,
     e: f64,
     n: usize,
@@ -92,7 +92,7 @@ fn system(
 }
 
 /// psi from the first N equations, and the residual of the last.
-fn first_n(wave: &Wave, e: f64, n: usize, c: f64) -> (Vec<f64>, f64) {
+pub fn first_n(wave: &Wave, e: f64, n: usize, c: f64) -> (Vec<f64>, f64) {
     let (m, rhs, _, _) = system(wave, e, n, c);
     let psi = m
         .rows(0, n)
@@ -104,7 +104,7 @@ fn first_n(wave: &Wave, e: f64, n: usize, c: f64) -> (Vec<f64>, f64) {
     (psi.iter().copied().collect(), last)
 }
 
-fn solve_sie(wave: &Wave, e: f64, n: usize) -> Sie {
+pub fn solve_sie(wave: &Wave, e: f64, n: usize) -> Sie {
     // scan the centre over a quarter wavelength either side for the sign change nearest 0
     let l = wave.l;
     let residual = |c: f64| first_n(wave, e, n, c).1;
@@ -144,7 +144,7 @@ fn solve_sie(wave: &Wave, e: f64, n: usize) -> Sie {
 
 impl Sie {
     /// psi(z), the collocation polynomial, by the first barycentric form (stable also just outside).
-    fn psi_at(&self, z: f64) -> f64 {
+    pub fn psi_at(&self, z: f64) -> f64 {
         if let Some(i) = self.t.iter().position(|t| *t == z) {
             return self.psi[i];
         }
@@ -153,12 +153,12 @@ impl Sie {
             .map(|i| self.bary[i] * self.psi[i] / (z - self.t[i]))
             .sum::<f64>()
     }
-    fn pressure(&self, x: f64) -> f64 {
+    pub fn pressure(&self, x: f64) -> f64 {
         let t = (x - self.c) / self.e;
         (1.0 - t).powf(self.alpha) * (1.0 + t).powf(self.beta) * self.psi_at(t)
     }
     /// int w/(z - t) dt over [-1, 1] for |z| > 1, in closed form (alpha + beta = 1).
-    fn cauchy_weight(&self, z: f64) -> f64 {
+    pub fn cauchy_weight(&self, z: f64) -> f64 {
         let (a, b) = (self.alpha, self.beta);
         if z > 1.0 {
             PI / (PI * a).sin() * (z + b - a - (z - 1.0).powf(a) * (z + 1.0).powf(b))
@@ -169,7 +169,7 @@ impl Sie {
     }
     /// int w psi/(z - t) dt for |z| > 1: psi(z) times the closed form plus an exact quadrature of
     /// the polynomial (psi(z) - psi(t))/(z - t).
-    fn cauchy(&self, z: f64) -> f64 {
+    pub fn cauchy(&self, z: f64) -> f64 {
         let direct: f64 = (0..self.t.len())
             .map(|i| self.w[i] * self.psi[i] / (z - self.t[i]))
             .sum();
@@ -181,7 +181,7 @@ impl Sie {
     }
 
     /// The global outputs: (contact fraction, p_max, psi, mean gap, closure int gap' over the gap).
-    fn outputs(&self, wave: &Wave) -> [f64; 5] {
+    pub fn outputs(&self, wave: &Wave) -> [f64; 5] {
         let l = wave.l;
         let fraction = 2.0 * self.e / l;
         // p_max: a fine scan, then golden-section refinement
@@ -237,7 +237,7 @@ impl Sie {
     }
 }
 
-fn wave(mu: f64) -> Wave {
+pub fn wave(mu: f64) -> Wave {
     // a polymer-like half-plane under a 1 um, 1 mm wave (the numbers only set the scales)
     let (e, nu) = (3e9, 0.3);
     Wave {
@@ -250,7 +250,7 @@ fn wave(mu: f64) -> Wave {
 }
 
 /// The FFT solver's outputs for the same wave at the SIE's mean pressure on N nodes.
-fn fft(wave: &Wave, pbar: f64, n: usize) -> [f64; 5] {
+pub fn fft(wave: &Wave, pbar: f64, n: usize) -> [f64; 5] {
     let material = common::layer(2.0 * wave.g * (1.0 + wave.nu), wave.nu, f64::INFINITY);
     let harmonics = vec![common::cosine(wave.delta, wave.l)];
     let inputs = common::spatial(material, wave.mu, 0.0, 0.0, pbar, harmonics);
@@ -264,117 +264,4 @@ fn fft(wave: &Wave, pbar: f64, n: usize) -> [f64; 5] {
         o.mean_gap,
         o.mu_star,
     ]
-}
-
-#[test]
-fn frictionless_collocation_reproduces_westergaard() {
-    // mu = 0: alpha = beta = 1/2, and pbar/p* = sin^2(pi a/l) (docs/physics/spatial-partial.md
-    // section 6, route 2), p(0) = 2 pbar/sin(pi a/l): the collocation itself is right.
-    let wv = wave(0.0);
-    let e = 0.2 * wv.l;
-    let sie = solve_sie(&wv, e, 40);
-    let e_star = 2.0 * wv.g * (1.0 + wv.nu) / (1.0 - wv.nu * wv.nu);
-    let p_star = PI * e_star * wv.delta / wv.l;
-    let s = (PI * e / wv.l).sin();
-    assert!(sie.c.abs() < 1e-15 * wv.l, "symmetric: c = {}", sie.c);
-    assert!(
-        (sie.pbar / p_star - s * s).abs() < 1e-13,
-        "{}",
-        sie.pbar / p_star
-    );
-    assert!((sie.pressure(0.0) / (2.0 * sie.pbar / s) - 1.0).abs() < 1e-12);
-}
-
-#[test]
-fn friction_on_the_half_plane_against_the_singular_integral_equation() {
-    let wv = wave(0.5);
-    let e = 0.2 * wv.l;
-    let sie = solve_sie(&wv, e, 40);
-    let [fraction, p_max, psi, mean_gap, closure] = sie.outputs(&wv);
-    // the SIE is converged in N (40 against 30 nodes) and its gap closes over the gap region
-    let coarse = solve_sie(&wv, e, 30).outputs(&wv);
-    for (a, b) in [(p_max, coarse[1]), (psi, coarse[2]), (mean_gap, coarse[3])] {
-        assert!((a / b - 1.0).abs() < 1e-9, "{a} vs {b}");
-    }
-    assert!(closure.abs() < 1e-12 * mean_gap, "{closure}");
-    // friction with B > 0 (section 1.2): the contact moves backwards, psi < 0
-    assert!(sie.c < 0.0 && psi < 0.0);
-    let mut previous = [f64::INFINITY; 4];
-    for n in [1024, 4096] {
-        let got = fft(&wv, sie.pbar, n);
-        let err = [
-            (got[0] - fraction).abs(),
-            (got[1] / p_max - 1.0).abs(),
-            (got[2] / psi - 1.0).abs(),
-            (got[3] / mean_gap - 1.0).abs(),
-        ];
-        println!(
-            "N = {n}: |fraction error| {:.2e}, p_max {:.2e}, psi {:.2e}, mean gap {:.2e}",
-            err[0], err[1], err[2], err[3]
-        );
-        // the contact fraction is a node count: first order, erratic sign (section 2)
-        assert!(err[0] <= 2.0 / n as f64);
-        // p_max, a nodal maximum next to the smooth peak: section 2 expects ~1e-3 at 64 nodes
-        // per wavelength; measured 5.8e-7 (N = 1024) and 1.4e-6 (4096)
-        assert!(err[1] < 1e-5);
-        // the integrals converge at second order, faster than the contact fraction (section 2);
-        // measured N^2 err = 2.6 and 1.4 (psi), 3.1 and 3.1 (mean gap) at N = 1024 and 4096
-        assert!(err[2] < 10.0 / (n * n) as f64 && err[2] < previous[2]);
-        assert!(err[3] < 10.0 / (n * n) as f64 && err[3] < previous[3]);
-        // mu* < mu for B > 0
-        assert!(got[4] < wv.mu);
-        previous = err;
-    }
-}
-
-/// The convergence table of the closing note (run by hand: cargo test --release --test
-/// spatial_partial_sie -- --ignored --nocapture).
-#[test]
-#[ignore]
-fn convergence_table() {
-    for mu in [0.2, 0.5, 1.0] {
-        let wv = wave(mu);
-        let sie = solve_sie(&wv, 0.2 * wv.l, 40);
-        let exact = sie.outputs(&wv);
-        println!(
-            "mu = {mu}: c/l = {:.6e}, pbar = {:.6e} Pa, psi = {:.6e} Pa, mean gap = {:.6e} m",
-            sie.c / wv.l,
-            sie.pbar,
-            exact[2],
-            exact[3]
-        );
-        for n in [256, 1024, 4096, 16384, 65536] {
-            let got = fft(&wv, sie.pbar, n);
-            println!(
-                "  N = {n:6}: fraction {:+.2e}, p_max {:+.2e}, psi {:+.2e}, mean gap {:+.2e}",
-                got[0] - exact[0],
-                got[1] / exact[1] - 1.0,
-                got[2] / exact[2] - 1.0,
-                got[3] / exact[3] - 1.0
-            );
-        }
-    }
-}
-
-#[test]
-fn the_closed_form_cauchy_integral_of_the_weight_is_right() {
-    // tanh-sinh quadrature of (1 - t)^alpha (1 + t)^beta/(z - t), away from the interval
-    let sie = Sie {
-        c: 0.0,
-        e: 1.0,
-        alpha: 0.62,
-        beta: 0.38,
-        t: vec![],
-        w: vec![],
-        psi: vec![],
-        bary: vec![],
-        pbar: 0.0,
-    };
-    let rule = tanh_sinh(1.0 / 64.0);
-    for z in [1.3, 2.0, 5.0, -1.3, -3.0] {
-        let direct = rule.integrate(-1.0, 1.0, |t| {
-            (1.0 - t).powf(0.62) * (1.0 + t).powf(0.38) / (z - t)
-        });
-        assert!((sie.cauchy_weight(z) - direct).abs() < 1e-12, "z = {z}");
-    }
 }

@@ -9,7 +9,7 @@ use wearlab::physics::spatial::contact::check;
 use wearlab::physics::spatial::{self, Cell};
 use wearlab::preset::{self, BUNDLED, Problem, parse, write_atomically};
 
-const BASE: &str = include_str!("../presets/hertz-check.toml");
+const BASE: &str = include_str!("../../presets/hertz-check.toml");
 
 fn error_of(text: &str) -> String {
     parse(text, Path::new("lab/broken.toml"))
@@ -198,7 +198,7 @@ fn defaults_for_optional_sections() {
 
 #[test]
 fn broken_spatial_sections_name_the_line() {
-    let base = include_str!("../presets/wave-thick-layer.toml");
+    let base = include_str!("../../presets/wave-thick-layer.toml");
     let zero = base.replace("wavenumber_x = 6283.185307179586", "wavenumber_x = 0.0");
     let err = error_of(&zero);
     assert_eq!(

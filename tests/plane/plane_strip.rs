@@ -1,6 +1,6 @@
 //! The strip of any thickness (docs/physics/plane.md section 6) against independent routes.
 
-mod common;
+use crate::common;
 
 use common::{hilbert, integrate_cos, plane, rel};
 use wearlab::physics::SolveError;

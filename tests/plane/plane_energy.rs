@@ -4,7 +4,7 @@
 //! checked by an independent quadrature of the solved pressure; and on the frictionless half-plane
 //! with a vanishing wear rate, the wear loss per unit k tends to Hertz's integral of p^2.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

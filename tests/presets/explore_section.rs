@@ -7,7 +7,7 @@ use assert_cmd::Command;
 use wearlab::physics::Spacing;
 use wearlab::preset::{bundled, parse, to_toml};
 
-const MAP: &str = include_str!("../presets/friction-or-wear-map.toml");
+const MAP: &str = include_str!("../../presets/friction-or-wear-map.toml");
 
 fn error_of(text: &str) -> String {
     parse(text, Path::new("lab/x.toml"))

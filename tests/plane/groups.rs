@@ -1,7 +1,7 @@
 //! The dimensionless groups of the explorer's dimensionless view (`sweeps::groups`) against
 //! classical closed forms at points of their own.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

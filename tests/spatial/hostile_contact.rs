@@ -2,7 +2,7 @@
 //! that are whole multiples of one base to within the precision of the numbers; otherwise, or
 //! when the grid would be too fine, the check says it gave up and why.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -1,6 +1,6 @@
 //! The narrow-strip (Winkler) solution (Soldatenkov (2007) section 5) against independent routes.
 
-mod common;
+use crate::common;
 
 use common::{integrate_cos, plane, rel};
 use wearlab::physics::plane::energy::energy;

@@ -1,7 +1,7 @@
 //! The quantity registry (`sweeps::quantity`): the report's quantities are the report's keys with
 //! the report's values; the derived ones against independent routes.
 
-mod common;
+use crate::common;
 
 use serde_json::Value;
 use wearlab::preset::{BUNDLED, Preset, Problem, bundled};

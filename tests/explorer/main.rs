@@ -1,0 +1,8 @@
+//! The explorer: its engine's stages, the sweep worker, curves and maps, and the real binary in
+//! tmux and in a pty.
+
+mod engine;
+mod explore_cancel;
+mod explore_map;
+mod tui_signals;
+mod tui_tmux;

@@ -1,0 +1,16 @@
+//! The plane problem (Soldatenkov (2007)): every model against independent routes, the energy
+//! losses, the validity criteria, the quadrature rules and the dimensionless groups.
+
+#[path = "../common/mod.rs"]
+mod common;
+mod gauss_jacobi;
+mod groups;
+#[path = "../limits_strategy/mod.rs"]
+mod limits_strategy;
+mod plane_energy;
+mod plane_fuzz;
+mod plane_narrow;
+mod plane_strip;
+mod plane_validity;
+mod plane_wide;
+mod validity_study;

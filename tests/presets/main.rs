@@ -1,0 +1,9 @@
+//! Preset files: the bundled ones, the parameter registry, the `[explore]` section, broken and
+//! fuzzed files, and saving.
+
+mod explore_section;
+mod hostile_save;
+mod params;
+mod preset_fuzz;
+mod preset_multibyte;
+mod presets;
