@@ -13,6 +13,7 @@ mod groups;
 mod keys;
 mod legend;
 mod map_cursor;
+mod monkey;
 mod partial;
 mod replay;
 mod save_prompt;
