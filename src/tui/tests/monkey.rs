@@ -8,17 +8,17 @@
 
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
 use std::path::{Component, Path};
-use std::sync::atomic::AtomicBool;
-use std::time::Instant;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
 
-use crate::engine::Engine;
 use crate::engine::sweep_worker::{SweepAnswer, SweepRequest, SweepResult, explore};
+use crate::engine::{Answer, Engine};
 use crate::preset::BUNDLED;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use super::{PLAIN, answers};
+use super::PLAIN;
 use crate::tui::app::{App, Command, Msg, Places};
 use crate::tui::effects;
 use crate::tui::update::update;
@@ -28,6 +28,11 @@ use crate::tui::view::{RenderOptions, view};
 const KEYS: usize = 150;
 /// The seed by default.
 const SEED: u64 = 23;
+/// How long the monkey waits for a solve or a sweep before its next action, as a user who presses
+/// another key would: the engine and the sweep thread stop their work between two of its steps (a
+/// running-in on thousands of nodes takes minutes) and the engine keeps what it did for the next
+/// request.
+const PATIENCE: Duration = Duration::from_millis(500);
 
 /// SplitMix64 (Steele, Lea and Flood 2014): a small generator whose walk depends on the seed only.
 struct Rng(u64);
@@ -205,7 +210,7 @@ impl Monkey {
                 if work.is_empty() {
                     return;
                 }
-                for a in answers(&mut self.engine, &work) {
+                for a in self.answers(&work) {
                     commands.extend(update(&mut self.app, Msg::Answer(Box::new(a))));
                 }
                 for c in work {
@@ -251,11 +256,47 @@ impl Monkey {
         panic!("commands kept coming after 100 rounds");
     }
 
+    /// The engine's answers to the solve commands, all stages, as the worker sends them, until
+    /// the monkey's patience runs out.
+    fn answers(&mut self, commands: &[Command]) -> Vec<Answer> {
+        let mut out = Vec::new();
+        for c in commands {
+            if let Command::Solve(generation, request) = c {
+                let request = std::sync::Arc::new((**request).clone());
+                let start = Instant::now();
+                let impatient = || start.elapsed() > PATIENCE;
+                self.engine
+                    .run_cancellable(&request, &impatient, |output, complete| {
+                        out.push(Answer {
+                            generation: *generation,
+                            request: request.clone(),
+                            output,
+                            complete,
+                        });
+                        true
+                    });
+            }
+        }
+        out
+    }
+
     fn explore(&mut self, generation: u64, request: SweepRequest) -> Vec<Command> {
         let request = std::sync::Arc::new(request);
         let mut passes = Vec::new();
-        let done = explore(&request, &AtomicBool::new(false), &mut |m| {
-            passes.push(SweepResult::Map(m.clone().into()))
+        let (stop, finished) = (AtomicBool::new(false), AtomicBool::new(false));
+        let done = std::thread::scope(|s| {
+            s.spawn(|| {
+                let start = Instant::now();
+                while !finished.load(Ordering::Relaxed) && start.elapsed() < PATIENCE {
+                    std::thread::sleep(Duration::from_millis(10));
+                }
+                stop.store(true, Ordering::Relaxed);
+            });
+            let done = explore(&request, &stop, &mut |m| {
+                passes.push(SweepResult::Map(m.clone().into()))
+            });
+            finished.store(true, Ordering::Relaxed);
+            done
         });
         let mut commands = Vec::new();
         let last = done.into_iter().map(|e| (e, true));
