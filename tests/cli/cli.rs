@@ -345,11 +345,12 @@ fn partial_contact_exits_0_with_the_running_in() {
 
 #[test]
 fn the_grid_limit_depends_on_the_shape() {
-    // 1-D shapes up to 4096 nodes, 2-D shapes up to 1024 per side
+    // 1-D shapes up to 4096 nodes, 2-D shapes up to 1024 per side (a wave in complete contact:
+    // the field on 4096 nodes without a running-in)
     let one_d = wearlab()
         .args([
             "solve",
-            "presets/contact-lost.toml",
+            "presets/wave-thick-layer.toml",
             "--format",
             "csv",
             "--set",

@@ -291,3 +291,16 @@ fn max_seconds_stops_a_long_solve_and_a_long_sweep_with_exit_3() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn a_contact_off_the_punch_tip_is_exit_3() {
+    // a 5 um coating under the polymer preset's load: the wide model's contact [1.49, 2.10] mm
+    // lies wholly ahead of the tip; a 10 GPa adhesion carries the load on the punch's slope
+    for set in ["material.thickness=5um", "friction.adhesion=1e10"] {
+        expect(
+            &["presets/polymer-coating.toml", "--set", set],
+            3,
+            "does not contain the punch tip x = 0",
+        );
+    }
+}

@@ -10,7 +10,6 @@ use crate::physics::plane::criteria::{
     self, MU_STAR_FLOOR, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
 };
 use crate::physics::plane::{Model, PlaneSolution, solve};
-use crate::units::format_si;
 
 /// How far a model is from the strip model of any thickness, relative.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -138,19 +137,6 @@ pub fn check(sol: &PlaneSolution) -> Validity {
                 "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
             ),
             format!("(a+b)/R = {l_over_r:.3} > 0.1: slopes not small"),
-        );
-    }
-    if sol.a < 0.0 || sol.b < 0.0 {
-        assumption(
-            format!(
-                "the contact zone [-a, b] = [{:.4e}, {:.4e}] m does not contain the punch tip",
-                -sol.a, sol.b
-            ),
-            format!(
-                "contact zone x = {} to {} misses the punch tip x = 0",
-                format_si(-sol.a, "m"),
-                format_si(sol.b, "m")
-            ),
         );
     }
     Validity {

@@ -64,10 +64,14 @@ pub fn at(series: &Series, x: f64, xs: Scale, ys: Scale) -> Option<f64> {
     })
 }
 
+/// What the readout says of a curve that has no point at the cursor (it ends before, or its model
+/// has no answer there).
+const NO_VALUE: &str = "no value here";
+
 /// The readout at `cursor` (a fraction of the x range): "x = ...", then "name = value" for every
 /// curve of every plot (its short name), tagged where the cursor is on a dim part of it, as the
 /// legend names them ("mu* wide = 0.429323 (fails)", "(partial)" for the spatial contact), and for
-/// the pins' curves "[n] name = value".
+/// the pins' curves "[n] name = value"; "name: no value here" off a curve's ends.
 pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     let Some(first) = frames.first() else {
         return Vec::new();
@@ -83,9 +87,7 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     for f in frames {
         let unit = f.plot.y.unit;
         let span = (f.y_scale == Scale::Linear).then_some(f.y[1] - f.y[0]);
-        let read = |s: &Series| {
-            at(s, xp, f.plot.x.scale, f.y_scale).map_or("-".to_string(), |v| value(v, unit, span))
-        };
+        let read = |s: &Series| at(s, xp, f.plot.x.scale, f.y_scale).map(|v| value(v, unit, span));
         // the dim parts of curve i under the cursor: plane models "fail", the spatial contact
         // is partial
         let tag = |i: usize| {
@@ -99,16 +101,17 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
                     }
                 })
         };
-        items.extend(
-            (f.plot.series.iter().enumerate())
-                .map(|(i, s)| format!("{} = {}{}", short_name(&s.name), read(s), tag(i))),
-        );
+        items.extend((f.plot.series.iter().enumerate()).map(|(i, s)| {
+            let name = short_name(&s.name);
+            read(s).map_or(format!("{name}: {NO_VALUE}"), |v| {
+                format!("{name} = {v}{}", tag(i))
+            })
+        }));
         for (n, pin) in f.pins.iter().enumerate() {
-            items.extend(
-                pin.series
-                    .iter()
-                    .map(|s| format!("[{}] {} = {}", n + 1, short_name(&s.name), read(s))),
-            );
+            items.extend(pin.series.iter().map(|s| {
+                let name = format!("[{}] {}", n + 1, short_name(&s.name));
+                read(s).map_or(format!("{name}: {NO_VALUE}"), |v| format!("{name} = {v}"))
+            }));
         }
     }
     items

@@ -316,7 +316,8 @@ fn logarithmic([a, b]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
             .collect()
     };
     // 1-2-5 within the decades when they fit (easier to read off than bare decades), else 1-3
-    // (half decades) or 1-2-3-5 over at most two decades where that gives more than the decades;
+    // (half decades) or 1-2-3-5 over at most two decades, or 1-2-3-5-7 within one, where that
+    // gives more than the decades;
     // of those that fit, the first reaching within BARE_END of both ends of the range (else the
     // nearest); else decades, else 1-2-3-5-7 within less than a decade
     let bare = |v: &[f64]| match (v.first(), v.last()) {
@@ -327,6 +328,7 @@ fn logarithmic([a, b]: [f64; 2], label: &str, unit: &str, max: usize) -> Ticks {
         (3.0, within(&[1.0, 2.0, 5.0])),
         (2.0, within(&[1.0, 3.0])),
         (2.0, within(&[1.0, 2.0, 3.0, 5.0])),
+        (1.0, within(&[1.0, 2.0, 3.0, 5.0, 7.0])),
     ];
     let fits = |(span, v): &(f64, Vec<f64>)| b - a <= *span && v.len() >= 2 && v.len() <= max;
     let best = (sets.iter().filter(|s| fits(s)))

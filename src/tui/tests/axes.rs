@@ -139,12 +139,17 @@ fn a_legend_says_why_a_curve_it_names_cannot_be_seen() {
 fn the_sweep_cursor_reads_each_mu_star_alike_and_tags_a_failing_model() {
     // thin-strip-winkler's sweep cursor: every mu* with six significant digits (not
     // 'mu* strip = 0.30406'), and the wide model's value tagged, as its legend says it fails
-    // over the whole range
+    // over the whole range; twenty points left of the operating point, at P = 1 kN/m, where the
+    // wide model still has its contact about the punch tip
     let mut app = solved("thin-strip-winkler.toml");
     press(&mut app, KeyCode::Char('v'));
     let cmds = press(&mut app, KeyCode::Enter);
     super::explore::explored(&mut app, &cmds);
     press(&mut app, KeyCode::Char('x'));
+    let s = screen(&app, 120, 40, PLAIN);
+    assert!(s.contains("mu* wide: no value here"), "{s}");
+    press(&mut app, KeyCode::Char('{'));
+    press(&mut app, KeyCode::Char('{'));
     let s = screen(&app, 120, 40, PLAIN);
     let text = s.replace(['│', '"'], " ");
     let words: Vec<&str> = text.split_whitespace().collect();

@@ -95,8 +95,9 @@ fn export_after_switch(plane_load: f64) -> (Vec<Command>, String) {
 
 #[test]
 fn an_export_after_a_problem_switch_waits_for_the_charts_own_result() {
-    // the plane section of dispersion.toml carries at most 6.2 kN/m on the wide model
-    let (exported, _) = export_after_switch(1e3);
+    // the plane section of dispersion.toml: the wide model holds the punch tip at 100 N/m, and
+    // carries at most 6.2 kN/m
+    let (exported, _) = export_after_switch(1e2);
     let [Command::Export { path, text, .. }] = exported.as_slice() else {
         panic!("{exported:?}")
     };

@@ -4,7 +4,9 @@
 //! to be read as a student would read it.
 
 use super::*;
-use crate::tui::view::layout;
+use crate::physics::plane::Model;
+use crate::physics::plane::operating_point::operating_point;
+use crate::tui::view::{layout, validity_status};
 
 /// The status panel of the screen, one string per row.
 fn status(app: &App, w: u16, h: u16) -> String {
@@ -75,26 +77,26 @@ fn the_strip_model_is_said_to_be_the_exact_one() {
 
 #[test]
 fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
-    // h = 10 um on the default preset: several warnings at 80x24, none cut mid-sentence
-    let app = solved_with("polymer-coating.toml", |p| p.material.thickness = 10e-6);
-    let tall = status(&app, 120, 40);
-    assert!(
-        tall.contains("! wide needs (a+b)/h < 0.26 here, not 61.205"),
-        "{tall}"
-    );
-    assert!(
-        tall.contains("! contact zone x = 583 um to 1.20 mm misses the punch tip"),
-        "{tall}"
-    );
-    // at 80x24 the measurement takes its short form so that the first reason still fits
-    let small = status(&app, 80, 24);
-    assert!(small.contains("off exact strip: width 227 %"), "{small}");
-    assert!(
-        small.contains("! wide needs (a+b)/h < 0.26 here, not 61.205"),
-        "{small}"
-    );
-    assert!(
-        small.contains("! +1 more (a taller window shows them)"),
-        "{small}"
-    );
+    // the default preset on a 1 mm coating at 1 MN/m: two warnings, each in a few words, and the
+    // measurement in its short form at 80x24 so that both still fit
+    let app = solved_with("polymer-coating.toml", |p| {
+        p.material.thickness = 1e-3;
+        p.plane.load = 1e6;
+    });
+    let warnings = [
+        "! wide needs (a+b)/h < 0.26 here, not 8.676",
+        "! (a+b)/R = 0.174 > 0.1: slopes not small",
+    ];
+    let (tall, small) = (status(&app, 120, 40), status(&app, 80, 24));
+    for s in [&tall, &small] {
+        assert!(warnings.iter().all(|w| s.contains(w)), "{s}");
+    }
+    assert!(small.contains("off exact strip: width 78 %"), "{small}");
+    // in one row (the cursor's readout and pins take the others), the count
+    let point = operating_point(&app.doc.preset.plane_inputs(), Model::Wide, 11).unwrap();
+    let one: Vec<String> = validity_status::lines(&point, None, PLAIN, 80, 1)
+        .iter()
+        .map(|l| l.to_string())
+        .collect();
+    assert_eq!(one, ["! +2 more (a taller window shows them)"]);
 }
