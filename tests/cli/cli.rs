@@ -54,7 +54,7 @@ fn plane_json_has_every_key_of_the_contract() {
             "profile.{key}"
         );
     }
-    for key in ["load", "mu_star", "a", "b", "normal_force"] {
+    for key in ["load", "mu_star", "a", "b", "normal_force", "valid"] {
         assert_eq!(v["sweep"][key].as_array().unwrap().len(), 60, "sweep.{key}");
     }
     // wear dominates: theta < 0 and mu* > mu = 0.2
@@ -485,4 +485,34 @@ fn the_running_in_reports_its_time_step_error_and_takes_a_time_tolerance() {
         .unwrap();
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["contact"]["time_error"], Value::Null);
+}
+
+#[test]
+fn every_sweep_point_carries_the_verdict_solve_gives_at_its_load() {
+    // polymer-coating's sweep crosses the wide model's limit: the verdict of each point is the
+    // operating point's verdict at that load
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = wearlab().arg("solve").args(args).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let v = json(&["presets/polymer-coating.toml"]);
+    let (loads, valid) = (
+        v["sweep"]["load"].as_array().unwrap(),
+        v["sweep"]["valid"].as_array().unwrap(),
+    );
+    let verdicts: Vec<bool> = valid.iter().map(|b| b.as_bool().unwrap()).collect();
+    assert!(
+        verdicts.contains(&true) && verdicts.contains(&false),
+        "{verdicts:?}"
+    );
+    for i in [0, 30, 59] {
+        let load = format!("plane.load={:e}", loads[i].as_f64().unwrap());
+        let at = json(&["presets/polymer-coating.toml", "--set", &load]);
+        assert_eq!(at["validity"]["ok"].as_bool(), Some(verdicts[i]), "{load}");
+    }
 }

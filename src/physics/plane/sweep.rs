@@ -2,9 +2,9 @@
 
 use serde::Serialize;
 
-use crate::physics::plane::checks;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
+use crate::physics::plane::{checks, validity};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -20,6 +20,9 @@ pub struct Sweep {
     pub b: Vec<Option<f64>>,
     /// Q2 [N/m].
     pub normal_force: Vec<Option<f64>>,
+    /// Whether the model holds at the point (the verdict of `validity::check`, as at the
+    /// operating point).
+    pub valid: Vec<Option<bool>>,
 }
 
 /// Solves the model at every load of the sweep (loads P [N/m]) (the inputs' own load is ignored).
@@ -62,6 +65,10 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
         a: pick(|s| s.a),
         b: pick(|s| s.b),
         normal_force: pick(|s| s.normal_force),
+        valid: solutions
+            .iter()
+            .map(|s| s.as_ref().map(|s| validity::check(s).ok))
+            .collect(),
         load,
     }
 }
