@@ -2,17 +2,19 @@
 //! (`plane::operating_point`, `validity::strip_check`, `sweep`, `spatial::evolutions`,
 //! `spatial::state_at`, `history`, `dispersion`, and on the period cell the running-in and
 //! mu*(pbar) of `spatial::partial`), each cached by the typed inputs it depends on, so an edit
-//! recomputes only what it touches; and a background worker that always works on the newest request and answers in stages, what the
-//! status shows first. Long work (the running-in) reports progress and stops when a newer request
-//! arrives.
+//! recomputes only what it touches; and two background workers on the newest request
+//! (`latest`): the solve worker (`Worker`), which answers in stages, what the status shows first,
+//! and the sweep worker (`sweep_worker`). Long work (the running-in, a sweep) reports progress and
+//! stops when a newer request arrives.
 
 mod cache;
 mod cell;
+pub mod latest;
+mod solve_worker;
 pub mod sweep_worker;
 mod validity;
 
-use std::sync::{Arc, Condvar, Mutex};
-use std::thread;
+use std::sync::Arc;
 use std::time::Duration;
 
 use crate::physics::plane::sweep::{Sweep, sweep};
@@ -30,6 +32,7 @@ use cache::Cache;
 use cell::{Ask, CellKey, Run};
 
 pub use cell::{CellOutput, Progress};
+pub use solve_worker::Worker;
 
 /// Points of the plane profile drawn by the explorer.
 pub const PROFILE_POINTS: usize = 201;
@@ -367,63 +370,5 @@ impl Engine {
             out.cell = Ok(cell);
             deliver(Output::Spatial(Ok(out.clone())), complete)
         });
-    }
-}
-
-type Slot = Arc<(Mutex<Option<(u64, Arc<Request>)>>, Condvar)>;
-
-/// A background thread running the engine: one job at a time, one pending slot that a newer
-/// request overwrites (older pending work is dropped unseen). A job stops after a delivery, or
-/// between two steps of long work, when a newer request is waiting.
-pub struct Worker {
-    slot: Slot,
-}
-
-impl Worker {
-    /// Starts the worker thread; `deliver` gets every answer and returns false when nobody
-    /// listens any more (the thread then ends).
-    pub fn spawn(mut deliver: impl FnMut(Answer) -> bool + Send + 'static) -> Worker {
-        let slot: Slot = Arc::new((Mutex::new(None), Condvar::new()));
-        let thread_slot = Arc::clone(&slot);
-        thread::spawn(move || {
-            let mut engine = Engine::new();
-            let (lock, cvar) = &*thread_slot;
-            let newer_waits = || lock.lock().is_ok_and(|pending| pending.is_some());
-            loop {
-                let (generation, request) = {
-                    let mut pending = lock.lock().expect("the UI never panics holding the slot");
-                    while pending.is_none() {
-                        pending = cvar
-                            .wait(pending)
-                            .expect("the UI never panics holding the slot");
-                    }
-                    pending.take().expect("checked above")
-                };
-                let mut listening = true;
-                engine.run_cancellable(&request, &newer_waits, |output, complete| {
-                    listening = deliver(Answer {
-                        generation,
-                        request: Arc::clone(&request),
-                        output,
-                        complete,
-                    });
-                    listening && !newer_waits()
-                });
-                if !listening {
-                    return;
-                }
-            }
-        });
-        Worker { slot }
-    }
-
-    /// Asks for a solve; replaces any request not yet started.
-    pub fn submit(&self, generation: u64, request: Request) {
-        let (lock, cvar) = &*self.slot;
-        *lock
-            .lock()
-            .expect("the worker never panics holding the slot") =
-            Some((generation, Arc::new(request)));
-        cvar.notify_one();
     }
 }

@@ -4,11 +4,11 @@
 //! a newer request arrives (an input edited, another axis chosen). Finished results are kept in a
 //! small cache keyed by the request, so going back to an earlier sweep costs nothing.
 
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Condvar, Mutex};
-use std::thread;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 use crate::engine::cache::Cache;
+use crate::engine::latest::{Delivery, LatestJob};
 use crate::preset::Preset;
 use crate::sweeps::Opening;
 use crate::sweeps::curve::{Curve, curve};
@@ -65,78 +65,55 @@ pub fn explore(
     }
 }
 
-type Job = (u64, Arc<SweepRequest>);
-
-/// The newest request not yet started, and whether the one running must stop.
-struct Shared {
-    pending: Mutex<Option<Job>>,
-    wake: Condvar,
-    cancel: AtomicBool,
-}
-
 /// Finished results kept.
 const KEPT: usize = 4;
 
-/// The sweep worker: one job at a time; a newer request replaces any pending one and
-/// cancels the running one (its solves stop at the next point).
+/// The sweep worker: the newest request on a thread of its own (`LatestJob`); a newer request
+/// replaces any pending one and cancels the running one (its solves stop at the next point).
 pub struct SweepWorker {
-    shared: Arc<Shared>,
+    job: LatestJob<SweepRequest>,
 }
 
 impl SweepWorker {
     /// Starts the thread; `deliver` gets every answer and returns false when nobody listens any
     /// more (the thread then ends).
     pub fn spawn(mut deliver: impl FnMut(SweepAnswer) -> bool + Send + 'static) -> SweepWorker {
-        let shared = Arc::new(Shared {
-            pending: Mutex::new(None),
-            wake: Condvar::new(),
-            cancel: AtomicBool::new(false),
-        });
-        let ours = Arc::clone(&shared);
-        thread::spawn(move || {
-            let mut kept: Cache<SweepRequest, SweepResult> = Cache::new(KEPT);
-            loop {
-                let (generation, request) = {
-                    let mut pending = ours.pending.lock().expect("never poisoned");
-                    while pending.is_none() {
-                        pending = ours.wake.wait(pending).expect("never poisoned");
-                    }
-                    ours.cancel.store(false, Ordering::SeqCst);
-                    pending.take().expect("checked above")
-                };
-                let answer = |explored, complete| SweepAnswer {
-                    generation,
-                    request: Arc::clone(&request),
-                    explored,
-                    complete,
-                };
-                if let Some(done) = kept.get(&request) {
-                    if !deliver(answer(done, true)) {
-                        return;
-                    }
-                    continue;
-                }
-                let mut listening = true;
-                let result = explore(&request, &ours.cancel, &mut |m| {
-                    listening &= deliver(answer(SweepResult::Map(Arc::new(m.clone())), false));
-                });
-                if let Some(done) = result {
-                    kept.insert((*request).clone(), done.clone());
-                    listening &= deliver(answer(done, true));
-                }
-                if !listening {
-                    return;
-                }
+        let mut kept: Cache<SweepRequest, SweepResult> = Cache::new(KEPT);
+        let job = LatestJob::spawn(move |generation, request: Arc<SweepRequest>, cancel| {
+            let answer = |explored, complete| SweepAnswer {
+                generation,
+                request: Arc::clone(&request),
+                explored,
+                complete,
+            };
+            if let Some(done) = kept.get(&request) {
+                return deliver(answer(done, true));
             }
+            let mut listening = true;
+            let result = explore(&request, cancel, &mut |m| {
+                listening &= deliver(answer(SweepResult::Map(Arc::new(m.clone())), false));
+            });
+            if let Some(done) = result {
+                kept.insert((*request).clone(), done.clone());
+                listening &= deliver(answer(done, true));
+            }
+            listening
         });
-        SweepWorker { shared }
+        SweepWorker { job }
     }
 
     /// Asks for a sweep or a map; replaces any request not yet started and stops the running one.
     pub fn submit(&self, generation: u64, request: SweepRequest) {
-        let mut pending = self.shared.pending.lock().expect("never poisoned");
-        *pending = Some((generation, Arc::new(request)));
-        self.shared.cancel.store(true, Ordering::SeqCst);
-        self.shared.wake.notify_one();
+        self.job.submit(generation, request);
+    }
+}
+
+impl Delivery for SweepAnswer {
+    fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    fn complete(&self) -> bool {
+        self.complete
     }
 }

@@ -2,6 +2,7 @@
 //! view, the map's cursor, a newly opened preset's view, what the chart keys say there, and the
 //! requests to the sweep worker (`engine::explore`), one whenever what should be shown changes.
 
+use crate::engine::latest::Delivery;
 use crate::engine::sweep_worker::SweepAnswer;
 use crate::preset::Problem;
 use crate::sweeps::Opening;
@@ -30,10 +31,7 @@ pub fn sweep_request(app: &mut App) -> Vec<Command> {
 
 /// Keeps an answer unless an answer to a newer request is already shown.
 pub fn on_answer(app: &mut App, answer: SweepAnswer) {
-    let newer = app.explore.shown.as_ref().is_none_or(|s| {
-        answer.generation > s.generation || (answer.generation == s.generation && !s.complete)
-    });
-    if newer {
+    if answer.replaces(app.explore.shown.as_ref()) {
         app.explore.shown = Some(answer);
     }
 }

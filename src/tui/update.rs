@@ -3,6 +3,7 @@
 //! loop reports back with messages (`Answer`, `PresetsListed`, `Saved`, `Exported`, ...).
 
 use crate::engine::Answer;
+use crate::engine::latest::Delivery;
 use crate::preset::{Problem, resolve_save_path};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
@@ -95,13 +96,7 @@ fn tick(app: &mut App) -> Vec<Command> {
 }
 
 fn on_answer(app: &mut App, answer: Answer) -> Vec<Command> {
-    // An answer older than the one on screen is dropped; a newer one is shown even when a still
-    // newer request is pending (playing time supersedes every request before its answer comes,
-    // and must still move the screen).
-    let newer = app.solve.shown.as_ref().is_none_or(|s| {
-        answer.generation > s.generation || (answer.generation == s.generation && !s.complete)
-    });
-    if newer {
+    if answer.replaces(app.solve.shown.as_ref()) {
         app.solve.shown = Some(answer);
         chart_keys::keep_heat_scale(app);
     }
