@@ -252,7 +252,8 @@ impl Engine {
         let unloaded = inputs.with_load(1.0);
         let range = preset.plane.sweep;
         let others: Vec<Model> = Model::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .filter(|m| *m != model && !(*m == Model::Narrow && inputs.material.is_half_space()))
             .filter(|_| request.overlays)
             .collect();

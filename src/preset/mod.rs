@@ -32,8 +32,9 @@ pub use params::{Access, PARAMS, Param};
 pub const SCHEMA: i64 = 1;
 
 /// Which problem a preset opens on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, strum::IntoStaticStr)]
 #[serde(rename_all = "lowercase")]
+#[strum(serialize_all = "lowercase")]
 pub enum Problem {
     /// The plane problem (parabolic punch on a strip).
     Plane,
@@ -44,10 +45,7 @@ pub enum Problem {
 impl Problem {
     /// The name used in preset files ("plane", "spatial").
     pub fn name(self) -> &'static str {
-        match self {
-            Problem::Plane => "plane",
-            Problem::Spatial => "spatial",
-        }
+        self.into()
     }
 }
 

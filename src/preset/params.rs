@@ -119,7 +119,7 @@ impl Param {
     }
 }
 
-const MODELS: &[&str] = &["wide", "narrow", "strip"];
+const MODELS: &[&str] = Model::NAMES;
 const SCALES: &[&str] = &["log", "linear"];
 
 fn model_index(model: Model) -> usize {

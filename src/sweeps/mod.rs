@@ -61,7 +61,8 @@ pub fn models(preset: &Preset, axis: &Axis) -> Vec<Model> {
     std::iter::once(own)
         .chain(
             Model::ALL
-                .into_iter()
+                .iter()
+                .copied()
                 .filter(|m| *m != own && (finite || !m.needs_finite_thickness())),
         )
         .collect()

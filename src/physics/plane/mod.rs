@@ -25,8 +25,21 @@ use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 pub use operating_point::{OperatingPoint, operating_point};
 
 /// Which asymptotic model of the strip to solve.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[derive(
+    Clone,
+    Copy,
+    Debug,
+    PartialEq,
+    Eq,
+    Hash,
+    Serialize,
+    Deserialize,
+    strum::VariantArray,
+    strum::VariantNames,
+    strum::IntoStaticStr,
+)]
 #[serde(rename_all = "lowercase")]
+#[strum(serialize_all = "lowercase")]
 pub enum Model {
     /// Wide strip, (a+b)/h -> 0: half-plane kernel plus the thickness correction c12 (section 4).
     Wide,
@@ -37,16 +50,15 @@ pub enum Model {
 }
 
 impl Model {
-    /// Every model, in the order the explorer cycles through them.
-    pub const ALL: [Model; 3] = [Model::Wide, Model::Narrow, Model::Strip];
+    /// Every model, in the order the explorer cycles through them (the order declared).
+    pub const ALL: &'static [Model] = <Model as strum::VariantArray>::VARIANTS;
 
-    /// The name used in preset files and in JSON.
+    /// Every model's name, in the order of `ALL`.
+    pub const NAMES: &'static [&'static str] = <Model as strum::VariantNames>::VARIANTS;
+
+    /// The name used in preset files and in JSON (the variant's, in lower case, as serde's).
     pub fn name(self) -> &'static str {
-        match self {
-            Model::Wide => "wide",
-            Model::Narrow => "narrow",
-            Model::Strip => "strip",
-        }
+        self.into()
     }
 
     /// True for the models that need a finite thickness (all but the wide one, which is exact

@@ -16,6 +16,7 @@ pub mod ticks;
 
 use crate::engine::{Answer, Output, PlaneOutput, SpatialOutput};
 use crate::preset::{Preset, Problem};
+use strum::VariantArray;
 
 pub use ticks::Scale;
 
@@ -172,7 +173,7 @@ struct ChartSpec<O> {
 }
 
 /// The charts of the plane problem, in Tab order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, VariantArray)]
 pub enum PlaneChart {
     /// q2 and q1 against x.
     Pressure,
@@ -185,8 +186,6 @@ pub enum PlaneChart {
 }
 
 impl PlaneChart {
-    const ALL: [PlaneChart; 4] = [Self::Pressure, Self::Wear, Self::MuStar, Self::Edges];
-
     fn spec(self) -> ChartSpec<PlaneOutput> {
         match self {
             Self::Pressure => ChartSpec {
@@ -218,7 +217,7 @@ impl PlaneChart {
 }
 
 /// The charts of the spatial problem, in Tab order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, VariantArray)]
 pub enum SpatialChart {
     /// p(x, y) over the period cell.
     PressureMap,
@@ -233,14 +232,6 @@ pub enum SpatialChart {
 }
 
 impl SpatialChart {
-    const ALL: [SpatialChart; 5] = [
-        Self::PressureMap,
-        Self::Line,
-        Self::History,
-        Self::MuStar,
-        Self::Dispersion,
-    ];
-
     fn spec(self) -> ChartSpec<SpatialOutput> {
         match self {
             Self::PressureMap => ChartSpec {
@@ -290,8 +281,14 @@ impl Chart {
     /// The charts of a problem, in Tab order.
     pub fn all(problem: Problem) -> Vec<Chart> {
         match problem {
-            Problem::Plane => PlaneChart::ALL.map(Chart::Plane).to_vec(),
-            Problem::Spatial => SpatialChart::ALL.map(Chart::Spatial).to_vec(),
+            Problem::Plane => PlaneChart::VARIANTS
+                .iter()
+                .copied()
+                .map(Chart::Plane)
+                .collect(),
+            Problem::Spatial => (SpatialChart::VARIANTS.iter().copied())
+                .map(Chart::Spatial)
+                .collect(),
         }
     }
 
