@@ -1,6 +1,6 @@
 //! The keys of the sweep chart and the regime map (part of `update`: pure): the dimensionless
 //! view, the map's cursor, a newly opened preset's view, what the chart keys say there, and the
-//! requests to the sweep worker (`engine::explore`), one whenever what should be shown changes.
+//! requests to the sweep worker (`engine::sweep_worker`), one whenever what should be shown changes.
 
 use crate::engine::latest::Delivery;
 use crate::engine::sweep_worker::SweepAnswer;
