@@ -17,6 +17,7 @@ use crate::physics::spatial::partial::history::History;
 use crate::physics::spatial::partial::running_in::{RunningIn, Stepping, Stopped};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::{LoadCurve, load_curve};
+use crate::physics::spatial::pipeline;
 use crate::physics::{SolveError, SweepRange};
 
 /// Where the running-in stands.
@@ -167,7 +168,7 @@ impl Engine {
             state,
             history,
             progress: run.progress(ask.time),
-            complete_from_start: run.running_in.complete_from == Some(0.0),
+            complete_from_start: pipeline::complete_from_start(run.running_in.complete_from),
             load_curve,
         })
     }

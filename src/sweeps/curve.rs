@@ -110,7 +110,7 @@ pub struct Curve {
 pub fn holds(point: &Point) -> bool {
     match point {
         Point::Plane(p) => p.validity.ok,
-        Point::Spatial(s) => s.report.contact.complete,
+        Point::Spatial(s) => s.result.contact.complete,
     }
 }
 

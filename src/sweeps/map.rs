@@ -145,8 +145,8 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2]) -> Sample {
             theta: None,
             wide_holds: None,
             narrow_holds: None,
-            complete: Some(s.report.contact.complete),
-            min_pressure: Some(s.report.contact.min_pressure),
+            complete: Some(s.result.contact.complete),
+            min_pressure: Some(s.result.contact.min_pressure),
         };
     }
     // the wide and narrow models' own solutions, the preset's reused when it is one of them

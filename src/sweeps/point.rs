@@ -5,20 +5,20 @@
 //! - plane: `plane::solve` and `validity::check`, the stages of `plane::operating_point`; the
 //!   energy identity (its costly quadrature), the largest pressure and the wear at the tip are
 //!   computed only when a quantity asks for them.
-//! - spatial: `spatial_report::spatial_report` itself (complete contact in closed form, partial
-//!   contact through the running-in), with a two-point mean-pressure sweep since no quantity
-//!   reads the sweep.
+//! - spatial: `spatial::pipeline::solve` (complete contact in closed form, partial contact
+//!   through the running-in), without the mean-pressure sweep, which no quantity reads.
 
 use std::cell::OnceCell;
 
+use crate::physics::SolveError;
 use crate::physics::plane::energy::{Energy, energy};
 use crate::physics::plane::validity::{Validity, check};
 use crate::physics::plane::{self, PlaneSolution};
 use crate::physics::quadrature::tanh_sinh;
 use crate::physics::spatial::SpatialInputs;
-use crate::physics::{SolveError, SweepRange};
+use crate::physics::spatial::pipeline;
+use crate::physics::spatial::result::SpatialResult;
 use crate::preset::{Preset, Problem};
-use crate::spatial_report::{SpatialReport, spatial_report};
 
 /// A solved plane point.
 #[derive(Debug)]
@@ -35,8 +35,8 @@ pub struct PlanePoint {
 pub struct SpatialPoint {
     /// The inputs.
     pub inputs: SpatialInputs,
-    /// `wearlab solve`'s report at the preset's time (its `sweep` has two points only).
-    pub report: SpatialReport,
+    /// The problem at the preset's time, as `wearlab solve` reports it (without its `sweep`).
+    pub result: SpatialResult,
 }
 
 /// A solved point of either problem.
@@ -60,15 +60,9 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
             })))
         }
         Problem::Spatial => {
-            let mut preset = preset.clone();
-            preset.spatial.sweep = SweepRange {
-                points: 2,
-                ..preset.spatial.sweep
-            };
-            Ok(Point::Spatial(Box::new(SpatialPoint {
-                inputs: preset.spatial_inputs(),
-                report: spatial_report(&preset, None, &[])?,
-            })))
+            let inputs = preset.spatial_inputs();
+            let result = pipeline::solve(&inputs, &preset.spatial_state_at(), &[], false)?;
+            Ok(Point::Spatial(Box::new(SpatialPoint { inputs, result })))
         }
     }
 }

@@ -5,8 +5,8 @@
 use crate::physics::plane::Model;
 use crate::physics::plane::groups as plane_groups;
 use crate::physics::spatial::groups as spatial_groups;
+use crate::physics::spatial::result::HarmonicResult;
 use crate::preset::{Preset, Problem};
-use crate::spatial_report::HarmonicReport;
 use crate::sweeps::point::{PlanePoint, SpatialPoint};
 
 /// How a quantity is computed from a point.
@@ -175,8 +175,8 @@ fn yes(flag: bool) -> Result<f64, String> {
     Ok(if flag { 1.0 } else { 0.0 })
 }
 
-fn wave(s: &SpatialPoint, n: usize) -> &HarmonicReport {
-    &s.report.harmonics[n]
+fn wave(s: &SpatialPoint, n: usize) -> &HarmonicResult {
+    &s.result.harmonics[n]
 }
 
 /// Every quantity.
@@ -209,21 +209,21 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("wear_number", "k m", "", "wear coefficient times the plane modulus m = pi E/(2(1 - nu^2)): how strongly wear shifts the pressure forwards", |p| Ok(plane_groups::wear_number(&p.solution.inputs))).derived().group(),
     plane("friction_number", "mu chi", "", "friction coefficient times chi = (1 - 2nu)/(2(1 - nu)): how strongly friction shifts the pressure backwards; theta = 0 where mu chi = k m/pi", |p| Ok(plane_groups::friction_number(&p.solution.inputs))).derived().group(),
     plane("load_number", "P/(m R)", "", "load over the plane modulus times the radius: the contact width over the radius grows like its square root", |p| Ok(plane_groups::load_number(&p.solution.inputs))).derived().group(),
-    spatial("time", "t", "s", "the instant solved", |s| Ok(s.report.time)),
-    spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", |s| Ok(s.report.mean_pressure)),
-    spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi - tau0 Delta", |s| Ok(s.report.load)),
-    spatial("tangential_force", "T", "Pa", "holding force per unit area along x, T = mu pbar + tau0 fraction + psi", |s| Ok(s.report.tangential_force)),
-    spatial("mu_star", "mu*", "", "total friction coefficient, (T - tau0 fraction)/P", |s| Ok(s.report.mu_star)),
-    spatial("psi", "psi", "Pa", "deformation component of friction, psi = -<p g_x>", |s| Ok(s.report.psi)),
-    spatial("delta", "Delta", "", "-<1_C g_x>, the slope of the contact set (0 in complete contact)", |s| Ok(s.report.delta)),
-    spatial("max_pressure", "p_max", "Pa", "largest contact pressure", |s| Ok(s.report.max_pressure)),
-    spatial("mean_gap", "<gap>", "m", "mean gap over the cell (0 in complete contact)", |s| Ok(s.report.mean_gap)),
-    spatial("contact.complete", "complete", "", "whether the contact is complete, p > 0 over the whole cell (1 yes, 0 no)", |s| yes(s.report.contact.complete)).flag(),
-    spatial("contact.fraction", "fraction", "", "fraction of the cell in contact", |s| Ok(s.report.contact.fraction)),
-    spatial("contact.time_to_complete", "t_complete", "s", "simulated time at which the running-in makes the contact complete", |s| s.report.contact.time_to_complete.ok_or_else(|| "complete from t = 0, or still partial at the end of the running-in".into())),
-    spatial("contact.min_pressure", "p_min", "Pa", "smallest complete-contact pressure p_cc of the shape at t (certified over the cell, or the bound, or over the nodes once worn); negative where the contact is partial", |s| Ok(s.report.contact.min_pressure)),
-    spatial("contact.lower_bound", "pbar-sum A/M", "Pa", "pbar - sum A/M with the closed-form amplitudes, a lower bound of p_cc", |s| Ok(s.report.contact.lower_bound)),
-    spatial("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction", |s| Ok(s.report.mu_star - s.inputs.friction.coefficient)).derived(),
+    spatial("time", "t", "s", "the instant solved", |s| Ok(s.result.time)),
+    spatial("mean_pressure", "pbar", "Pa", "mean contact pressure (the input)", |s| Ok(s.result.mean_pressure)),
+    spatial("load", "P", "Pa", "vertical force on the punch per unit area, P = pbar - mu psi - tau0 Delta", |s| Ok(s.result.load)),
+    spatial("tangential_force", "T", "Pa", "holding force per unit area along x, T = mu pbar + tau0 fraction + psi", |s| Ok(s.result.tangential_force)),
+    spatial("mu_star", "mu*", "", "total friction coefficient, (T - tau0 fraction)/P", |s| Ok(s.result.mu_star)),
+    spatial("psi", "psi", "Pa", "deformation component of friction, psi = -<p g_x>", |s| Ok(s.result.psi)),
+    spatial("delta", "Delta", "", "-<1_C g_x>, the slope of the contact set (0 in complete contact)", |s| Ok(s.result.delta)),
+    spatial("max_pressure", "p_max", "Pa", "largest contact pressure", |s| Ok(s.result.max_pressure)),
+    spatial("mean_gap", "<gap>", "m", "mean gap over the cell (0 in complete contact)", |s| Ok(s.result.mean_gap)),
+    spatial("contact.complete", "complete", "", "whether the contact is complete, p > 0 over the whole cell (1 yes, 0 no)", |s| yes(s.result.contact.complete)).flag(),
+    spatial("contact.fraction", "fraction", "", "fraction of the cell in contact", |s| Ok(s.result.contact.fraction)),
+    spatial("contact.time_to_complete", "t_complete", "s", "simulated time at which the running-in makes the contact complete", |s| s.result.contact.time_to_complete.ok_or_else(|| "complete from t = 0, or still partial at the end of the running-in".into())),
+    spatial("contact.min_pressure", "p_min", "Pa", "smallest complete-contact pressure p_cc of the shape at t (certified over the cell, or the bound, or over the nodes once worn); negative where the contact is partial", |s| Ok(s.result.contact.min_pressure)),
+    spatial("contact.lower_bound", "pbar-sum A/M", "Pa", "pbar - sum A/M with the closed-form amplitudes, a lower bound of p_cc", |s| Ok(s.result.contact.lower_bound)),
+    spatial("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction", |s| Ok(s.result.mu_star - s.inputs.friction.coefficient)).derived(),
     harmonic("harmonics.N.k", "k", "rad/m", "wavenumber |(wx, wy)| of the harmonic", |s, n| Ok(wave(s, n).k)),
     harmonic("harmonics.N.decay_rate", "beta", "1/s", "decay rate of the closed form: A(t) = A(0) e^(-beta t)", |s, n| Ok(wave(s, n).decay_rate)),
     harmonic("harmonics.N.drift_velocity", "c", "m/s", "drift velocity of the pattern, positive along +x (the friction force on the layer)", |s, n| Ok(wave(s, n).drift_velocity)),
@@ -235,11 +235,11 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     harmonic("harmonics.N.phase_y", "rho_y", "rad", "phase along y", |s, n| Ok(wave(s, n).phase_y)),
     harmonic("harmonics.N.decay_time", "1/beta", "s", "decay time: the amplitude falls by a factor e in 1/beta", |s, n| decay_time(wave(s, n))).derived(),
     harmonic("harmonics.N.kh", "kh", "", "wavenumber times thickness: below about 1 the layer is thin for this wave, above about 3 it acts as a half-space", kh).derived().group(),
-    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(spatial_groups::decay_exponent(wave(s, n).decay_rate, s.report.time))).derived().group(),
-    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(spatial_groups::pressure_ratio(wave(s, n).amplitude, wave(s, n).pressure_per_amplitude, s.report.mean_pressure))).derived().group(),
+    harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(spatial_groups::decay_exponent(wave(s, n).decay_rate, s.result.time))).derived().group(),
+    harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(spatial_groups::pressure_ratio(wave(s, n).amplitude, wave(s, n).pressure_per_amplitude, s.result.mean_pressure))).derived().group(),
 ];
 
-fn decay_time(h: &HarmonicReport) -> Result<f64, String> {
+fn decay_time(h: &HarmonicResult) -> Result<f64, String> {
     let beta = h.decay_rate;
     if beta > 0.0 {
         Ok(1.0 / beta)

@@ -13,7 +13,9 @@ pub mod groups;
 pub mod harmonic;
 pub mod history;
 pub mod partial;
+pub mod pipeline;
 mod product;
+pub mod result;
 mod separable;
 pub mod state;
 

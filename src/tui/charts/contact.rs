@@ -1,12 +1,14 @@
 //! The spatial charts drawn from the contact solved on the period cell: the nodal
 //! pressure with the zones out of contact, the running-in in time, mu* against the mean pressure
-//! over the whole range. `fields` decides, for every chart, whether the closed form of the
-//! harmonics holds at t or the nodes of the cell are drawn.
+//! over the whole range. `fields` says, for every chart, whether the closed form of the
+//! harmonics holds at t (`spatial::pipeline::closed_form_holds`) or the nodes of the cell are
+//! drawn.
 
 use crate::engine::{CellOutput, SpatialOutput};
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::LoadCurve;
+use crate::physics::spatial::pipeline::closed_form_holds;
 use crate::preset::Preset;
 use crate::units::format_si;
 
@@ -25,7 +27,7 @@ pub enum Fields<'a> {
 pub fn fields(out: &SpatialOutput) -> Result<Fields<'_>, NoFigure> {
     let complete = out.state.contact.complete;
     match &out.cell {
-        Ok(c) if c.complete_from_start && complete => Ok(Fields::Closed),
+        Ok(c) if closed_form_holds(c.complete_from_start, complete) => Ok(Fields::Closed),
         Ok(c) => c.state.as_deref().map(Fields::Nodes).map_err(error),
         Err(_) if complete => Ok(Fields::Closed),
         Err(why) => Err(NoFigure::Error(format!(
@@ -185,6 +187,6 @@ pub fn load_curve(
         points: vec![(preset.spatial.mean_pressure, s.outputs.mu_star)],
     });
     plot.against_mu(preset.friction.coefficient);
-    plot.shaded = super::spatial::gaps(&curve.mean_pressure, &curve.mu_star, "P <= 0");
+    plot.shaded = super::gaps::gaps(&curve.mean_pressure, &curve.mu_star, "P <= 0");
     Ok(Figure::Plots(vec![plot]))
 }

@@ -5,6 +5,7 @@
 
 pub mod contact;
 pub mod export;
+mod gaps;
 pub mod palette;
 mod plane;
 pub mod range;

@@ -6,7 +6,7 @@ use crate::preset::Preset;
 use crate::units::format_si;
 
 use crate::tui::charts::contact::{self, Fields};
-use crate::tui::charts::{Figure, Map, Mark, NoFigure, Plot, Scale, Series, Shade, axis, zip};
+use crate::tui::charts::{Figure, Map, Mark, NoFigure, Plot, Scale, Series, axis, zip};
 
 /// Directions whose drift velocities differ by less than this fraction of the chart's range
 /// draw as one line (a Braille dot is a fortieth of a ten-row chart).
@@ -155,7 +155,7 @@ pub(super) fn mu_star(preset: &Preset, out: &SpatialOutput) -> Result<Figure, No
         points: vec![(st.solution.inputs.mean_pressure, st.solution.mu_star)],
     });
     plot.against_mu(preset.friction.coefficient);
-    plot.shaded = gaps(&sw.mean_pressure, &sw.mu_star, "no complete contact");
+    plot.shaded = super::gaps::gaps(&sw.mean_pressure, &sw.mu_star, "no complete contact");
     Ok(Figure::Plots(vec![plot]))
 }
 
@@ -170,29 +170,6 @@ fn crest(points: &[(f64, f64)]) -> Option<f64> {
     let curvature = a.1 - 2.0 * b.1 + c.1;
     (curvature < 0.0 && b.1 >= a.1 && b.1 >= c.1)
         .then(|| b.0 + 0.5 * (c.0 - b.0) * (a.1 - c.1) / curvature)
-}
-
-/// The x ranges where a sweep has no value, each from the last point with a value before it to
-/// the first after it (or the sweep's end).
-pub(super) fn gaps(x: &[f64], values: &[Option<f64>], label: &str) -> Vec<Shade> {
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < values.len() {
-        if values[i].is_some() {
-            i += 1;
-            continue;
-        }
-        let j = (i..values.len())
-            .find(|&j| values[j].is_some())
-            .unwrap_or(values.len());
-        out.push(Shade {
-            from: x[i.saturating_sub(1)],
-            to: x[j.min(values.len() - 1)],
-            label: label.into(),
-        });
-        i = j;
-    }
-    out
 }
 
 pub(super) fn dispersion(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {

@@ -1,0 +1,325 @@
+//! The spatial problem at time t, decided once (docs/physics/spatial.md,
+//! docs/physics/spatial-partial.md): when the contact is complete at t = 0 and at t, the closed
+//! form of the harmonics holds; otherwise, on a period cell, the punch is worn through the
+//! running-in (`partial::running_in`) and every output comes from the contact solution at t;
+//! without a period cell (incommensurate wavenumbers) partial contact has no answer.
+//!
+//! `solve` answers `wearlab solve` and every spatial sweep point; the explorer's engine steps the
+//! same running-in progressively and its charts ask `closed_form_holds` what they draw.
+
+use std::ops::ControlFlow;
+
+use crate::physics::spatial::contact::{self, Contact};
+use crate::physics::spatial::partial::Setup;
+use crate::physics::spatial::partial::running_in::{MAX_STEPS, run_in};
+use crate::physics::spatial::partial::state::State;
+use crate::physics::spatial::partial::sweep::load_curve;
+use crate::physics::spatial::result::{
+    ContactResult, FieldTable, HarmonicResult, Probe, SpatialResult, SweepResult,
+};
+use crate::physics::spatial::state::{SpatialState, StateAt};
+use crate::physics::spatial::{self, SpatialInputs, SpatialSolution, solve_with, state_at};
+use crate::physics::{SolveError, limits};
+
+/// True when the contact is complete from t = 0 on: `complete_from` is the time [s] from which
+/// the running-in finds it complete (None: not complete within it).
+pub fn complete_from_start(complete_from: Option<f64>) -> bool {
+    complete_from == Some(0.0)
+}
+
+/// True when the closed form of the harmonics holds at t: the contact is complete from t = 0 on
+/// and the closed form's contact is complete at t.
+pub fn closed_form_holds(complete_from_start: bool, complete_at_t: bool) -> bool {
+    complete_from_start && complete_at_t
+}
+
+/// The spatial problem at `at.time` with the fields at `probes` [m], and mu* against pbar over
+/// `at.sweep` when `sweep` is true (the costly part on the cell: one contact solve per pressure).
+pub fn solve(
+    inputs: &SpatialInputs,
+    at: &StateAt,
+    probes: &[[f64; 2]],
+    sweep: bool,
+) -> Result<SpatialResult, SolveError> {
+    inputs.validate()?;
+    spatial::validate_grid(&inputs.harmonics, at.grid)?;
+    let evolutions = spatial::evolutions(inputs);
+    let setup = Setup::new(inputs, at.grid);
+    // with a period cell the fields come from its nodes: the closed-form field is not reported
+    let field_grid = if setup.is_ok() { 8 } else { at.grid };
+    let closed = state_at(
+        inputs,
+        &evolutions,
+        &StateAt {
+            grid: field_grid,
+            ..*at
+        },
+    )?;
+    let pressures = sweep.then(|| sweep_pressures(at));
+    match setup {
+        Ok(setup) => on_the_cell(&setup, &closed, at, probes, pressures),
+        Err(why) => {
+            let initial = contact::check(&solve_with(inputs, &evolutions, 0.0), &closed.cell);
+            if closed_form_holds(initial.complete, closed.contact.complete) {
+                return Ok(closed_form(inputs, closed, probes, sweep));
+            }
+            // the closed form does not hold: the contact is lost at t = 0 or at t
+            let lost = closed.contact.failure().or(initial.failure());
+            let lost = lost.unwrap_or_default();
+            // a coarse grid stays an input error (exit 2), no period cell has no answer (exit 3)
+            Err(match why {
+                SolveError::InvalidInput(w) => SolveError::InvalidInput(format!("{lost}; {w}")),
+                SolveError::NoSolution(w) => SolveError::NoSolution(format!("{lost}; {w}")),
+            })
+        }
+    }
+}
+
+/// The result from the running-in on the period cell.
+fn on_the_cell(
+    setup: &Setup,
+    closed: &SpatialState,
+    at: &StateAt,
+    probes: &[[f64; 2]],
+    pressures: Option<Vec<f64>>,
+) -> Result<SpatialResult, SolveError> {
+    let run = run_in(setup, at.time_tolerance, &mut |_| ControlFlow::Continue(()))?;
+    if run.step_bound_reached() {
+        return Err(SolveError::NoSolution(format!(
+            "the running-in reached its bound of {MAX_STEPS} time steps at t = {:.6e} s with the \
+             contact still partial: the time tolerance {:.1e} asks for more steps than that \
+             (raise spatial.time_tolerance)",
+            run.end_time(),
+            at.time_tolerance
+        )));
+    }
+    let state = run.state_at(at.time)?;
+    let o = state.outputs;
+    let from_start = closed_form_holds(
+        complete_from_start(run.complete_from),
+        closed.contact.complete,
+    );
+    // the shape at t is still the harmonics' closed form (t = 0, no wear, or complete from t = 0):
+    // the certified minimum of its p_cc holds, not only the nodes'
+    let closed_shape = from_start || at.time == 0.0 || run.stepping.is_none();
+    let friction = setup.inputs.friction;
+    let c = &closed.contact;
+    let contact = ContactResult {
+        complete: o.complete,
+        fraction: o.contact_fraction,
+        time_to_complete: run.time_to_complete,
+        time_error: run.time_error(at.time),
+        min_pressure: if closed_shape {
+            c.min_pressure
+        } else {
+            o.min_pressure_complete
+        },
+        at: if closed_shape {
+            c.at
+        } else {
+            Some(o.min_pressure_complete_at)
+        },
+        lower_bound: c.lower_bound,
+        exact: closed_shape && c.exact,
+        not_certified: if closed_shape { c.not_certified } else { None },
+        complete_after: c.complete_after,
+    };
+    let shear = state.shear(&friction);
+    let probes = probes
+        .iter()
+        .map(|&[x, y]| {
+            if from_start {
+                exact_probe(&closed.solution, x, y)
+            } else {
+                let k = state.grid.nearest(x, y);
+                Probe {
+                    x,
+                    y,
+                    pressure: state.pressure[k],
+                    shear: shear[k],
+                    shape: state.shape[k],
+                }
+            }
+        })
+        .collect();
+    // complete from the start: the global values of the closed form, exact (psi = 0 for mu = 0)
+    let sol = &closed.solution;
+    let (load, tangential, mu_star, psi) = if from_start {
+        (sol.load, sol.tangential, sol.mu_star, sol.psi)
+    } else {
+        (o.normal_force, o.holding_force, o.mu_star, o.psi)
+    };
+    let sweep = match pressures {
+        Some(pressures) => Some(cell_sweep(setup, closed, &state, from_start, pressures)?),
+        None => None,
+    };
+    Ok(SpatialResult {
+        problem: "spatial",
+        time: at.time,
+        mean_pressure: setup.inputs.mean_pressure,
+        load,
+        tangential_force: tangential,
+        mu_star,
+        psi,
+        delta: o.delta,
+        max_pressure: o.max_pressure,
+        mean_gap: o.mean_gap,
+        harmonics_hold: if from_start {
+            "now"
+        } else {
+            "after complete contact"
+        },
+        harmonics: harmonics(&closed.solution),
+        contact,
+        probes,
+        sweep,
+        field: nodal_fields(&state, shear),
+    })
+}
+
+/// mu* against pbar for the shape at t on the cell: the closed form's values where it holds at
+/// the same pressure, the nodes' elsewhere.
+fn cell_sweep(
+    setup: &Setup,
+    closed: &SpatialState,
+    state: &State,
+    from_start: bool,
+    pressures: Vec<f64>,
+) -> Result<SweepResult, SolveError> {
+    let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
+        ControlFlow::Continue(())
+    })?;
+    let closed_sweep = |i: usize| {
+        let s = &closed.sweep;
+        (from_start && s.mean_pressure.get(i) == Some(&pressures[i]))
+            .then(|| s.mu_star[i].map(|m| (s.load[i], m)))
+            .flatten()
+    };
+    let (load, mu_star) = (0..pressures.len())
+        .map(|i| match closed_sweep(i) {
+            Some((p, m)) => (p, Some(m)),
+            None => (curve.load[i], curve.mu_star[i]),
+        })
+        .unzip();
+    Ok(SweepResult {
+        mean_pressure: pressures,
+        load,
+        mu_star,
+        contact_fraction: Some(curve.contact_fraction),
+        complete_mean_pressure: Some(curve.complete_mean_pressure),
+    })
+}
+
+/// The result of a contact complete at every time, without a period cell (incommensurate
+/// wavenumbers): the closed form alone.
+fn closed_form(
+    inputs: &SpatialInputs,
+    closed: SpatialState,
+    probes: &[[f64; 2]],
+    sweep: bool,
+) -> SpatialResult {
+    let sol = &closed.solution;
+    let c: Contact = closed.contact;
+    let f = &closed.field;
+    let friction = inputs.friction;
+    let s = &closed.sweep;
+    SpatialResult {
+        problem: "spatial",
+        time: sol.time,
+        mean_pressure: inputs.mean_pressure,
+        load: sol.load,
+        tangential_force: sol.tangential,
+        mu_star: sol.mu_star,
+        psi: sol.psi,
+        delta: 0.0,
+        max_pressure: f.pressure.iter().copied().fold(0.0, f64::max),
+        mean_gap: 0.0,
+        harmonics_hold: "now",
+        harmonics: harmonics(sol),
+        contact: ContactResult {
+            complete: true,
+            fraction: 1.0,
+            time_to_complete: None,
+            time_error: None,
+            min_pressure: c.min_pressure,
+            at: c.at,
+            lower_bound: c.lower_bound,
+            exact: c.exact,
+            not_certified: c.not_certified,
+            complete_after: c.complete_after,
+        },
+        probes: probes
+            .iter()
+            .map(|&[x, y]| exact_probe(sol, x, y))
+            .collect(),
+        sweep: sweep.then(|| SweepResult {
+            mean_pressure: s.mean_pressure.clone(),
+            load: s.load.clone(),
+            mu_star: s.mu_star.clone(),
+            contact_fraction: None,
+            complete_mean_pressure: c.exact.then_some(inputs.mean_pressure - c.min_pressure),
+        }),
+        field: FieldTable {
+            x: f.x.clone(),
+            y: f.y.clone(),
+            shear: f
+                .pressure
+                .iter()
+                .map(|p| friction.coefficient * p + friction.adhesion)
+                .collect(),
+            pressure: f.pressure.clone(),
+            shape: f.shape.clone(),
+            wear: f.wear.clone(),
+        },
+    }
+}
+
+/// The sweep's mean pressures [Pa] (none when the range is outside `limits::MEAN_PRESSURE`, as
+/// in the closed-form sweep).
+fn sweep_pressures(at: &StateAt) -> Vec<f64> {
+    match at
+        .sweep
+        .check(["pressure_min", "pressure_max"], &limits::MEAN_PRESSURE)
+    {
+        Ok(()) => at.sweep.values(),
+        Err(_) => Vec::new(),
+    }
+}
+
+fn harmonics(sol: &SpatialSolution) -> Vec<HarmonicResult> {
+    sol.harmonics
+        .iter()
+        .map(|h| HarmonicResult {
+            k: h.initial.wavenumber(),
+            decay_rate: h.evolution.decay_rate,
+            drift_velocity: h.evolution.drift_velocity,
+            phase_rate: h.evolution.phase_rate,
+            phase_lead: h.evolution.phase_lead,
+            pressure_per_amplitude: h.evolution.pressure_per_amplitude(),
+            amplitude: h.state.amplitude,
+            phase_x: h.state.phase_x,
+            phase_y: h.state.phase_y,
+        })
+        .collect()
+}
+
+fn exact_probe(sol: &SpatialSolution, x: f64, y: f64) -> Probe {
+    Probe {
+        x,
+        y,
+        pressure: sol.pressure(x, y),
+        shear: sol.shear(x, y),
+        shape: sol.shape(x, y),
+    }
+}
+
+fn nodal_fields(state: &State, shear: Vec<f64>) -> FieldTable {
+    FieldTable {
+        x: state.grid.xs(),
+        y: state.grid.ys(),
+        pressure: state.pressure.clone(),
+        shear,
+        shape: state.shape.clone(),
+        wear: state.wear.clone(),
+    }
+}
