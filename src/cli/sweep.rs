@@ -1,8 +1,8 @@
 //! `wearlab sweep PRESET --vary KEY=FROM:TO[:N][:log] [--vary ...] [--set ...] [--output LIST]
 //! [--format csv|json]`: the library's sweep (`wearlab::sweeps::sweep`) with a progress bar on
-//! a terminal, its rows on stdout, and the exit codes of `solve`.
+//! a terminal, its rows on stdout as they are solved, and the exit codes of `solve`.
 
-use std::io::{self, IsTerminal};
+use std::io::{self, BufWriter, IsTerminal, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -13,7 +13,10 @@ use wearlab::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use wearlab::sweeps::quantity::{self, QuantityKey};
 use wearlab::sweeps::{output, sweep};
 
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, within};
+use super::{
+    EXIT_INVALID, EXIT_OUTPUT, EXIT_UNSOLVABLE, Format, finished, load_with, say, stdout_at_start,
+    within,
+};
 
 /// What `wearlab sweep` was asked.
 pub struct Request<'a> {
@@ -91,8 +94,10 @@ fn outputs(preset: &Preset, list: Option<&str>) -> Result<Vec<QuantityKey>, Stri
     }
 }
 
+/// A bar on stderr when it is a terminal and the rows go elsewhere (rows written to the same
+/// screen show their own progress and would tear the bar).
 fn progress(points: usize) -> ProgressBar {
-    if !io::stderr().is_terminal() {
+    if !io::stderr().is_terminal() || io::stdout().is_terminal() {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(points as u64);
@@ -116,6 +121,10 @@ pub fn run(request: &Request) -> ExitCode {
         Ok(o) => o,
         Err(why) => return invalid(&why),
     };
+    if stdout_at_start::closed() {
+        say("error: cannot write the result to stdout: it is closed");
+        return ExitCode::from(EXIT_OUTPUT);
+    }
     let points: usize = axes.iter().map(|a| a.range.points).product();
     let bar = progress(points);
     let worker = bar.clone();
@@ -130,7 +139,7 @@ pub fn run(request: &Request) -> ExitCode {
     finished(bounded, &|| format!("{done} of {points} points done"))
 }
 
-/// Sweeps and prints the rows.
+/// Sweeps and writes each row on stdout as it is solved.
 fn answer(
     preset: &Preset,
     axes: &[Axis],
@@ -138,19 +147,30 @@ fn answer(
     format: Format,
     point_done: &(dyn Fn() + Sync),
 ) -> ExitCode {
-    let rows = sweep::run(preset, axes, outputs, point_done);
-    let text = match format {
-        Format::Csv => output::csv(axes, outputs, &rows),
-        Format::Json => output::json(preset, axes, outputs, &rows),
-    };
-    let printed = print(&text, Ok(()));
-    match rows.iter().find_map(|r| r.failure.as_ref()) {
-        Some(why) if printed == ExitCode::SUCCESS && rows.iter().all(|r| r.failure.is_some()) => {
+    let mut first_failure: Option<String> = None;
+    let mut all_failed = true;
+    let rows = sweep::rows(preset, axes, outputs, point_done).inspect(|row| match &row.failure {
+        Some(why) if first_failure.is_none() => first_failure = Some(why.clone()),
+        Some(_) => {}
+        None => all_failed = false,
+    });
+    let mut out = BufWriter::new(io::stdout().lock());
+    let written = match format {
+        Format::Csv => output::write_csv(&mut out, axes, outputs, rows),
+        Format::Json => output::write_json(&mut out, preset, axes, outputs, rows),
+    }
+    .and_then(|()| out.flush());
+    if let Err(e) = written {
+        say(&format!("error: cannot write the result to stdout: {e}"));
+        return ExitCode::from(EXIT_OUTPUT);
+    }
+    match first_failure {
+        Some(why) if all_failed => {
             say(&format!(
                 "error: no point of the sweep has an answer; the first: {why}"
             ));
             ExitCode::from(EXIT_UNSOLVABLE)
         }
-        _ => printed,
+        _ => ExitCode::SUCCESS,
     }
 }

@@ -3,7 +3,10 @@
 //! does; serde_json's in JSON, as `wearlab solve` does); flags as true/false. A field is empty
 //! (JSON null) only where its row's `status` says why; `status` is "ok" otherwise.
 
-use serde::ser::{Serialize, SerializeMap, Serializer};
+use std::cell::RefCell;
+use std::io::{self, Write};
+
+use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
 
 use crate::physics::Spacing;
 use crate::preset::{Preset, Problem};
@@ -27,19 +30,25 @@ fn quoted(text: &str) -> String {
     }
 }
 
-/// CSV: a header of the varied keys, the outputs and `status`, then one line per row.
-pub fn csv(axes: &[Axis], outputs: &[QuantityKey], rows: &[Row]) -> String {
+/// CSV: a header of the varied keys, the outputs and `status`, then one line per row, each
+/// written as soon as `rows` gives it.
+pub fn write_csv(
+    out: &mut impl Write,
+    axes: &[Axis],
+    outputs: &[QuantityKey],
+    rows: impl Iterator<Item = Row>,
+) -> io::Result<()> {
     let mut header: Vec<String> = axes.iter().map(|a| a.key.to_string()).collect();
     header.extend(outputs.iter().map(|q| q.to_string()));
     header.push("status".into());
-    let mut out = header.join(",") + "\n";
+    writeln!(out, "{}", header.join(","))?;
     for row in rows {
         let mut fields: Vec<String> = row.at.iter().map(|v| format!("{v:e}")).collect();
         fields.extend(outputs.iter().zip(&row.values).map(|(q, v)| cell(q, v)));
         fields.push(quoted(&row.status()));
-        out += &(fields.join(",") + "\n");
+        writeln!(out, "{}", fields.join(","))?;
     }
-    out
+    Ok(())
 }
 
 struct JsonRow<'a> {
@@ -67,6 +76,27 @@ impl Serialize for JsonRow<'_> {
     }
 }
 
+/// The rows of a JSON document, serialized one by one as the iterator gives them.
+struct JsonRows<'a, I> {
+    axes: &'a [Axis],
+    outputs: &'a [QuantityKey],
+    rows: RefCell<I>,
+}
+
+impl<I: Iterator<Item = Row>> Serialize for JsonRows<'_, I> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut seq = s.serialize_seq(None)?;
+        for row in self.rows.borrow_mut().by_ref() {
+            seq.serialize_element(&JsonRow {
+                axes: self.axes,
+                outputs: self.outputs,
+                row: &row,
+            })?;
+        }
+        seq.end()
+    }
+}
+
 #[derive(serde::Serialize)]
 struct Vary {
     key: String,
@@ -84,18 +114,25 @@ struct Column {
 }
 
 #[derive(serde::Serialize)]
-struct Document<'a> {
+struct Document<R> {
     problem: Problem,
     #[serde(skip_serializing_if = "Option::is_none")]
     model: Option<&'static str>,
     vary: Vec<Vary>,
     outputs: Vec<Column>,
-    rows: Vec<JsonRow<'a>>,
+    rows: R,
 }
 
 /// JSON: the problem (and plane model), the varied ranges, the outputs with their units and
-/// descriptions, and the rows as objects keyed by the varied keys, the outputs and `status`.
-pub fn json(preset: &Preset, axes: &[Axis], outputs: &[QuantityKey], rows: &[Row]) -> String {
+/// descriptions, and the rows as objects keyed by the varied keys, the outputs and `status`, each
+/// written as soon as `rows` gives it.
+pub fn write_json(
+    out: &mut impl Write,
+    preset: &Preset,
+    axes: &[Axis],
+    outputs: &[QuantityKey],
+    rows: impl Iterator<Item = Row>,
+) -> io::Result<()> {
     let doc = Document {
         problem: preset.problem,
         model: (preset.problem == Problem::Plane).then(|| preset.plane.model.name()),
@@ -117,10 +154,12 @@ pub fn json(preset: &Preset, axes: &[Axis], outputs: &[QuantityKey], rows: &[Row
                 description: q.quantity().description,
             })
             .collect(),
-        rows: rows
-            .iter()
-            .map(|row| JsonRow { axes, outputs, row })
-            .collect(),
+        rows: JsonRows {
+            axes,
+            outputs,
+            rows: RefCell::new(rows),
+        },
     };
-    serde_json::to_string_pretty(&doc).expect("a sweep holds only numbers and strings") + "\n"
+    serde_json::to_writer_pretty(&mut *out, &doc)?;
+    writeln!(out)
 }

@@ -1,8 +1,9 @@
 //! Sweeps of any parameter (`wearlab sweep`): the preset solved at every point of one axis (a
 //! curve) or of two (a grid), in parallel, in a fixed order that does not depend on the number of
-//! threads: the first axis varies slowest. Each point goes through `point::solve`, so each is bit
-//! for bit what `wearlab solve --set` prints at that value; a point that cannot be solved says why
-//! in its row.
+//! threads: the first axis varies slowest. `rows` hands the rows on as they are solved, a chunk at
+//! a time, so a sweep's memory does not grow with its number of points. Each point goes through
+//! `point::solve`, so each is bit for bit what `wearlab solve --set` prints at that value; a point
+//! that cannot be solved says why in its row.
 
 use rayon::prelude::*;
 
@@ -81,52 +82,106 @@ fn values(point: &Point, outputs: &[QuantityKey]) -> Vec<Result<f64, String>> {
         .collect()
 }
 
-/// The points of one or two axes, the first varying slowest.
-pub fn points(axes: &[Axis]) -> Vec<Vec<f64>> {
-    let mut rows: Vec<Vec<f64>> = vec![Vec::new()];
-    for axis in axes {
-        let values = axis.values();
-        rows = rows
-            .iter()
-            .flat_map(|r| {
-                values.iter().map(move |v| {
-                    let mut r = r.clone();
-                    r.push(*v);
-                    r
-                })
-            })
-            .collect();
+/// Points solved together before their rows are handed on: enough to keep every thread busy, few
+/// enough that a sweep of millions of points holds a few megabytes of rows at a time.
+pub const CHUNK: usize = 4096;
+
+/// The point at `index` of the axes' values, the first axis varying slowest.
+fn point_at(values: &[Vec<f64>], mut index: usize) -> Vec<f64> {
+    let mut at = vec![0.0; values.len()];
+    for (slot, axis) in at.iter_mut().zip(values).rev() {
+        *slot = axis[index % axis.len()];
+        index /= axis.len();
     }
-    rows
+    at
 }
 
-/// Solves `base` at every point of the axes in parallel (rayon) and returns the rows in the order
-/// of `points`; `tick` is called once per finished point (from any thread).
+fn solve_at(base: &Preset, axes: &[Axis], outputs: &[QuantityKey], at: Vec<f64>) -> Row {
+    let (failure, values) = match preset_at(base, axes, &at) {
+        Ok(preset) => evaluate(&preset, outputs),
+        Err(why) => {
+            let why = format!("invalid input: {why}");
+            (
+                Some(why.clone()),
+                outputs.iter().map(|_| Err(why.clone())).collect(),
+            )
+        }
+    };
+    Row {
+        at,
+        failure,
+        values,
+    }
+}
+
+/// The rows of a sweep, the first axis varying slowest, solved `CHUNK` points at a time in parallel
+/// (rayon) as they are asked for, so that only one chunk is held at once.
+pub struct Rows<'a> {
+    base: &'a Preset,
+    axes: &'a [Axis],
+    outputs: &'a [QuantityKey],
+    tick: &'a (dyn Fn() + Sync),
+    values: Vec<Vec<f64>>,
+    next: usize,
+    count: usize,
+    chunk: std::vec::IntoIter<Row>,
+}
+
+impl Iterator for Rows<'_> {
+    type Item = Row;
+
+    fn next(&mut self) -> Option<Row> {
+        if let Some(row) = self.chunk.next() {
+            return Some(row);
+        }
+        if self.next >= self.count {
+            return None;
+        }
+        let end = self.count.min(self.next + CHUNK);
+        let (base, axes, outputs, tick, values) =
+            (self.base, self.axes, self.outputs, self.tick, &self.values);
+        let rows: Vec<Row> = (self.next..end)
+            .into_par_iter()
+            .map(|i| {
+                let row = solve_at(base, axes, outputs, point_at(values, i));
+                tick();
+                row
+            })
+            .collect();
+        self.next = end;
+        self.chunk = rows.into_iter();
+        self.chunk.next()
+    }
+}
+
+/// Solves `base` at every point of the axes in parallel, chunk by chunk as the rows are read, the
+/// first axis varying slowest; `tick` is called once per finished point (from any thread).
+pub fn rows<'a>(
+    base: &'a Preset,
+    axes: &'a [Axis],
+    outputs: &'a [QuantityKey],
+    tick: &'a (dyn Fn() + Sync),
+) -> Rows<'a> {
+    let values: Vec<Vec<f64>> = axes.iter().map(Axis::values).collect();
+    Rows {
+        base,
+        axes,
+        outputs,
+        tick,
+        count: values.iter().map(Vec::len).product(),
+        values,
+        next: 0,
+        chunk: Vec::new().into_iter(),
+    }
+}
+
+/// Solves `base` at every point of the axes in parallel (rayon) and returns all the rows, the first
+/// axis varying slowest; `tick` is called once per finished point (from any thread).
 pub fn run(
     base: &Preset,
     axes: &[Axis],
     outputs: &[QuantityKey],
     tick: &(dyn Fn() + Sync),
 ) -> Vec<Row> {
-    points(axes)
-        .into_par_iter()
-        .map(|at| {
-            let (failure, values) = match preset_at(base, axes, &at) {
-                Ok(preset) => evaluate(&preset, outputs),
-                Err(why) => {
-                    let why = format!("invalid input: {why}");
-                    (
-                        Some(why.clone()),
-                        outputs.iter().map(|_| Err(why.clone())).collect(),
-                    )
-                }
-            };
-            tick();
-            Row {
-                at,
-                failure,
-                values,
-            }
-        })
-        .collect()
+    rows(base, axes, outputs, tick).collect()
 }
