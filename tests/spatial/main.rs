@@ -9,6 +9,7 @@ mod limits_strategy;
 mod sie_reference;
 mod spatial;
 mod spatial_partial;
+mod spatial_partial_adhesion;
 mod spatial_partial_sie;
 mod spatial_props;
 mod spatial_running_in;

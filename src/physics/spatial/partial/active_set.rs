@@ -9,13 +9,23 @@
 //! until C repeats. A set seen before is a cycle: the state of the cycle with the smallest natural
 //! residual is kept and the cycle reported. The first sets are solved to a loose tolerance; once
 //! a set repeats, it is solved again to the full tolerance before it is accepted.
+//!
+//! With adhesion, the full update can jump back and forth across a wide strip at an edge, or
+//! wander among its nodes without ever repeating. At the first cycle, or when the smallest
+//! residual has not improved for `STALL` iterations, the iteration restarts from the set of
+//! smallest residual with the update limited to the ends of the contact zones
+//! ([`zone_ends::limit`]): each end moves by at most a reach of nodes, which starts at one, doubles
+//! while the residual falls and halves when it grows, until the set converges or cycles.
 
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::gmres::{Preconditioned, gmres};
 use crate::physics::spatial::partial::operator::Operator;
+use crate::physics::spatial::partial::zone_ends;
 
 /// Most active-set iterations.
 pub const MAX_ACTIVE_SET_ITERATIONS: usize = 100;
+/// Iterations without a smaller residual after which the update is limited to the zone ends.
+const STALL: usize = 12;
 /// GMRES restart length.
 const RESTART: usize = 40;
 /// Most GMRES products per active-set iteration.
@@ -55,6 +65,9 @@ pub struct ContactSolution {
     /// True when the active set cycled: the state of smallest residual is returned, with any
     /// negative nodal pressure clipped to 0 and the rest scaled to keep the load.
     pub cycled: bool,
+    /// True when the update was limited to the ends of the contact zones (the sets had cycled or
+    /// stalled).
+    pub damped: bool,
     /// max |min(p/pbar, gap/(pbar max A))| over the nodes (before the clipping of a cycle).
     pub residual: f64,
 }
@@ -148,6 +161,7 @@ pub fn solve(
             iterations: 0,
             linear_iterations: 0,
             cycled: false,
+            damped: false,
             residual: 0.0,
         });
     }
@@ -161,6 +175,12 @@ pub fn solve(
     let mut offset = 0.0 - prob.diagonal * pbar;
     let mut seen: Vec<Vec<u64>> = Vec::new();
     let mut best: Option<ContactSolution> = None;
+    // the set of the state `best` and the iterations since `best` last improved
+    let mut best_set: Vec<bool> = Vec::new();
+    let mut stalled = 0;
+    let mut damped = false;
+    // the damped update's reach [nodes] and the residual of the previous damped iteration
+    let (mut reach, mut last_residual) = (1, f64::INFINITY);
     let mut linear_iterations = 0;
     let (mut full, mut image, mut gap) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut relative_tolerance = LOOSE_TOLERANCE;
@@ -217,7 +237,7 @@ pub fn solve(
         let residual = (0..n)
             .map(|i| (pressure[i] / pbar).min(gap[i] / gap_scale).abs())
             .fold(0.0, f64::max);
-        let next: Vec<bool> = (0..n)
+        let mut next: Vec<bool> = (0..n)
             .map(|i| {
                 if set[i] {
                     pressure[i] > 0.0
@@ -233,6 +253,7 @@ pub fn solve(
             iterations: iteration,
             linear_iterations,
             cycled,
+            damped,
             residual,
         };
         let loose = relative_tolerance > LINEAR_TOLERANCE;
@@ -250,10 +271,51 @@ pub fn solve(
         }
         if best.as_ref().is_none_or(|b| residual < b.residual) {
             best = Some(state(false));
+            best_set.clone_from(&set);
+            stalled = 0;
+        } else {
+            stalled += 1;
+        }
+        if !damped && stalled >= STALL {
+            // restart from the set of smallest residual, tightly, with the damped update
+            (damped, stalled, relative_tolerance) = (true, 0, LINEAR_TOLERANCE);
+            set = std::mem::take(&mut best_set);
+            (seen, best) = (Vec::new(), None);
+            continue;
+        }
+        if damped {
+            let violation: Vec<f64> = (0..n)
+                .map(|i| {
+                    let v = if set[i] {
+                        -pressure[i] / pbar
+                    } else {
+                        -gap[i] / gap_scale
+                    };
+                    v.max(0.0)
+                })
+                .collect();
+            if last_residual.is_finite() {
+                reach = if residual < last_residual {
+                    (2 * reach).min(n)
+                } else {
+                    (reach / 2).max(1)
+                };
+            }
+            last_residual = residual;
+            next = zone_ends::limit(op.grid(), &set, &next, &violation, reach);
+        }
+        if seen.contains(&bits(&next)) && !damped {
+            // a cycle of the full update: walk from the set of smallest residual again with the
+            // damped update, keeping that state in case no better one comes
+            (damped, stalled) = (true, 0);
+            set = std::mem::take(&mut best_set);
+            seen.clear();
+            continue;
         }
         if seen.contains(&bits(&next)) {
             let mut b = best.expect("set after the first iteration");
             (b.cycled, b.iterations, b.linear_iterations) = (true, iteration, linear_iterations);
+            b.damped = true;
             // a node of the ill-posed zone may hold a small negative pressure: clip it, keeping
             // the load (the outputs change by O(tau0 w), section 8)
             b.pressure.iter_mut().for_each(|v| *v = v.max(0.0));
@@ -264,7 +326,16 @@ pub fn solve(
         seen.push(bits(&set));
         set = next;
     }
-    Err(SolveError::NoSolution(format!(
-        "the contact set did not settle within {MAX_ACTIVE_SET_ITERATIONS} active-set iterations"
-    )))
+    Err(SolveError::NoSolution(if damped {
+        format!(
+            "the contact set did not settle within {MAX_ACTIVE_SET_ITERATIONS} active-set \
+             iterations (the bound was reached; the last ones, moving only the ends of the contact \
+             zones, neither converged nor cycled)"
+        )
+    } else {
+        format!(
+            "the contact set did not settle within {MAX_ACTIVE_SET_ITERATIONS} active-set \
+             iterations (the bound was reached)"
+        )
+    }))
 }

@@ -15,6 +15,7 @@ pub mod operator;
 pub mod running_in;
 pub mod state;
 pub mod sweep;
+pub mod zone_ends;
 
 use std::sync::Arc;
 

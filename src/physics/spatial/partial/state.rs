@@ -68,6 +68,9 @@ pub struct Work {
     /// True when the active set cycled among a few edge nodes (tau0 > 0 on fine grids, section 3
     /// of docs/physics/spatial-partial.md) and the best state of the cycle was kept.
     pub cycled: bool,
+    /// True when the sets cycled or stalled and the update was then limited to the ends of the
+    /// contact zones (section 3 of docs/physics/spatial-partial.md, `zone_ends`).
+    pub damped: bool,
 }
 
 impl Work {
@@ -77,6 +80,7 @@ impl Work {
             iterations: sol.iterations,
             linear_iterations: sol.linear_iterations,
             cycled: sol.cycled,
+            damped: sol.damped,
         }
     }
 }
