@@ -37,9 +37,13 @@ enum Command {
     Solve {
         /// The preset file (TOML, schema 1).
         preset: PathBuf,
-        /// Output format.
-        #[arg(long, value_enum, default_value_t = Format::Json)]
-        format: Format,
+        /// Output format (default: JSON; with --output, one `KEY = value unit` line each).
+        #[arg(long, value_enum)]
+        format: Option<Format>,
+        /// Print only these quantities, comma-separated (the names of `wearlab sweep --output`,
+        /// e.g. mu_star,a,b).
+        #[arg(long, value_name = "KEY[,KEY...]", conflicts_with_all = ["points", "probe"])]
+        output: Option<String>,
         /// Number of profile points, both ends included (plane; default 201).
         #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = solve::parse_points)]
         points: Option<usize>,
@@ -91,6 +95,7 @@ fn main() -> ExitCode {
             probe,
             settings,
             max_seconds,
+            output,
         }) => solve::run(
             &preset,
             format,
@@ -100,6 +105,7 @@ fn main() -> ExitCode {
                 probes: probe,
                 settings,
                 max_seconds,
+                output,
             },
         ),
         Some(Command::Sweep {

@@ -165,6 +165,17 @@ pub fn prefix(exp: i32) -> Option<&'static str> {
     PREFIXES.iter().find(|(_, e)| *e == exp).map(|(p, _)| *p)
 }
 
+/// The decimal number `text` times 10^exp, read as one decimal ("2.5" and -6 read as "2.5e-6"),
+/// so that the result is the f64 nearest to the value typed, as the same value written in SI
+/// units gives: "2 mm" is the literal 2e-3 bit for bit. None when the exponent does not fit.
+fn shifted(text: &str, exp: i32) -> Option<f64> {
+    let (mantissa, own) = match text.find(['e', 'E']) {
+        Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
+        None => (text, 0),
+    };
+    format!("{mantissa}e{}", own.checked_add(exp)?).parse().ok()
+}
+
 /// Parses a number with an optional SI prefix and unit: "3e9", "3 GPa", "50mm", "0.3", "inf",
 /// "2.5 um". The unit, when given, must be `unit` (with or without a prefix).
 pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
@@ -193,8 +204,8 @@ pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
         .iter()
         .find(|(u, alias, _)| *u == unit && rest.eq_ignore_ascii_case(alias))
     {
-        // rounded to the decimal the user typed: 0.02 mm3/Nm is exactly the literal 2e-11
-        return Ok(clean(scale(number, *exp)));
+        // the decimal the user typed: 0.02 mm3/Nm is exactly the literal 2e-11
+        return Ok(shifted(t[..split].trim(), *exp).unwrap_or(scale(number, *exp)));
     }
     let rest = rest
         .strip_suffix(unit)
@@ -205,7 +216,7 @@ pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
         return Ok(number);
     }
     match PREFIXES.iter().find(|(p, _)| !p.is_empty() && *p == rest) {
-        Some((_, exp)) => Ok(scale(number, *exp)),
+        Some((_, exp)) => Ok(shifted(t[..split].trim(), *exp).unwrap_or(scale(number, *exp))),
         None if prefixable(unit) || unit.is_empty() => Err(format!(
             "'{t}': unknown unit; write a plain number or a prefixed {unit} (e.g. k{unit}, M{unit})"
         )),
@@ -310,6 +321,19 @@ mod tests {
         assert!(parse_si("abc", "Pa").unwrap_err().contains("not a number"));
         assert!(parse_si("3 GN", "Pa").unwrap_err().contains("unknown unit"));
         assert!(parse_si("", "Pa").is_err());
+    }
+
+    #[test]
+    fn prefixed_values_are_the_decimal_typed() {
+        // in f64, 0.1 / 1e6 != 1e-7, 3.3 / 1e6 != 3.3e-6 and 0.07 / 1e3 != 7e-5 (the division
+        // rounds twice); the text read as one decimal is the literal
+        assert_ne!(0.1 / 1e6, 1e-7);
+        assert_eq!(parse_si("0.1 um", "m"), Ok(1e-7));
+        assert_eq!(parse_si("3.3 um", "m"), Ok(3.3e-6));
+        assert_eq!(parse_si("0.07 mm", "m"), Ok(7e-5));
+        assert_eq!(parse_si("6.283185307179586 km", "m"), Ok(6283.185307179586));
+        assert_eq!(parse_si("1.5e2 MPa", "Pa"), Ok(1.5e8));
+        assert_eq!(parse_si("-2 kN/m", "N/m"), Ok(-2000.0));
     }
 
     #[test]

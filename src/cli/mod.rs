@@ -12,6 +12,7 @@ use wearlab::preset::{self, Preset};
 
 pub mod explorer;
 pub mod solve;
+pub mod solve_output;
 pub mod stdout_at_start;
 pub mod sweep;
 
@@ -34,12 +35,17 @@ pub fn say(message: &str) {
     let _ = writeln!(io::stderr(), "{message}");
 }
 
-/// The preset at `path`, or exit 2 with the file's error said.
+/// The preset at `path`, or exit 2 with the file's error said; the warnings of a valid file
+/// (`preset::load_with_warnings`) go to stderr.
 pub fn load(path: &Path) -> Result<Preset, ExitCode> {
-    preset::load(path).map_err(|e| {
+    let (preset, warnings) = preset::load_with_warnings(path).map_err(|e| {
         say(&format!("error: {e}"));
         ExitCode::from(EXIT_INVALID)
-    })
+    })?;
+    for w in warnings {
+        say(&format!("warning: {w}"));
+    }
+    Ok(preset)
 }
 
 /// The preset at `path` with the `--set` values applied.

@@ -1,5 +1,6 @@
 //! `wearlab solve PRESET [--format json|csv] [--points N] [--time T] [--probe X,Y] [--set ...]`:
-//! the library's report of one preset (`report::plane_report`, `spatial_report`) on stdout.
+//! the library's report of one preset (`report::plane_report`, `spatial_report`) on stdout, or with
+//! `--output KEY[,KEY...]` chosen quantities of it (`solve_output`).
 
 use std::io::{self, IsTerminal};
 use std::path::Path;
@@ -13,7 +14,9 @@ use wearlab::{finite, report, spatial_report};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, within};
+use super::{
+    EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, solve_output, within,
+};
 
 /// Profile points when `--points` is not given.
 const DEFAULT_POINTS: usize = 201;
@@ -48,7 +51,7 @@ pub fn parse_probe(text: &str) -> Result<[f64; 2], String> {
     }
 }
 
-fn solver_failure(e: SolveError) -> ExitCode {
+pub fn solver_failure(e: SolveError) -> ExitCode {
     say(&format!("error: {e}"));
     match e {
         SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
@@ -65,6 +68,8 @@ pub struct Overrides {
     pub settings: Vec<String>,
     /// `--max-seconds`: the bound on the solve's wall-clock time [s].
     pub max_seconds: Option<f64>,
+    /// `--output KEY[,KEY...]`: print these quantities instead of the report.
+    pub output: Option<String>,
 }
 
 impl Overrides {
@@ -84,8 +89,9 @@ impl Overrides {
 }
 
 /// Runs `wearlab solve`.
-pub fn run(path: &Path, format: Format, options: &Overrides) -> ExitCode {
-    let preset = match load_with(path, &options.settings) {
+/// `format` is None when `--format` is not given: the report is then JSON, `--output` lines.
+pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode {
+    let mut preset = match load_with(path, &options.settings) {
         Ok(p) => p,
         Err(code) => return code,
     };
@@ -93,6 +99,18 @@ pub fn run(path: &Path, format: Format, options: &Overrides) -> ExitCode {
         say(&format!("error: {why}"));
         return ExitCode::from(EXIT_INVALID);
     }
+    if let Some(list) = options.output.clone() {
+        if let Some(t) = options.time {
+            preset.spatial.time = t;
+        }
+        let bounded = within(
+            options.max_seconds,
+            move || solve_output::answer(&preset, &list, format),
+            &|| {},
+        );
+        return finished(bounded, &|| "the solve had not finished".into());
+    }
+    let format = format.unwrap_or(Format::Json);
     let (time, probes) = (options.time, options.probes.clone());
     let points = options.points.unwrap_or(DEFAULT_POINTS);
     let spinner = ProgressBar::hidden();

@@ -1,6 +1,7 @@
 //! The checks of a preset file: every value against `physics::limits`, the sections a problem
 //! needs, the sweep's order, the `[explore]` section; each refusal is `path:line: reason`.
 
+use std::cell::RefCell;
 use std::ops::Range;
 use std::path::Path;
 
@@ -12,11 +13,12 @@ use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 use crate::preset::explore_section::Explore;
 use crate::preset::file::{FileAxis, FileExplore, FilePlane, FilePreset, FileSpatial};
+use crate::preset::written::{self, Written};
 use crate::preset::{
     PlaneSection, Preset, PresetError, Problem, SCHEMA, SpatialSection, default_load_sweep,
     default_plane_section, default_pressure_sweep, default_spatial_section,
 };
-use crate::preset::{disk, wording};
+use crate::preset::{disk, plausible, wording};
 use crate::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use crate::sweeps::quantity::QuantityKey;
 
@@ -30,6 +32,8 @@ fn line_of(text: &str, offset: usize) -> usize {
 pub(super) struct Checker<'a> {
     path: &'a Path,
     text: &'a str,
+    /// The values that look like a unit mistake, and the harmonics that vanish.
+    warnings: RefCell<Vec<PresetError>>,
 }
 
 impl Checker<'_> {
@@ -45,11 +49,25 @@ impl Checker<'_> {
         }
     }
 
-    fn value(&self, v: &Spanned<f64>, name: &str, limit: &Limit) -> Result<f64, PresetError> {
-        limit
-            .check(name, *v.get_ref())
+    /// A number of the file, in SI units or a text with units, within `limit`; `key` is its
+    /// preset key (`material.thickness`), which gives the unit and the examples.
+    fn value(&self, v: &Spanned<Written>, key: &str, limit: &Limit) -> Result<f64, PresetError> {
+        let value = v
+            .get_ref()
+            .si(key)
             .map_err(|why| self.error(Some(v.span()), why))?;
-        Ok(*v.get_ref())
+        let name = key.rsplit('.').next().unwrap_or(key);
+        limit
+            .check(name, value)
+            .map_err(|why| self.error(Some(v.span()), why))?;
+        if let Some(why) = plausible::suspicious(key, value) {
+            self.warn(Some(v.span()), format!("{name} = {value:e}: {why}"));
+        }
+        Ok(value)
+    }
+
+    fn warn(&self, span: Option<Range<usize>>, reason: String) {
+        self.warnings.borrow_mut().push(self.error(span, reason));
     }
 }
 
@@ -61,10 +79,38 @@ pub fn load(path: &Path) -> Result<Preset, PresetError> {
 
 /// Parses and validates preset text; `path` is only used in messages.
 pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
-    let ck = Checker { path, text };
+    parse_with_warnings(text, path).map(|(preset, _)| preset)
+}
+
+/// Reads and validates a preset file as `load` does, with the warnings of its valid values that
+/// look like a unit mistake or a harmonic that vanishes (`plausible`), each `path:line: reason`.
+pub fn load_with_warnings(path: &Path) -> Result<(Preset, Vec<PresetError>), PresetError> {
+    parse_with_warnings(&disk::read_text(path)?, path)
+}
+
+/// Parses and validates preset text as `parse` does, with the warnings of `load_with_warnings`.
+pub fn parse_with_warnings(
+    text: &str,
+    path: &Path,
+) -> Result<(Preset, Vec<PresetError>), PresetError> {
+    let ck = Checker {
+        path,
+        text,
+        warnings: RefCell::new(Vec::new()),
+    };
     let file: FilePreset = toml::from_str(text).map_err(|e| {
         let before = wording::text_before(text, e.span().map_or(0, |s| s.start));
-        ck.error(e.span(), wording::reason(e.message(), before))
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let line = text[line_start..].lines().next().unwrap_or("");
+        let why = if e.message().contains("must be quoted") {
+            written::unquoted(line, &before[..line_start])
+        } else {
+            None
+        };
+        ck.error(
+            e.span(),
+            why.unwrap_or_else(|| wording::reason(e.message(), before)),
+        )
     })?;
     if *file.schema.get_ref() != SCHEMA {
         return Err(ck.error(
@@ -82,16 +128,20 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
     let material = Material {
         youngs_modulus: ck.value(
             &mat.youngs_modulus,
-            "youngs_modulus",
+            "material.youngs_modulus",
             &limits::YOUNGS_MODULUS,
         )?,
-        poisson_ratio: ck.value(&mat.poisson_ratio, "poisson_ratio", &limits::POISSON_RATIO)?,
-        thickness: ck.value(&mat.thickness, "thickness", &limits::THICKNESS)?,
+        poisson_ratio: ck.value(
+            &mat.poisson_ratio,
+            "material.poisson_ratio",
+            &limits::POISSON_RATIO,
+        )?,
+        thickness: ck.value(&mat.thickness, "material.thickness", &limits::THICKNESS)?,
     };
     let friction = match &file.friction {
         Some(f) => Friction {
-            coefficient: ck.value(&f.coefficient, "coefficient", &limits::FRICTION)?,
-            adhesion: ck.value(&f.adhesion, "adhesion", &limits::ADHESION)?,
+            coefficient: ck.value(&f.coefficient, "friction.coefficient", &limits::FRICTION)?,
+            adhesion: ck.value(&f.adhesion, "friction.adhesion", &limits::ADHESION)?,
         },
         None => Friction {
             coefficient: 0.0,
@@ -99,7 +149,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
         },
     };
     let wear = match &file.wear {
-        Some(w) => ck.value(&w.coefficient, "coefficient", &limits::WEAR)?,
+        Some(w) => ck.value(&w.coefficient, "wear.coefficient", &limits::WEAR)?,
         None => 0.0,
     };
     let problem = *file.problem.get_ref();
@@ -142,7 +192,7 @@ pub fn parse(text: &str, path: &Path) -> Result<Preset, PresetError> {
     if let Some(e) = &file.explore {
         preset.explore = Some(ck.explore(e, &preset)?);
     }
-    Ok(preset)
+    Ok((preset, ck.warnings.into_inner()))
 }
 
 impl Checker<'_> {
@@ -157,7 +207,7 @@ impl Checker<'_> {
     /// A sweep: both ends within `limit`, min < max (`SweepRange::check_order`), the points.
     fn sweep(
         &self,
-        ends: [&Spanned<f64>; 2],
+        ends: [&Spanned<Written>; 2],
         names: [&str; 2],
         limit: &Limit,
         points: &Spanned<i64>,
@@ -169,8 +219,9 @@ impl Checker<'_> {
             points: self.count(points, "points", &limits::SWEEP_POINTS)?,
             spacing,
         };
+        let short = names.map(|n| n.rsplit('.').next().unwrap_or(n));
         range
-            .check_order(names, |v| v.to_string())
+            .check_order(short, |v| v.to_string())
             .map_err(|why| self.error(Some(ends[1].span()), why))?;
         Ok(range)
     }
@@ -181,8 +232,8 @@ impl Checker<'_> {
         material: &Material,
     ) -> Result<PlaneSection, PresetError> {
         let pl = plane.get_ref();
-        let radius = self.value(&pl.radius, "radius", &limits::RADIUS)?;
-        let load = self.value(&pl.load, "load", &limits::LINE_LOAD)?;
+        let radius = self.value(&pl.radius, "plane.radius", &limits::RADIUS)?;
+        let load = self.value(&pl.load, "plane.load", &limits::LINE_LOAD)?;
         if pl.model.needs_finite_thickness() && material.is_half_space() {
             return Err(self.error(
                 Some(plane.span()),
@@ -197,7 +248,7 @@ impl Checker<'_> {
                 let s = sw.get_ref();
                 self.sweep(
                     [&s.load_min, &s.load_max],
-                    ["load_min", "load_max"],
+                    ["plane.sweep.load_min", "plane.sweep.load_max"],
                     &limits::LINE_LOAD,
                     &s.points,
                     s.scale,
@@ -219,18 +270,41 @@ impl Checker<'_> {
         spatial: &Spanned<FileSpatial>,
     ) -> Result<(SpatialSection, bool), PresetError> {
         let sp = spatial.get_ref();
-        let mean_pressure =
-            self.value(&sp.mean_pressure, "mean_pressure", &limits::MEAN_PRESSURE)?;
+        let mean_pressure = self.value(
+            &sp.mean_pressure,
+            "spatial.mean_pressure",
+            &limits::MEAN_PRESSURE,
+        )?;
         let mut harmonics = Vec::new();
         for fh in &sp.harmonics {
             let h = fh.get_ref();
             let harmonic = Harmonic {
-                amplitude: self.value(&h.amplitude, "amplitude", &limits::AMPLITUDE)?,
-                wavenumber_x: self.value(&h.wavenumber_x, "wavenumber_x", &limits::WAVENUMBER)?,
-                wavenumber_y: self.value(&h.wavenumber_y, "wavenumber_y", &limits::WAVENUMBER)?,
-                phase_x: self.value(&h.phase_x, "phase_x", &limits::PHASE)?,
-                phase_y: self.value(&h.phase_y, "phase_y", &limits::PHASE)?,
+                amplitude: self.value(
+                    &h.amplitude,
+                    "spatial.harmonics.N.amplitude",
+                    &limits::AMPLITUDE,
+                )?,
+                wavenumber_x: self.value(
+                    &h.wavenumber_x,
+                    "spatial.harmonics.N.wavenumber_x",
+                    &limits::WAVENUMBER,
+                )?,
+                wavenumber_y: self.value(
+                    &h.wavenumber_y,
+                    "spatial.harmonics.N.wavenumber_y",
+                    &limits::WAVENUMBER,
+                )?,
+                phase_x: self.value(&h.phase_x, "spatial.harmonics.N.phase_x", &limits::PHASE)?,
+                phase_y: self.value(&h.phase_y, "spatial.harmonics.N.phase_y", &limits::PHASE)?,
             };
+            if let Some((phase, why)) = plausible::vanishes(&harmonic) {
+                let at = if phase == "phase_y" {
+                    &h.phase_y
+                } else {
+                    &h.phase_x
+                };
+                self.warn(Some(at.span()), why);
+            }
             harmonics.push(harmonic);
             // the wave-vector rules (nonzero, not repeated) are the solver's
             if let Err(e) = validate_harmonics(&harmonics) {
@@ -249,7 +323,7 @@ impl Checker<'_> {
                 let s = sw.get_ref();
                 self.sweep(
                     [&s.pressure_min, &s.pressure_max],
-                    ["pressure_min", "pressure_max"],
+                    ["spatial.sweep.pressure_min", "spatial.sweep.pressure_max"],
                     &limits::MEAN_PRESSURE,
                     &s.points,
                     s.scale,
@@ -267,15 +341,19 @@ impl Checker<'_> {
         })?;
         let section = SpatialSection {
             mean_pressure,
-            sliding_speed: self.value(&sp.sliding_speed, "sliding_speed", &limits::SPEED)?,
-            time: self.value(&sp.time, "time", &limits::TIME)?,
+            sliding_speed: self.value(
+                &sp.sliding_speed,
+                "spatial.sliding_speed",
+                &limits::SPEED,
+            )?,
+            time: self.value(&sp.time, "spatial.time", &limits::TIME)?,
             duration: match &sp.duration {
-                Some(d) => self.value(d, "duration", &limits::DURATION)?,
+                Some(d) => self.value(d, "spatial.duration", &limits::DURATION)?,
                 None => default_spatial_section().duration,
             },
             grid,
             time_tolerance: match &sp.time_tolerance {
-                Some(t) => self.value(t, "time_tolerance", &limits::TIME_TOLERANCE)?,
+                Some(t) => self.value(t, "spatial.time_tolerance", &limits::TIME_TOLERANCE)?,
                 None => default_spatial_section().time_tolerance,
             },
             sweep,
@@ -305,7 +383,14 @@ impl Checker<'_> {
             }
             None => default_points,
         };
-        let ends = [*a.from.get_ref(), *a.to.get_ref()];
+        // the ends in the unit of the key they vary
+        let at = key.to_string();
+        let end = |v: &Spanned<Written>| {
+            v.get_ref()
+                .si(&at)
+                .map_err(|why| self.error(Some(v.span()), why))
+        };
+        let ends = [end(&a.from)?, end(&a.to)?];
         let spacing = a.scale.unwrap_or(Spacing::Linear);
         Axis::new(preset, key, ends, points, spacing).map_err(|why| {
             // the fault is at the end it names, else at the axis

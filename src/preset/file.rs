@@ -10,38 +10,39 @@ use toml::Spanned;
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
 use crate::preset::explore_section::Explore;
+use crate::preset::written::Written;
 use crate::preset::{Preset, Problem, SCHEMA, SpatialSection, default_spatial_section, disk};
 use crate::sweeps::axis::Axis;
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileMaterial {
-    pub(super) youngs_modulus: Spanned<f64>,
-    pub(super) poisson_ratio: Spanned<f64>,
-    pub(super) thickness: Spanned<f64>,
+    pub(super) youngs_modulus: Spanned<Written>,
+    pub(super) poisson_ratio: Spanned<Written>,
+    pub(super) thickness: Spanned<Written>,
 }
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileFriction {
     #[serde(default = "zero")]
-    pub(super) coefficient: Spanned<f64>,
+    pub(super) coefficient: Spanned<Written>,
     #[serde(default = "zero")]
-    pub(super) adhesion: Spanned<f64>,
+    pub(super) adhesion: Spanned<Written>,
 }
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileWear {
     #[serde(default = "zero")]
-    pub(super) coefficient: Spanned<f64>,
+    pub(super) coefficient: Spanned<Written>,
 }
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileLoadSweep {
-    pub(super) load_min: Spanned<f64>,
-    pub(super) load_max: Spanned<f64>,
+    pub(super) load_min: Spanned<Written>,
+    pub(super) load_max: Spanned<Written>,
     pub(super) points: Spanned<i64>,
     pub(super) scale: Spacing,
 }
@@ -50,8 +51,8 @@ pub(super) struct FileLoadSweep {
 #[serde(deny_unknown_fields)]
 pub(super) struct FilePlane {
     pub(super) model: Model,
-    pub(super) radius: Spanned<f64>,
-    pub(super) load: Spanned<f64>,
+    pub(super) radius: Spanned<Written>,
+    pub(super) load: Spanned<Written>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FileLoadSweep>>,
 }
@@ -59,8 +60,8 @@ pub(super) struct FilePlane {
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FilePressureSweep {
-    pub(super) pressure_min: Spanned<f64>,
-    pub(super) pressure_max: Spanned<f64>,
+    pub(super) pressure_min: Spanned<Written>,
+    pub(super) pressure_max: Spanned<Written>,
     pub(super) points: Spanned<i64>,
     pub(super) scale: Spacing,
 }
@@ -68,28 +69,28 @@ pub(super) struct FilePressureSweep {
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileHarmonic {
-    pub(super) amplitude: Spanned<f64>,
-    pub(super) wavenumber_x: Spanned<f64>,
-    pub(super) wavenumber_y: Spanned<f64>,
-    pub(super) phase_x: Spanned<f64>,
-    pub(super) phase_y: Spanned<f64>,
+    pub(super) amplitude: Spanned<Written>,
+    pub(super) wavenumber_x: Spanned<Written>,
+    pub(super) wavenumber_y: Spanned<Written>,
+    pub(super) phase_x: Spanned<Written>,
+    pub(super) phase_y: Spanned<Written>,
 }
 
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileSpatial {
-    pub(super) mean_pressure: Spanned<f64>,
-    pub(super) sliding_speed: Spanned<f64>,
+    pub(super) mean_pressure: Spanned<Written>,
+    pub(super) sliding_speed: Spanned<Written>,
     #[serde(default = "zero")]
-    pub(super) time: Spanned<f64>,
+    pub(super) time: Spanned<Written>,
     /// Absent: five of the slowest decay times (`Preset::auto_duration`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub(super) duration: Option<Spanned<f64>>,
+    pub(super) duration: Option<Spanned<Written>>,
     #[serde(default = "default_grid")]
     pub(super) grid: Spanned<i64>,
     /// Absent: the default section's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub(super) time_tolerance: Option<Spanned<f64>>,
+    pub(super) time_tolerance: Option<Spanned<Written>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FilePressureSweep>>,
     #[serde(default)]
@@ -122,8 +123,8 @@ pub(super) struct FilePreset {
 #[serde(deny_unknown_fields)]
 pub(super) struct FileAxis {
     pub(super) key: Spanned<String>,
-    pub(super) from: Spanned<f64>,
-    pub(super) to: Spanned<f64>,
+    pub(super) from: Spanned<Written>,
+    pub(super) to: Spanned<Written>,
     #[serde(default)]
     pub(super) points: Option<Spanned<i64>>,
     #[serde(default)]
@@ -139,8 +140,13 @@ pub(super) struct FileExplore {
     pub(super) y: Option<Spanned<FileAxis>>,
 }
 
-pub(super) fn zero() -> Spanned<f64> {
-    Spanned::new(0..0, 0.0)
+pub(super) fn zero() -> Spanned<Written> {
+    num(0.0)
+}
+
+/// A number to write.
+fn num(value: f64) -> Spanned<Written> {
+    plain(Written::Number(value))
 }
 
 pub(super) fn plain<T>(value: T) -> Spanned<T> {
@@ -156,24 +162,24 @@ pub fn to_toml(preset: &Preset) -> String {
         description: preset.description.clone(),
         problem: plain(preset.problem),
         material: Some(plain(FileMaterial {
-            youngs_modulus: plain(preset.material.youngs_modulus),
-            poisson_ratio: plain(preset.material.poisson_ratio),
-            thickness: plain(preset.material.thickness),
+            youngs_modulus: num(preset.material.youngs_modulus),
+            poisson_ratio: num(preset.material.poisson_ratio),
+            thickness: num(preset.material.thickness),
         })),
         friction: Some(FileFriction {
-            coefficient: plain(preset.friction.coefficient),
-            adhesion: plain(preset.friction.adhesion),
+            coefficient: num(preset.friction.coefficient),
+            adhesion: num(preset.friction.adhesion),
         }),
         wear: Some(FileWear {
-            coefficient: plain(preset.wear),
+            coefficient: num(preset.wear),
         }),
         plane: Some(plain(FilePlane {
             model: preset.plane.model,
-            radius: plain(preset.plane.radius),
-            load: plain(preset.plane.load),
+            radius: num(preset.plane.radius),
+            load: num(preset.plane.load),
             sweep: Some(plain(FileLoadSweep {
-                load_min: plain(sw.min),
-                load_max: plain(sw.max),
+                load_min: num(sw.min),
+                load_max: num(sw.max),
                 points: plain(sw.points as i64),
                 scale: sw.spacing,
             })),
@@ -189,8 +195,8 @@ fn explore_file(e: &Explore) -> FileExplore {
     let axis = |a: &Axis| {
         plain(FileAxis {
             key: plain(a.key.to_string()),
-            from: plain(a.range.min),
-            to: plain(a.range.max),
+            from: num(a.range.min),
+            to: num(a.range.max),
             points: Some(plain(a.range.points as i64)),
             scale: Some(a.range.spacing),
         })
@@ -204,17 +210,17 @@ fn explore_file(e: &Explore) -> FileExplore {
 
 fn spatial_file(sp: &SpatialSection) -> FileSpatial {
     FileSpatial {
-        mean_pressure: plain(sp.mean_pressure),
-        sliding_speed: plain(sp.sliding_speed),
-        time: plain(sp.time),
-        duration: Some(plain(sp.duration)),
+        mean_pressure: num(sp.mean_pressure),
+        sliding_speed: num(sp.sliding_speed),
+        time: num(sp.time),
+        duration: Some(num(sp.duration)),
         grid: plain(sp.grid as i64),
         // written only when it is not the default, so that saved presets stay as they were
         time_tolerance: (sp.time_tolerance != default_spatial_section().time_tolerance)
-            .then(|| plain(sp.time_tolerance)),
+            .then(|| num(sp.time_tolerance)),
         sweep: Some(plain(FilePressureSweep {
-            pressure_min: plain(sp.sweep.min),
-            pressure_max: plain(sp.sweep.max),
+            pressure_min: num(sp.sweep.min),
+            pressure_max: num(sp.sweep.max),
             points: plain(sp.sweep.points as i64),
             scale: sp.sweep.spacing,
         })),
@@ -223,11 +229,11 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
             .iter()
             .map(|h| {
                 plain(FileHarmonic {
-                    amplitude: plain(h.amplitude),
-                    wavenumber_x: plain(h.wavenumber_x),
-                    wavenumber_y: plain(h.wavenumber_y),
-                    phase_x: plain(h.phase_x),
-                    phase_y: plain(h.phase_y),
+                    amplitude: num(h.amplitude),
+                    wavenumber_x: num(h.wavenumber_x),
+                    wavenumber_y: num(h.wavenumber_y),
+                    phase_x: num(h.phase_x),
+                    phase_y: num(h.phase_y),
                 })
             })
             .collect(),

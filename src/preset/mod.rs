@@ -6,9 +6,13 @@ mod check;
 mod disk;
 mod explore_section;
 mod file;
+#[cfg(test)]
+mod hand_written_tests;
 mod key;
 mod params;
+mod plausible;
 mod wording;
+mod written;
 
 use std::fmt;
 use std::path::PathBuf;
@@ -21,7 +25,7 @@ use crate::physics::spatial::{SpatialInputs, StateAt};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
-pub use check::{load, parse};
+pub use check::{load, load_with_warnings, parse, parse_with_warnings};
 pub use disk::{MAX_PRESET_BYTES, write_atomically};
 pub use explore_section::Explore;
 pub use file::{SaveTarget, resolve_save_path, save, to_toml};

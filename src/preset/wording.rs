@@ -7,7 +7,7 @@ use serde::de::DeserializeOwned;
 
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
-use crate::preset::Problem;
+use crate::preset::{Problem, written};
 
 /// The reason of a TOML or serde error in words. `before` is the file's text up to the start of
 /// the error's span, so that the key whose value is wrong can be named.
@@ -25,7 +25,7 @@ pub(super) fn reason(message: &str, before: &str) -> String {
         match rest.split_once(", expected ") {
             Some((found, wanted)) => with_key(format!(
                 "expected {}, found {}",
-                expected(wanted, key),
+                expected(wanted, key, before),
                 found_words(found)
             )),
             None => with_key(rest.to_string()),
@@ -105,8 +105,17 @@ fn found_words(found: &str) -> String {
     }
 }
 
-fn expected(wanted: &str, key: Option<&str>) -> String {
+fn expected(wanted: &str, key: Option<&str>, before: &str) -> String {
     match wanted {
+        written::EXPECTING => {
+            let example = key
+                .and_then(|k| written::key_in_section(before, k))
+                .map_or_else(
+                    || "e.g. 2.0e-3 or \"2 mm\"".into(),
+                    |p| written::example(p.key),
+                );
+            format!("{wanted} ({example})")
+        }
         "f64" => "a number (SI units, e.g. 3.0e9)".into(),
         "i64" => "a whole number".into(),
         "a string" => "text in quotes".into(),

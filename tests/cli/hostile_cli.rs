@@ -89,8 +89,9 @@ fn the_corpus_gives_its_exit_codes_and_messages() {
         (
             "modulus-as-text.toml",
             2,
-            "modulus-as-text.toml:14: youngs_modulus: expected a number (SI units, e.g. 3.0e9), \
-             found the text \"3 GPa\"",
+            "modulus-as-text.toml:14: youngs_modulus = \"3 GigaPa\": '3 GigaPa': unknown unit; \
+             write a plain number or a prefixed Pa (e.g. kPa, MPa); e.g. youngs_modulus = \"1 GPa\" \
+             or 1e9",
         ),
         (
             "too-many-harmonics.toml",

@@ -9,3 +9,4 @@ mod closed_stdout;
 mod common;
 mod hostile_cli;
 mod quantities;
+mod solve_output;

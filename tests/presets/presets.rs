@@ -105,7 +105,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&wrong_type),
         format!(
-            "lab/broken.toml:{}: radius: expected a number (SI units, e.g. 3.0e9), found the text \"big\"",
+            "lab/broken.toml:{}: radius = \"big\": 'big' is not a number; e.g. radius = \"10 mm\" or 1e-2",
             line_of(&wrong_type, "radius")
         )
     );
