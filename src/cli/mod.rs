@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use clap::ValueEnum;
 
 use wearlab::finite;
+use wearlab::physics::SolveError;
 use wearlab::preset::{self, Preset};
 
 pub mod explorer;
@@ -33,6 +34,15 @@ pub enum Format {
 /// Writes a line on stderr; a closed or full stderr cannot be told, so its error is dropped.
 pub fn say(message: &str) {
     let _ = writeln!(io::stderr(), "{message}");
+}
+
+/// A solver's refusal said on stderr, as exit 2 (invalid input) or 3 (no solution).
+pub fn solver_failure(e: SolveError) -> ExitCode {
+    say(&format!("error: {e}"));
+    match e {
+        SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
+        SolveError::NoSolution(_) => ExitCode::from(EXIT_UNSOLVABLE),
+    }
 }
 
 /// The preset at `path`, or exit 2 with the file's error said; the warnings of a valid file

@@ -7,7 +7,6 @@ use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use wearlab::physics::SolveError;
 use wearlab::physics::limits::{self, Limit};
 use wearlab::preset::{Preset, Problem};
 use wearlab::{finite, report, spatial_report};
@@ -15,7 +14,7 @@ use wearlab::{finite, report, spatial_report};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::{
-    EXIT_INVALID, EXIT_UNSOLVABLE, Format, finished, load_with, print, say, solve_output, within,
+    EXIT_INVALID, Format, finished, load_with, print, say, solve_output, solver_failure, within,
 };
 
 /// Profile points when `--points` is not given.
@@ -48,14 +47,6 @@ pub fn parse_probe(text: &str) -> Result<[f64; 2], String> {
             number(y, "y", &limits::PROBE)?,
         ]),
         _ => Err(format!("'{text}' is not a point X,Y in metres")),
-    }
-}
-
-pub fn solver_failure(e: SolveError) -> ExitCode {
-    say(&format!("error: {e}"));
-    match e {
-        SolveError::InvalidInput(_) => ExitCode::from(EXIT_INVALID),
-        SolveError::NoSolution(_) => ExitCode::from(EXIT_UNSOLVABLE),
     }
 }
 

@@ -11,8 +11,7 @@ use wearlab::preset::Preset;
 use wearlab::sweeps::QuantityKey;
 use wearlab::sweeps::point;
 
-use super::solve::solver_failure;
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, print, say};
+use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, print, say, solver_failure};
 
 /// Reads `--output`: names of the preset's quantities, separated by commas. Err names the
 /// quantities there are.
