@@ -2,7 +2,7 @@
 //! explorer's form all check against these and quote `allowed` when a value is rejected.
 //!
 //! The ranges cover every real contact by orders of magnitude and are chosen so that no formula
-//! of the solvers overflows or divides by zero (the README's parameter section states them too).
+//! of the solvers overflows or divides by zero (`docs/presets.md` states them too).
 //! The largest products:
 //! - plane modulus m = pi E/(2 (1 - nu^2)) in [1.6e2, 2.1e13] Pa; the Hertz width sqrt(8 R P/m)
 //!   in [6e-16, 2.3e8] m, and the wide model's search spans 1e-4 .. 1e6 times it, so L^4 (the

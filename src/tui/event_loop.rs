@@ -18,7 +18,7 @@ use crate::tui::update::update;
 use crate::tui::view::{RenderOptions, view};
 
 /// How often time advances while playing: five frames a second, so that the pressure map
-/// writes well under 60 KB/s to a terminal over SSH (README, "Speed"; tests/bytes.rs).
+/// writes well under 60 KB/s to a terminal over SSH (`docs/performance.md`, "Bytes to the terminal"; tests/bytes.rs).
 pub const FRAME: Duration = Duration::from_millis(200);
 
 /// What wakes the loop.

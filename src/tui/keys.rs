@@ -1,6 +1,6 @@
 //! Every key of the explorer in one place: the bindings of the main screen (key, action, help
 //! line, footer item) here, the keys of the prompts in `prompt_keys`. Key handling,
-//! the `?` help, the footers and README's key table are all drawn from these tables.
+//! the `?` help, the footers and docs/guide.md's key table are all drawn from these tables.
 
 use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -165,13 +165,13 @@ impl Key {
 pub struct Binding {
     /// The keys and their actions.
     pub keys: &'static [(Key, Action)],
-    /// How the help and README write the keys.
+    /// How the help and docs/guide.md write the keys.
     pub names: &'static str,
-    /// What they do, for the help and README.
+    /// What they do, for the help and docs/guide.md.
     pub help: &'static str,
     /// The footer item: keys, word, a shorter word for narrow terminals, and the order in which
     /// items take their shorter word when the footer does not fit (0: never); no keys: none
-    /// (the help and README still list the binding).
+    /// (the help and docs/guide.md still list the binding).
     pub footer: (&'static str, &'static str, &'static str, u8),
     /// The problem the binding applies to (None: both).
     pub only: Option<Problem>,

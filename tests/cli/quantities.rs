@@ -144,19 +144,19 @@ fn the_wear_at_the_tip_is_half_the_wear_of_a_symmetric_contact() {
 }
 
 #[test]
-fn the_readme_lists_every_output() {
-    let readme = std::fs::read_to_string("README.md").unwrap();
+fn the_cli_page_lists_every_output() {
+    let page = std::fs::read_to_string("docs/cli.md").unwrap();
     for file in ["hertz-check.toml", "dispersion.toml"] {
         for q in QuantityKey::all(&preset(file)) {
             let name = q.quantity().name;
             let listed = match name.strip_prefix("harmonics.N.") {
                 Some(field) => {
-                    readme.contains(&format!("`harmonics.N.{field}`"))
-                        || readme.contains(&format!("`.{field}`"))
+                    page.contains(&format!("`harmonics.N.{field}`"))
+                        || page.contains(&format!("`.{field}`"))
                 }
-                None => readme.contains(&format!("`{name}`")),
+                None => page.contains(&format!("`{name}`")),
             };
-            assert!(listed, "README.md does not list the output {name}");
+            assert!(listed, "docs/cli.md does not list the output {name}");
         }
     }
 }

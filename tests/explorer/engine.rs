@@ -342,7 +342,7 @@ fn the_running_in_reports_its_progress() {
 #[test]
 fn the_worker_drops_a_running_in_when_a_newer_request_arrives() {
     // an egg-box at an eighth of its complete-contact load, with friction, on 128 x 128 nodes:
-    // its running-in takes a few hundred wear steps of ~20 ms (README, "Speed")
+    // its running-in takes a few hundred wear steps of ~20 ms (`docs/performance.md`, "Benchmarks")
     let mut slow = bundled("jgh-egg-box.toml");
     slow.spatial.mean_pressure = 1.2e7;
     slow.friction.coefficient = 0.3;

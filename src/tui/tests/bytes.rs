@@ -69,7 +69,7 @@ fn playing(file: &str, frames: usize, s: RenderOptions) -> (usize, Vec<usize>) {
 #[test]
 fn playing_the_pressure_map_writes_under_60_kb_a_second() {
     let per_second = 1000 / FRAME.as_millis() as usize;
-    // measured over 20 frames (README): dispersion 0.5 kB a frame on average, at most 1.7 kB,
+    // measured over 20 frames: dispersion 0.5 kB a frame on average, at most 1.7 kB,
     // wave-thick-layer 0.6 and 1.9, jgh-egg-box 0.6 and 1.4, contact-lost 0.6 and 1.7: at most
     // 10 kB/s at five frames a second
     for file in [

@@ -1,4 +1,4 @@
-//! The key table against itself, the help, the footers and README.
+//! The key table against itself, the help, the footers and docs/guide.md.
 
 use std::collections::HashSet;
 
@@ -112,12 +112,12 @@ fn the_model_key_names_every_model() {
 }
 
 #[test]
-fn readme_key_table_is_the_key_table() {
-    let readme = include_str!("../../../README.md");
-    let start = readme
+fn the_guide_key_table_is_the_key_table() {
+    let guide = include_str!("../../../docs/guide.md");
+    let start = guide
         .find("| key | what it does |")
-        .expect("README has the key table");
-    let rows: Vec<(String, String)> = readme[start..]
+        .expect("docs/guide.md has the key table");
+    let rows: Vec<(String, String)> = guide[start..]
         .lines()
         .skip(2)
         .take_while(|l| l.starts_with('|'))

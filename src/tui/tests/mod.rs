@@ -1,5 +1,5 @@
 //! Tests of the explorer: `update` for every action of the key table, the key table against the
-//! help, footer and README, the charts' export against their builders, results labelled by their
+//! help, footer and docs/guide.md, the charts' export against their builders, results labelled by their
 //! own inputs, the loop, and screen snapshots (TestBackend + insta).
 
 mod ascii;
