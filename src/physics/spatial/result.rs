@@ -52,7 +52,8 @@ pub struct ContactResult {
     /// Fraction of the cell in contact (p > 0).
     pub fraction: f64,
     /// The simulated time [s] at which the running-in makes the contact complete; null when it is
-    /// complete at t = 0, or still partial at the end of the running-in (README, partial contact).
+    /// complete at t = 0, or still partial at the end of the running-in (its bound:
+    /// docs/models.md, "Time to complete contact").
     pub time_to_complete: Option<f64>,
     /// The estimated time-stepping error of the running-in at t: the sum of its steps' local
     /// error estimates, relative to the rms of the punch shape at t = 0 (it bounds the relative
