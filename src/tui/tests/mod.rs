@@ -24,6 +24,8 @@ mod update;
 mod validity;
 mod widgets;
 
+use std::time::{Duration, Instant};
+
 use crate::engine::{Answer, Engine};
 use crate::preset::Preset;
 use ratatui::Terminal;
@@ -74,11 +76,19 @@ fn select(app: &mut App, label: &str, harmonic: Option<usize>) {
 
 /// Every answer the engine gives for the solve commands, all stages, as the worker would send.
 fn answers(engine: &mut Engine, commands: &[Command]) -> Vec<Answer> {
+    answers_within(engine, commands, Duration::MAX)
+}
+
+/// As [`answers`], each solve stopped between two of its steps once it has run for `patience`
+/// (as the worker stops when a newer request waits); the engine keeps what it did.
+fn answers_within(engine: &mut Engine, commands: &[Command], patience: Duration) -> Vec<Answer> {
     let mut out = Vec::new();
     for c in commands {
         if let Command::Solve(generation, request) = c {
             let request = std::sync::Arc::new((**request).clone());
-            engine.run_staged(&request, |output, complete| {
+            let start = Instant::now();
+            let impatient = || start.elapsed() > patience;
+            engine.run_cancellable(&request, &impatient, |output, complete| {
                 out.push(Answer {
                     generation: *generation,
                     request: request.clone(),

@@ -11,14 +11,14 @@ use std::path::{Component, Path};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
+use crate::engine::Engine;
 use crate::engine::sweep_worker::{SweepAnswer, SweepRequest, SweepResult, explore};
-use crate::engine::{Answer, Engine};
 use crate::preset::BUNDLED;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use super::PLAIN;
+use super::{PLAIN, answers_within};
 use crate::tui::app::{App, Command, Msg, Places};
 use crate::tui::effects;
 use crate::tui::update::update;
@@ -210,7 +210,7 @@ impl Monkey {
                 if work.is_empty() {
                     return;
                 }
-                for a in self.answers(&work) {
+                for a in answers_within(&mut self.engine, &work, PATIENCE) {
                     commands.extend(update(&mut self.app, Msg::Answer(Box::new(a))));
                 }
                 for c in work {
@@ -254,30 +254,6 @@ impl Monkey {
             }
         }
         panic!("commands kept coming after 100 rounds");
-    }
-
-    /// The engine's answers to the solve commands, all stages, as the worker sends them, until
-    /// the monkey's patience runs out.
-    fn answers(&mut self, commands: &[Command]) -> Vec<Answer> {
-        let mut out = Vec::new();
-        for c in commands {
-            if let Command::Solve(generation, request) = c {
-                let request = std::sync::Arc::new((**request).clone());
-                let start = Instant::now();
-                let impatient = || start.elapsed() > PATIENCE;
-                self.engine
-                    .run_cancellable(&request, &impatient, |output, complete| {
-                        out.push(Answer {
-                            generation: *generation,
-                            request: request.clone(),
-                            output,
-                            complete,
-                        });
-                        true
-                    });
-            }
-        }
-        out
     }
 
     fn explore(&mut self, generation: u64, request: SweepRequest) -> Vec<Command> {
