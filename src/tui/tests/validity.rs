@@ -100,3 +100,21 @@ fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
         .collect();
     assert_eq!(one, ["! +2 more (a taller window shows them)"]);
 }
+
+#[test]
+fn the_operating_point_and_its_verdict_stay_when_the_cursor_reads_pins_at_80x24() {
+    let mut app = solved("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('x'));
+    press(&mut app, KeyCode::Char('c'));
+    let s = status(&app, 80, 24);
+    // the cursor's values and the pinned curve's do not all fit in the six rows: counted
+    for shown in ["cursor x = ", "mu* = 0.299822", "valid: ", "+2 more"] {
+        assert!(s.contains(shown), "{shown} missing:\n{s}");
+    }
+    // with room for all of them, nothing is counted as hidden
+    let tall = status(&app, 120, 40);
+    assert!(
+        tall.contains("[1] shear q1") && !tall.contains("more"),
+        "{tall}"
+    );
+}

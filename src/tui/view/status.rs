@@ -21,7 +21,7 @@ use crate::tui::on_screen::OnScreen;
 use crate::tui::view::status_values::{mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
-use crate::tui::view::wrapping::pack;
+use crate::tui::view::wrapping::{pack, pack_within};
 use crate::tui::view::{contact_status, groups_status};
 use crate::tui::view::{note, wrap};
 
@@ -38,29 +38,38 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
         return;
     };
     let width = inner.width as usize;
-    // the cursor readout first, each value whole
-    let readout = match app.explore.view {
-        Some(_) => crate::tui::view::sweep::readout(app),
-        None => cursor_readout(app, answer).or_else(|| crate::tui::view::map_readout::status(app)),
+    let rows = inner.height as usize;
+    let selected = app.row().harmonic_index();
+    let main = |height: usize| {
+        if app.explore.dimensionless {
+            groups_status::lines(&answer.output, selected, style, width, height)
+        } else {
+            per_output(
+                &answer.output,
+                style,
+                |p, check| plane(p, check, style, width, height),
+                |out| spatial(out, selected, style, width, height),
+            )
+        }
+    };
+    // the cursor readout first, each value whole; beside a chart of the operating point, the
+    // point and one line of its verdict are always shown and the readout takes the rows left
+    // (its hidden values counted); under a sweep or a map, whose chart marks the point, the
+    // readout of the sweep comes first
+    let (readout, room) = match app.explore.view {
+        Some(_) => (crate::tui::view::sweep::readout(app), rows),
+        None => (
+            cursor_readout(app, answer).or_else(|| crate::tui::view::map_readout::status(app)),
+            rows.saturating_sub(main(0).len() + 1),
+        ),
     };
     let mut lines: Vec<Line> = readout
-        .map(|items| pack(&items, width, "  "))
+        .map(|items| pack_within(&items, width, "  ", room))
         .unwrap_or_default()
         .into_iter()
         .map(|l| Line::styled(l, style.cursor()))
         .collect();
-    let height = (inner.height as usize).saturating_sub(lines.len());
-    let selected = app.row().harmonic_index();
-    lines.extend(if app.explore.dimensionless {
-        groups_status::lines(&answer.output, selected, style, width, height)
-    } else {
-        per_output(
-            &answer.output,
-            style,
-            |p, check| plane(p, check, style, width, height),
-            |out| spatial(out, selected, style, width, height),
-        )
-    });
+    lines.extend(main(rows.saturating_sub(lines.len())));
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());

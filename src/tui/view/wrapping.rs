@@ -40,6 +40,24 @@ pub fn pack(items: &[String], width: usize, indent: &str) -> Vec<String> {
     lines
 }
 
+/// `pack` in at most `rows` lines: where the items do not fit, the first ones that do with a
+/// count of the others ("+2 more") after them; no line at all when not even that fits.
+pub fn pack_within(items: &[String], width: usize, indent: &str, rows: usize) -> Vec<String> {
+    let lines = pack(items, width, indent);
+    if lines.len() <= rows {
+        return lines;
+    }
+    (0..items.len())
+        .rev()
+        .map(|shown| {
+            let mut kept = items[..shown].to_vec();
+            kept.push(format!("+{} more", items.len() - shown));
+            pack(&kept, width, indent)
+        })
+        .find(|lines| lines.len() <= rows)
+        .unwrap_or_default()
+}
+
 /// Wraps `text` into lines of at most `width` columns at spaces, never between a number and its
 /// unit ("5 MPa", "1 um"), inside a key pair ("[ ]", "{ }"), on either side of a relation
 /// ("t = 62.6 s", "residual < 1e-14"), inside a group's name of two words ("mu chi", "P/(m R)":
