@@ -216,6 +216,7 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
         .undo
         .push((std::mem::replace(&mut app.doc.preset, preset), change));
     app.doc.path = entry.path;
+    app.doc.source = Some(entry.source.clone());
     app.doc.dirty = false;
     app.ui.selected = 0;
     app.ui.chart = Chart::first(app.doc.preset.problem);

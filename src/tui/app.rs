@@ -21,6 +21,8 @@ pub struct Document {
     pub preset: Preset,
     /// The file it came from or was saved to.
     pub path: Option<PathBuf>,
+    /// Where it was read, as `i` says it: its file, or "bundled: <file>" (None: not known).
+    pub source: Option<String>,
     /// Edited since the last save or load.
     pub dirty: bool,
     /// Earlier presets with the change that left each, newest last.
@@ -79,10 +81,13 @@ pub enum Mode {
     Picker {
         /// The presets offered.
         entries: Vec<PickerEntry>,
-        /// The highlighted one.
+        /// The highlighted one (an index of `entries`, one that matches `filter`).
         selected: usize,
         /// Lines of its description scrolled off the top (PgUp/PgDn).
         scroll: u16,
+        /// The text typed: the list shows the entries it matches (`PickerEntry::matches`); a
+        /// path to a file opens that file.
+        filter: String,
     },
     /// Typing a file name to save to.
     SaveAs(String),
@@ -109,6 +114,26 @@ pub struct PickerEntry {
     pub path: Option<PathBuf>,
     /// The preset, or why it could not be read.
     pub preset: Result<Preset, String>,
+    /// The heading it is listed under: where it comes from ("bundled with wearlab", a folder).
+    pub folder: String,
+}
+
+impl PickerEntry {
+    /// Whether every word of `filter` is in its title or its source, in any case.
+    pub fn matches(&self, filter: &str) -> bool {
+        let text = format!("{} {}", self.title, self.source).to_lowercase();
+        filter
+            .to_lowercase()
+            .split_whitespace()
+            .all(|word| text.contains(word))
+    }
+}
+
+/// The entries `filter` matches, as indices of `entries`.
+pub fn found(entries: &[PickerEntry], filter: &str) -> Vec<usize> {
+    (0..entries.len())
+        .filter(|&i| entries[i].matches(filter))
+        .collect()
 }
 
 /// The UI state.
@@ -212,6 +237,8 @@ pub enum Msg {
     Answer(Box<Answer>),
     /// The presets to offer in the picker.
     PresetsListed(Vec<PickerEntry>),
+    /// A preset file named by a path typed in the picker, read.
+    PresetRead(Box<PickerEntry>),
     /// A save needs confirmation: the file exists.
     SaveExists(SaveTarget),
     /// A save finished: the preset written, or why not.
@@ -229,8 +256,11 @@ pub enum Msg {
 pub enum Command {
     /// Solve this request (generation number attached).
     Solve(u64, Box<Request>),
-    /// List the bundled presets and the user's folder, answered by `PresetsListed`.
+    /// List the bundled presets, the shared folders and the user's folder, answered by
+    /// `PresetsListed`.
     ListPresets,
+    /// Read the preset file at this path, answered by `PresetRead`.
+    ReadPreset(PathBuf),
     /// Write the preset; refuse an existing file unless `overwrite`. Answered by `Saved` or
     /// `SaveExists`.
     Save {
@@ -265,6 +295,9 @@ pub struct Places {
     pub home: Option<PathBuf>,
     /// The user's preset folder (bare names are saved there; the picker lists it).
     pub presets: Option<PathBuf>,
+    /// Folders of presets shared with the user, listed by the picker after the bundled ones:
+    /// those of `WEARLAB_PRESETS`, then the folder of the file the explorer was started on.
+    pub shared: Vec<PathBuf>,
 }
 
 /// The whole model.
@@ -305,6 +338,7 @@ impl App {
             },
             doc: Document {
                 preset,
+                source: path.as_ref().map(|p| p.display().to_string()),
                 path,
                 dirty: false,
                 undo: Vec::new(),

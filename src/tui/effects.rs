@@ -6,43 +6,88 @@ use std::path::{Path, PathBuf};
 
 use crate::preset::{self, BUNDLED, Preset, SaveTarget};
 
-use crate::tui::app::{Msg, PickerEntry};
+use crate::tui::app::{Msg, PickerEntry, Places};
 
-/// The picker's entries: the bundled presets, then the `.toml` files of the user's folder, each
-/// titled by its file and its name ("my lab.toml: Hertz check: ...").
-pub fn list_presets(user_dir: Option<&Path>) -> Msg {
-    let entry = |title_if_broken: &str, source, path, preset: Result<Preset, String>| PickerEntry {
-        title: preset
-            .as_ref()
-            .map_or_else(|_| title_if_broken.to_string(), |p| p.name.clone()),
-        source,
-        path,
-        preset,
-    };
+/// The heading of the bundled presets in the picker.
+pub const BUNDLED_HEADING: &str = "bundled with wearlab";
+
+/// The picker's entries: the bundled presets, then the `.toml` files of each shared folder, then
+/// those of the user's folder (each folder once, under its path), each titled by its file and
+/// its name ("hertz-check.toml: Hertz check: ..."): a saved copy keeps the name it was made from.
+pub fn list_presets(places: &Places) -> Msg {
     let mut out: Vec<PickerEntry> = BUNDLED
         .iter()
         .map(|b| {
             let p = b.load().map_err(|e| e.to_string());
-            entry(b.file, format!("bundled: {}", b.file), None, p)
+            let mut e = entry(format!("bundled: {}", b.file), None, p, BUNDLED_HEADING);
+            e.title = format!("{}: {}", b.file, e.title);
+            e
         })
         .collect();
-    if let Some(Ok(read)) = user_dir.map(std::fs::read_dir) {
+    // each folder once; the user's own is listed last, as theirs, even when also shared
+    let canonical = |f: &Path| std::fs::canonicalize(f).unwrap_or_else(|_| f.to_path_buf());
+    let mine = places.presets.as_deref();
+    let mut seen: Vec<PathBuf> = mine.map(canonical).into_iter().collect();
+    let mut folders: Vec<(&Path, String)> = Vec::new();
+    for f in &places.shared {
+        if !seen.contains(&canonical(f)) {
+            seen.push(canonical(f));
+            folders.push((f.as_path(), format!("shared: {}", f.display())));
+        }
+    }
+    folders.extend(mine.map(|f| (f, format!("your presets: {}", f.display()))));
+    for (folder, heading) in folders {
+        let Ok(read) = std::fs::read_dir(folder) else {
+            continue;
+        };
         let mut files: Vec<PathBuf> = read
             .filter_map(|e| e.ok().map(|e| e.path()))
             .filter(|p| p.extension().is_some_and(|x| x == "toml"))
             .collect();
         files.sort();
-        for path in files {
-            let p = preset::load(&path).map_err(|e| e.to_string());
-            let source = path.display().to_string();
-            let mut e = entry("(unreadable)", source, Some(path.clone()), p);
-            // the file first: a saved copy of a bundled preset keeps its name
-            let file = path.file_name().unwrap_or_default().to_string_lossy();
-            e.title = format!("{file}: {}", e.title);
-            out.push(e);
-        }
+        out.extend(files.into_iter().map(|path| read_entry(&path, &heading)));
     }
     Msg::PresetsListed(out)
+}
+
+/// The preset file at `path`, typed in the picker.
+pub fn read_preset(path: PathBuf) -> Msg {
+    let folder = path
+        .parent()
+        .map_or_else(String::new, |f| f.display().to_string());
+    Msg::PresetRead(Box::new(read_entry(&path, &folder)))
+}
+
+/// A file's entry, titled by its file and its name.
+fn read_entry(path: &Path, heading: &str) -> PickerEntry {
+    let p = preset::load(path).map_err(|e| e.to_string());
+    let mut e = entry(
+        path.display().to_string(),
+        Some(path.to_path_buf()),
+        p,
+        heading,
+    );
+    let file = path.file_name().unwrap_or_default().to_string_lossy();
+    e.title = format!("{file}: {}", e.title);
+    e
+}
+
+/// An entry titled by its preset's name ("(unreadable)" when it cannot be read).
+fn entry(
+    source: String,
+    path: Option<PathBuf>,
+    preset: Result<Preset, String>,
+    heading: &str,
+) -> PickerEntry {
+    PickerEntry {
+        title: preset
+            .as_ref()
+            .map_or_else(|_| "(unreadable)".to_string(), |p| p.name.clone()),
+        source,
+        path,
+        preset,
+        folder: heading.to_string(),
+    }
 }
 
 /// Saves `preset` to the target: refuses a missing folder (except the user's preset folder,

@@ -161,9 +161,8 @@ impl<B: Backend> Loop<B> {
                         self.explorer.submit(generation, *request);
                         continue;
                     }
-                    Command::ListPresets => {
-                        effects::list_presets(self.app.places.presets.as_deref())
-                    }
+                    Command::ListPresets => effects::list_presets(&self.app.places),
+                    Command::ReadPreset(path) => effects::read_preset(path),
                     Command::Save {
                         target,
                         preset,

@@ -284,7 +284,7 @@ pub const BINDINGS: [Binding; 22] = [
     ),
     binding(
         &[(ch('o'), Action::Open)],
-        "o", "open a preset: bundled or your folder, each with its whole description (PgUp/PgDn scroll it; asks first when there are unsaved edits)",
+        "o", "open a preset: bundled, shared (WEARLAB_PRESETS) or yours; type to find one or a path to a file, each with its whole description (PgUp/PgDn scroll it; asks first when there are unsaved edits)",
         ("o", "open", "", 5), None,
     ),
     binding(

@@ -14,6 +14,7 @@ pub mod glossary;
 pub mod keys;
 pub mod map_cursor;
 pub mod on_screen;
+pub mod picker_keys;
 pub mod prompt_keys;
 #[cfg(unix)]
 pub mod signals;
@@ -28,7 +29,7 @@ pub mod view;
 mod tests;
 
 use std::io;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::mpsc::channel;
 
 use crate::preset::Preset;
@@ -56,6 +57,30 @@ pub fn user_preset_dir() -> Option<PathBuf> {
     dirs::data_dir().map(|d| d.join("wearlab").join("presets"))
 }
 
+/// The environment variable naming folders of shared presets, separated by ':' as in PATH.
+pub const SHARED_PRESETS_VARIABLE: &str = "WEARLAB_PRESETS";
+
+/// The folders of shared presets: those of `variable` (empty parts skipped), then the folder of
+/// the file the explorer was started on.
+pub fn shared_folders(
+    variable: Option<std::ffi::OsString>,
+    started_on: Option<&Path>,
+) -> Vec<PathBuf> {
+    let mut folders: Vec<PathBuf> = variable
+        .map(|v| {
+            std::env::split_paths(&v)
+                .filter(|p| !p.as_os_str().is_empty())
+                .collect()
+        })
+        .unwrap_or_default();
+    let started = started_on.map(|p| match p.parent() {
+        Some(f) if !f.as_os_str().is_empty() => f.to_path_buf(),
+        _ => PathBuf::from("."),
+    });
+    folders.extend(started.filter(|f| !folders.contains(f)));
+    folders
+}
+
 /// Runs the explorer until the user quits or a signal of `signals::ENDING` arrives. The terminal
 /// is restored on every exit path: a quit, an error, one of those signals, and a panic
 /// (ratatui's init installs a hook that restores it first).
@@ -68,6 +93,7 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
     let places = Places {
         home: dirs::home_dir(),
         presets: user_preset_dir(),
+        shared: shared_folders(std::env::var_os(SHARED_PRESETS_VARIABLE), path.as_deref()),
     };
     let (tx, rx) = channel();
     // before the terminal changes, so that no moment is left where a signal kills it unrestored
@@ -88,8 +114,11 @@ pub fn run(preset: Preset, path: Option<PathBuf>, options: Options) -> io::Resul
                 }
             }
         });
-        Loop::new(terminal, App::new(preset, path, places), render, tx, rx)
-            .and_then(|mut l| l.run())
+        let mut app = App::new(preset, path, places);
+        if app.doc.source.is_none() {
+            app.doc.source = Some(format!("bundled: {}", crate::preset::BUNDLED[0].file));
+        }
+        Loop::new(terminal, app, render, tx, rx).and_then(|mut l| l.run())
     });
     restore(options.mouse);
     #[cfg(unix)]

@@ -19,6 +19,10 @@ pub enum PromptAction {
     PageUp,
     /// A page down.
     PageDown,
+    /// The first entry of a list, or the top of a text.
+    First,
+    /// The last entry of a list, or the end of a text.
+    Last,
     /// Apply / open / save.
     Accept,
     /// Close without doing anything.
@@ -54,7 +58,7 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 34] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 39] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -62,20 +66,25 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 34] = [
     (Prompt::List, ch('k'), PromptAction::Up, ""),
     (Prompt::List, key(KeyCode::Down), PromptAction::Down, ""),
     (Prompt::List, ch('j'), PromptAction::Down, ""),
+    (Prompt::List, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::List, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::List, key(KeyCode::Enter), PromptAction::Accept, "⏎ take"),
     (Prompt::List, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-    (Prompt::Picker, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
-    (Prompt::Picker, ch('k'), PromptAction::Up, ""),
+    (Prompt::Picker, key(KeyCode::Up), PromptAction::Up, "type: find  ↑↓ Home End"),
     (Prompt::Picker, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::Picker, ch('j'), PromptAction::Down, ""),
+    (Prompt::Picker, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Picker, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::Picker, key(KeyCode::PageUp), PromptAction::PageUp, "PgUp PgDn text"),
     (Prompt::Picker, key(KeyCode::PageDown), PromptAction::PageDown, ""),
+    (Prompt::Picker, key(KeyCode::Backspace), PromptAction::Backspace, ""),
     (Prompt::Picker, key(KeyCode::Enter), PromptAction::Accept, "⏎ open"),
     (Prompt::Picker, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
-    (Prompt::Help, key(KeyCode::Up), PromptAction::Up, "↑↓ PgUp PgDn scroll"),
+    (Prompt::Help, key(KeyCode::Up), PromptAction::Up, "↑↓ PgUp PgDn Home End scroll"),
     (Prompt::Help, key(KeyCode::Down), PromptAction::Down, ""),
     (Prompt::Help, key(KeyCode::PageUp), PromptAction::PageUp, ""),
     (Prompt::Help, key(KeyCode::PageDown), PromptAction::PageDown, ""),
+    (Prompt::Help, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Help, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::Help, key(KeyCode::Esc), PromptAction::Cancel, "Esc or ? close"),
     (Prompt::Help, ch('?'), PromptAction::Cancel, ""),
     (Prompt::Help, ch('q'), PromptAction::Cancel, ""),
@@ -108,4 +117,18 @@ pub fn prompt_footer(prompt: Prompt) -> String {
         .chain(["Ctrl-C quit"])
         .collect::<Vec<_>>()
         .join("  ")
+}
+
+/// The scroll of a text window (the help, the preset's description) after a key, stopping at
+/// `last`; None closes it.
+pub fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
+    match prompt_action(Prompt::Help, key)? {
+        PromptAction::Up => Some(scroll.min(last).saturating_sub(1)),
+        PromptAction::Down => Some(scroll.saturating_add(1).min(last)),
+        PromptAction::PageUp => Some(scroll.min(last).saturating_sub(10)),
+        PromptAction::PageDown => Some(scroll.saturating_add(10).min(last)),
+        PromptAction::First => Some(0),
+        PromptAction::Last => Some(last),
+        _ => None,
+    }
 }

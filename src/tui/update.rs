@@ -11,7 +11,9 @@ use crate::tui::actions::{act, apply, export, open, quit};
 use crate::tui::app::{App, Command, Mode, Msg};
 use crate::tui::chart_keys;
 use crate::tui::keys;
+use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};
+use crate::tui::view::windows_on_last_screen;
 
 impl App {
     /// The commands that ask for the first solve (and the first sweep, when the preset opens on
@@ -44,9 +46,11 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
                 entries,
                 selected,
                 scroll: 0,
+                filter: String::new(),
             };
             Vec::new()
         }
+        Msg::PresetRead(entry) => picker_keys::chosen(app, *entry),
         Msg::SaveExists(target) => {
             app.ui.mode = Mode::ConfirmOverwrite(target);
             Vec::new()
@@ -57,6 +61,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
                     // edits made while the file was written stay unsaved
                     app.doc.dirty = app.doc.preset != *preset;
                     app.say(format!("saved {}", target.path.display()));
+                    app.doc.source = Some(target.path.display().to_string());
                     app.doc.path = Some(target.path);
                 }
                 Err(why) => app.complain(format!("not saved: {why}")),
@@ -162,65 +167,23 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         }
         Mode::Help(scroll) => {
             // scrolling stops at the end of the text on the last drawn screen
-            let last = crate::tui::view::popups::help_last(app, windows(app));
-            app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::Help);
+            let last = crate::tui::view::popups::help_last(app, windows_on_last_screen(app));
+            app.ui.mode =
+                prompt_keys::scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::Help);
             Vec::new()
         }
         Mode::About(scroll) => {
-            let last = crate::tui::view::popups::about_last(app, windows(app));
-            app.ui.mode = scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::About);
+            let last = crate::tui::view::popups::about_last(app, windows_on_last_screen(app));
+            app.ui.mode =
+                prompt_keys::scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::About);
             Vec::new()
         }
         Mode::Picker {
             entries,
             selected,
             scroll,
-        } => match prompt_keys::prompt_action(Prompt::Picker, &key) {
-            Some(PromptAction::Accept) => {
-                app.ui.mode = Mode::Normal;
-                let Some(entry) = entries.get(selected).cloned() else {
-                    return Vec::new();
-                };
-                match &entry.preset {
-                    Err(why) => {
-                        // a broken file: say why, keep the current state
-                        app.complain(why.clone());
-                        Vec::new()
-                    }
-                    Ok(_) if app.doc.dirty => {
-                        app.ui.mode = Mode::ConfirmOpen(Box::new(entry));
-                        Vec::new()
-                    }
-                    Ok(_) => open(app, entry),
-                }
-            }
-            Some(PromptAction::Cancel) => {
-                app.ui.mode = Mode::Normal;
-                Vec::new()
-            }
-            Some(PromptAction::PageUp | PromptAction::PageDown) => {
-                // the description scrolls, stopping where its last line is at the bottom
-                let last = crate::tui::view::picker::last(&entries, selected, windows(app));
-                let scroll = scrolled(&key, scroll, last).unwrap_or(scroll);
-                app.ui.mode = Mode::Picker {
-                    entries,
-                    selected,
-                    scroll,
-                };
-                Vec::new()
-            }
-            action => {
-                let moved = selection_moved(selected, entries.len(), action);
-                // another preset's description starts at its top
-                let scroll = if moved == selected { scroll } else { 0 };
-                app.ui.mode = Mode::Picker {
-                    entries,
-                    selected: moved,
-                    scroll,
-                };
-                Vec::new()
-            }
-        },
+            filter,
+        } => picker_keys::key(app, key, entries, selected, scroll, filter),
         Mode::ConfirmOverwrite(target) => {
             app.ui.mode = Mode::Normal;
             if yes(&key) {
@@ -278,6 +241,8 @@ fn selection_moved(selected: usize, len: usize, action: Option<PromptAction>) ->
     match action {
         Some(PromptAction::Up) => selected.saturating_sub(1),
         Some(PromptAction::Down) => (selected + 1).min(len.saturating_sub(1)),
+        Some(PromptAction::First) => 0,
+        Some(PromptAction::Last) => len.saturating_sub(1),
         _ => selected,
     }
 }
@@ -374,27 +339,4 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
             Vec::new()
         }
     }
-}
-
-/// The scroll of a text window (the help, the preset's description) after a key, stopping at
-/// `last`; None closes it.
-fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
-    match prompt_keys::prompt_action(Prompt::Help, key)? {
-        PromptAction::Up => Some(scroll.min(last).saturating_sub(1)),
-        PromptAction::Down => Some(scroll.saturating_add(1).min(last)),
-        PromptAction::PageUp => Some(scroll.min(last).saturating_sub(10)),
-        PromptAction::PageDown => Some(scroll.saturating_add(10).min(last)),
-        _ => None,
-    }
-}
-
-/// The area of the windows over the screen on the last drawn screen (`view::windows_area`; the
-/// message's length does not depend on `--ascii` but for "…", three columns).
-fn windows(app: &App) -> ratatui::layout::Rect {
-    let plain = crate::tui::view::RenderOptions {
-        ascii: false,
-        color: false,
-        truecolor: false,
-    };
-    crate::tui::view::windows_area(app, plain, app.ui.screen)
 }

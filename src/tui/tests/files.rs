@@ -14,7 +14,7 @@ fn o_lists_the_presets_and_asks_before_dropping_unsaved_edits() {
         press(&mut app, KeyCode::Char('o')),
         vec![Command::ListPresets]
     );
-    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(&Places::default()) else {
         panic!()
     };
     update(&mut app, Msg::PresetsListed(entries.clone()));
@@ -40,7 +40,7 @@ fn o_lists_the_presets_and_asks_before_dropping_unsaved_edits() {
 #[test]
 fn the_picker_opens_on_the_preset_shown() {
     // dispersion.toml opened: o highlighted the first bundled preset (polymer-coating)
-    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(&Places::default()) else {
         panic!()
     };
     let mut app = app("dispersion.toml");
@@ -62,6 +62,7 @@ fn a_broken_preset_in_the_picker_shows_its_error_and_keeps_the_state() {
         source: "lab/zz.toml".into(),
         path: Some("lab/zz.toml".into()),
         preset: Err("lab/zz.toml:3: missing field `poisson_ratio`".into()),
+        folder: "lab".into(),
     };
     update(&mut app, Msg::PresetsListed(vec![broken]));
     assert!(press(&mut app, KeyCode::Enter).is_empty());
@@ -237,6 +238,7 @@ fn ctrl_c_quits_from_every_mode() {
         source: "s".into(),
         path: None,
         preset: Ok(bundled("hertz-check.toml")),
+        folder: "lab".into(),
     };
     let modes = [
         Mode::Normal,
@@ -247,6 +249,7 @@ fn ctrl_c_quits_from_every_mode() {
             entries: vec![entry.clone()],
             selected: 0,
             scroll: 0,
+            filter: String::new(),
         },
         Mode::SaveAs("my lab".into()),
         Mode::ConfirmOverwrite(target),
@@ -278,7 +281,7 @@ fn ctrl_c_quits_from_every_mode() {
 fn the_picker_shows_every_description_whole() {
     // every line of each bundled preset's wrapped description is on screen at one of the
     // scroll positions PgDn reaches; at 120x40 each fits without scrolling
-    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(&Places::default()) else {
         panic!()
     };
     for (w, h) in [(80u16, 24u16), (120, 40)] {
@@ -304,7 +307,7 @@ fn the_picker_shows_every_description_whole() {
                     entry.source
                 );
             }
-            let last = crate::tui::view::picker::last(&entries, i, app.ui.screen);
+            let last = crate::tui::view::picker::last(&entries, i, "", app.ui.screen);
             assert!(w < 120 || last == 0, "{}: scrolls at 120x40", entry.source);
             press(&mut app, KeyCode::Down);
             // the next preset's description starts at its top
@@ -315,21 +318,113 @@ fn the_picker_shows_every_description_whole() {
 }
 
 #[test]
-fn a_preset_of_the_users_folder_is_listed_by_its_file_and_its_name() {
+fn presets_are_listed_by_folder_and_by_their_file_and_name() {
     // a saved copy of a bundled preset keeps the bundled name: the list says which file it is
-    let dir = tempfile::tempdir().unwrap();
+    let mine = tempfile::tempdir().unwrap();
+    let shared = tempfile::tempdir().unwrap();
     let text = crate::preset::BUNDLED[1].text;
-    std::fs::write(dir.path().join("my lab.toml"), text).unwrap();
-    std::fs::write(dir.path().join("broken.toml"), "schema = ").unwrap();
-    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(Some(dir.path())) else {
+    std::fs::write(mine.path().join("my lab.toml"), text).unwrap();
+    std::fs::write(mine.path().join("broken.toml"), "schema = ").unwrap();
+    std::fs::write(shared.path().join("week3.toml"), text).unwrap();
+    let places = Places {
+        presets: Some(mine.path().to_path_buf()),
+        // a folder named twice (and the personal one among the shared) is listed once
+        shared: vec![
+            shared.path().into(),
+            shared.path().into(),
+            mine.path().into(),
+        ],
+        ..Places::default()
+    };
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(&places) else {
         panic!()
     };
-    let titles: Vec<&str> = entries.iter().map(|e| e.title.as_str()).collect();
-    let bundled_name = bundled("hertz-check.toml").name;
-    assert!(titles.contains(&bundled_name.as_str()), "{titles:?}");
-    assert!(
-        titles.contains(&format!("my lab.toml: {bundled_name}").as_str()),
-        "{titles:?}"
+    let titled = |folder: &str| -> Vec<String> {
+        (entries.iter())
+            .filter(|e| e.folder.starts_with(folder))
+            .map(|e| e.title.clone())
+            .collect()
+    };
+    let name = bundled("hertz-check.toml").name;
+    assert!(titled("bundled").contains(&format!("hertz-check.toml: {name}")));
+    assert_eq!(titled("shared"), [format!("week3.toml: {name}")]);
+    let shared_heading = format!("shared: {}", mine.path().display());
+    assert!(!entries.iter().any(|e| e.folder == shared_heading));
+    assert_eq!(
+        titled("your presets"),
+        [
+            "broken.toml: (unreadable)".to_string(),
+            format!("my lab.toml: {name}")
+        ]
     );
-    assert!(titles.contains(&"broken.toml: (unreadable)"), "{titles:?}");
+}
+
+#[test]
+fn typed_text_finds_presets_and_a_typed_path_opens_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("week3.toml");
+    std::fs::write(&path, crate::preset::BUNDLED[1].text).unwrap();
+    let mut app = app("polymer-coating.toml");
+    update(
+        &mut app,
+        crate::tui::effects::list_presets(&Places::default()),
+    );
+    for c in "STRIP-WINK".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    let Mode::Picker {
+        entries,
+        selected,
+        filter,
+        ..
+    } = &app.ui.mode
+    else {
+        panic!()
+    };
+    assert_eq!(filter, "STRIP-WINK");
+    assert_eq!(
+        entries[*selected].source,
+        "bundled: thin-strip-winkler.toml"
+    );
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("open a preset: STRIP-WINK_ (1 found)"), "{s}");
+    // End and Home move among those found only
+    press(&mut app, KeyCode::End);
+    press(&mut app, KeyCode::Home);
+    let Mode::Picker {
+        entries, selected, ..
+    } = &app.ui.mode
+    else {
+        panic!()
+    };
+    assert_eq!(
+        entries[*selected].source,
+        "bundled: thin-strip-winkler.toml"
+    );
+    // a text that finds nothing says so, and Enter says what to type
+    for c in "zz".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    assert!(screen(&app, 80, 24, PLAIN).contains("no preset found"));
+    assert!(press(&mut app, KeyCode::Enter).is_empty());
+    assert!(
+        message(&app).starts_with("no preset matches \"STRIP-WINKzz\""),
+        "{}",
+        message(&app)
+    );
+    // a path is read, then opened
+    update(
+        &mut app,
+        crate::tui::effects::list_presets(&Places::default()),
+    );
+    for c in path.display().to_string().chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    assert_eq!(
+        press(&mut app, KeyCode::Enter),
+        [Command::ReadPreset(path.clone())]
+    );
+    update(&mut app, crate::tui::effects::read_preset(path.clone()));
+    assert_eq!(app.doc.path.as_ref(), Some(&path));
+    assert_eq!(app.doc.preset, bundled("hertz-check.toml"));
 }

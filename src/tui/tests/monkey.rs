@@ -168,6 +168,7 @@ impl Monkey {
         let places = Places {
             home: Some(folder.to_path_buf()),
             presets: Some(folder.join("presets")),
+            shared: Vec::new(),
         };
         let app = App::new(crate::preset::bundled(file).unwrap().unwrap(), None, places);
         let mut m = Monkey {
@@ -226,8 +227,9 @@ impl Monkey {
                     Command::Solve(..) => solve = Some(c),
                     Command::Explore(..) => sweep = Some(c),
                     Command::ListPresets => {
-                        reports.push(effects::list_presets(self.app.places.presets.as_deref()));
+                        reports.push(effects::list_presets(&self.app.places));
                     }
+                    Command::ReadPreset(path) => reports.push(effects::read_preset(path)),
                     Command::Save {
                         target,
                         preset,

@@ -191,7 +191,7 @@ fn broken_files_in_the_preset_folder_are_listed_with_their_errors_and_cost_no_ed
             press(&mut app, KeyCode::Char('o')),
             vec![Command::ListPresets]
         );
-        let listed = crate::tui::effects::list_presets(app.places.presets.as_deref());
+        let listed = crate::tui::effects::list_presets(&app.places);
         update(&mut app, listed);
         let Mode::Picker { entries, .. } = app.ui.mode.clone() else {
             panic!("{:?}", app.ui.mode)
@@ -209,7 +209,10 @@ fn broken_files_in_the_preset_folder_are_listed_with_their_errors_and_cost_no_ed
             };
             *selected = at;
             let shown = rows(&app).join("\n");
-            assert!(shown.contains(&format!("!{file}: (unreadable)")), "{shown}");
+            assert!(
+                shown.contains(&format!("! {file}: (unreadable)")),
+                "{shown}"
+            );
             assert!(shown.contains("cannot be opened: "), "{shown}");
             let error = entries[at].preset.clone().unwrap_err();
             assert!(error.contains(why), "{file}: {error}");

@@ -61,13 +61,13 @@ fn help_picker_choices_error_and_too_small() {
     insta::assert_snapshot!("help_80x24", screen(&app, 80, 24, PLAIN));
     insta::assert_snapshot!("help_120x40", screen(&app, 120, 40, PLAIN));
     press(&mut app, KeyCode::Esc);
-    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(None) else {
+    let Msg::PresetsListed(entries) = crate::tui::effects::list_presets(&Places::default()) else {
         panic!()
     };
     update(&mut app, Msg::PresetsListed(entries));
     insta::assert_snapshot!("picker_80x24", screen(&app, 80, 24, PLAIN));
     // at 80x24 not every preset fits: the picker says that more follow
-    let count = crate::tui::effects::list_presets(None);
+    let count = crate::tui::effects::list_presets(&Places::default());
     let Msg::PresetsListed(listed) = count else {
         panic!()
     };
@@ -76,11 +76,21 @@ fn help_picker_choices_error_and_too_small() {
         press(&mut app, KeyCode::Down);
     }
     let s = screen(&app, 80, 24, PLAIN);
-    // nine rows of the list at 80x24
+    // nine rows of the list at 80x24: the presets and the heading above them
     assert!(
-        s.contains(&format!("presets {}-{n} of {n} (more above)", n - 8)),
+        s.contains(&format!(
+            "rows {}-{} of {} (more above)",
+            n - 7,
+            n + 1,
+            n + 1
+        )),
         "{s}"
     );
+    // End and Home go to the last and the first at once
+    press(&mut app, KeyCode::Home);
+    assert!(screen(&app, 80, 24, PLAIN).contains("(more below)"));
+    press(&mut app, KeyCode::End);
+    assert!(screen(&app, 80, 24, PLAIN).contains("(more above)"));
     assert!(!screen(&app, 120, 40, PLAIN).contains("(more "));
     for _ in 1..n {
         press(&mut app, KeyCode::Up);
@@ -240,6 +250,7 @@ fn cursor_pin_expand_log_y_and_ascii_markers() {
 fn i_shows_the_whole_description_and_scrolls_it() {
     let mut app = app("contact-lost.toml");
     app.doc.path = Some("presets/contact-lost.toml".into());
+    app.doc.source = Some("presets/contact-lost.toml".into());
     // with no message, the bottom line names the preset beside its file
     app.ui.message = None;
     let s = screen(&app, 120, 40, PLAIN);

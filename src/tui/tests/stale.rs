@@ -17,6 +17,7 @@ fn entry(file: &str) -> PickerEntry {
         source: format!("bundled: {file}"),
         path: None,
         preset: Ok(bundled(file)),
+        folder: "lab".into(),
     }
 }
 

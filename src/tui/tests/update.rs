@@ -315,8 +315,11 @@ fn help_scrolling_stops_at_the_end_of_the_text() {
         assert_eq!(app.ui.mode, Mode::Help(last), "{w}x{h}");
         press(&mut app, KeyCode::PageUp);
         assert_eq!(app.ui.mode, Mode::Help(last - 10), "{w}x{h}");
-        press(&mut app, KeyCode::Down);
+        press(&mut app, KeyCode::Home);
+        assert_eq!(app.ui.mode, Mode::Help(0), "{w}x{h}");
         press(&mut app, KeyCode::End);
+        assert_eq!(app.ui.mode, Mode::Help(last), "{w}x{h}");
+        press(&mut app, KeyCode::Char('x'));
         assert_eq!(app.ui.mode, Mode::Normal);
     }
 }

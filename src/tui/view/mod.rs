@@ -69,7 +69,8 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
             entries,
             selected,
             scroll,
-        } => picker::draw(entries, *selected, *scroll, style, frame, over),
+            filter,
+        } => picker::draw(entries, *selected, *scroll, filter, style, frame, over),
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
         Mode::Form(form) => sweep::form(form, style, frame, area),
         _ => {}
@@ -161,4 +162,15 @@ fn draw_chart(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Fra
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
     }
+}
+
+/// The area of the windows over the screen on the last drawn screen (`view::windows_area`; the
+/// message's length does not depend on `--ascii` but for "…", three columns).
+pub fn windows_on_last_screen(app: &App) -> ratatui::layout::Rect {
+    let plain = crate::tui::view::RenderOptions {
+        ascii: false,
+        color: false,
+        truecolor: false,
+    };
+    windows_area(app, plain, app.ui.screen)
 }

@@ -145,12 +145,8 @@ pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, are
 pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
     let doc = &app.doc;
     let mut lines = vec![Line::styled(doc.preset.name.clone(), style.heading())];
-    if let Some(path) = &doc.path {
-        lines.extend(
-            wrap(&path.display().to_string(), width)
-                .into_iter()
-                .map(Line::from),
-        );
+    if let Some(source) = &doc.source {
+        lines.extend(wrap(source, width).into_iter().map(Line::from));
     }
     lines.extend(paragraphs(&doc.preset.description, width));
     lines
