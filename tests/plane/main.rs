@@ -9,6 +9,7 @@ mod groups;
 mod limits_strategy;
 mod plane_energy;
 mod plane_fuzz;
+mod plane_general;
 mod plane_narrow;
 mod plane_strip;
 mod plane_validity;

@@ -9,6 +9,7 @@
 pub mod checks;
 pub mod criteria;
 pub mod energy;
+pub mod general;
 pub mod groups;
 pub mod narrow;
 pub mod operating_point;

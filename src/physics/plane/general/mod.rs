@@ -1,0 +1,189 @@
+//! The plane problem in the paper's generality on the half-plane and the wide strip: any smooth
+//! punch shape g(x), the wear law F(q2) = k q2 (q2/p0)^(n-1) and the friction law
+//! Pi(q2) = min(mu q2 + tau0, tau_max) (Soldatenkov (2007) sections 1-2; the formulation, edge
+//! exponents and verification routes in docs/physics/plane-general.md).
+//!
+//! The contact condition (1.11) differentiated, with (4.1) for v' and q1 = Pi(q2), is the
+//! nonlinear singular integral equation (E) on [-a, b] (`system`), bounded at both ends; the load
+//! fixes the width: P = Q2 - phi, phi = integral of Pi(q2) g' (2.1). For each width the
+//! collocation is solved by Newton (`system`), then the width by Brent's method on P (`width`).
+
+pub mod laws;
+pub mod pressure;
+pub mod system;
+pub mod width;
+
+use nalgebra::DVector;
+
+use crate::physics::elastic::chi_c12;
+use crate::physics::plane::general::laws::{FrictionLaw, Punch, WearLaw};
+use crate::physics::plane::general::pressure::Pressure;
+use crate::physics::plane::general::system::Discretisation;
+use crate::physics::{Material, SolveError};
+
+/// The node count of an operating point.
+pub const NODES: usize = 64;
+/// The node count of the first, coarse width search.
+const COARSE_NODES: usize = 16;
+
+/// One general plane problem: the strip (half-plane when h = inf; the wide-strip limit
+/// otherwise), the laws, the punch and the load.
+#[derive(Clone, Copy)]
+pub struct Problem<'a> {
+    /// The elastic strip.
+    pub material: Material,
+    /// q1 = Pi(q2).
+    pub friction: FrictionLaw,
+    /// W' = -F(q2).
+    pub wear: WearLaw,
+    /// g(x).
+    pub shape: &'a dyn Punch,
+    /// Normal load per unit length P [N/m], > 0.
+    pub load: f64,
+}
+
+impl Problem<'_> {
+    /// m = pi E/(2(1 - nu^2)) [Pa].
+    pub fn m(&self) -> f64 {
+        self.material.plane_modulus()
+    }
+
+    /// chi c12/h [1/m] of the wide strip's thickness correction; 0 on the half-plane.
+    pub fn c12_over_h(&self) -> f64 {
+        if self.material.is_half_space() {
+            0.0
+        } else {
+            chi_c12(self.material.poisson_ratio) / self.material.thickness
+        }
+    }
+
+    /// The edge exponents' theta = arctan(m gamma0/pi)/pi, gamma0 = pi chi mu/m - k [n = 1]
+    /// (docs/physics/plane-general.md section 3: for n > 1 the wear does not shift them).
+    pub fn theta(&self) -> f64 {
+        use std::f64::consts::PI;
+        let m = self.m();
+        let gamma0 =
+            PI * self.material.chi() * self.friction.coefficient / m - self.wear.linear_part();
+        (m * gamma0 / PI).atan() / PI
+    }
+
+    /// Whether the shear cap can be reached (tau_max finite).
+    fn capped(&self) -> bool {
+        self.friction.shear_strength.is_finite()
+    }
+
+    /// The split points in t of integrals over the contact: the punch's kinks and where the cap
+    /// starts to hold.
+    pub fn splits(&self, p: &Pressure) -> Vec<f64> {
+        let f = &self.friction;
+        let crosses = |q: f64| f.coefficient * q + f.adhesion - f.shear_strength;
+        let crosses: Option<&dyn Fn(f64) -> f64> = self.capped().then_some(&crosses);
+        p.splits(&self.shape.kinks(), crosses)
+    }
+
+    /// Q1 = integral of Pi(q2) [N/m] = mu Q2 + tau0 L minus what the cap takes off.
+    pub fn friction_force(&self, p: &Pressure) -> f64 {
+        let f = &self.friction;
+        let coulomb = f.coefficient * p.normal_force() + f.adhesion * p.l;
+        if !self.capped() {
+            return coulomb;
+        }
+        let rule = Pressure::rule(&self.splits(p));
+        coulomb - p.integrate(&rule, |_, q| f.excess(q))
+    }
+
+    /// dQ1/dy_i with y_i = W_i phi_i/m (`system`).
+    pub fn friction_force_gradient(&self, p: &Pressure, d: &Discretisation) -> DVector<f64> {
+        let (m, half, mu) = (self.m(), 0.5 * p.l, self.friction.coefficient);
+        let mut g = DVector::from_element(d.len(), mu * half * m);
+        if !self.capped() {
+            return g;
+        }
+        let rules = d.rules();
+        let rule = Pressure::rule(&self.splits(p));
+        for (&t, &w) in rule.nodes.iter().zip(&rule.weights) {
+            if self.friction.excess(p.at(t)) <= 0.0 {
+                continue;
+            }
+            let basis: Vec<f64> = rules
+                .nodes()
+                .iter()
+                .zip(rules.bary())
+                .map(|(x, b)| b / (t - x))
+                .collect();
+            let sum: f64 = basis.iter().sum();
+            let scale = mu * half * w * p.weight(t) * m / sum;
+            for (gi, (bi, wi)) in g.iter_mut().zip(basis.iter().zip(rules.weights())) {
+                *gi -= scale * bi / wi;
+            }
+        }
+        g
+    }
+}
+
+/// The general solution at one load.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    /// Trailing half-width a [m]: the contact is [-a, b].
+    pub a: f64,
+    /// Leading half-width b [m].
+    pub b: f64,
+    /// q2 on the contact.
+    pub pressure: Pressure,
+    /// Q2 = integral of q2 [N/m].
+    pub normal_force: f64,
+    /// Q1 = integral of Pi(q2) [N/m], the friction force on the strip in +x.
+    pub friction_force: f64,
+    /// psi = integral of q2 g' [N/m] (2.2), the deformation component of friction.
+    pub psi: f64,
+    /// phi = integral of Pi(q2) g' [N/m] (2.1): P = Q2 - phi.
+    pub phi: f64,
+    /// Delta_g = g(b) - g(-a) [m].
+    pub delta_g: f64,
+    /// T = Q1 + psi [N/m], the tangential force that drives the punch (2.1).
+    pub tangential_force: f64,
+    /// mu* = (T - tau0 (a + b))/P (3.13), dimensionless.
+    pub mu_star: f64,
+    /// The edge exponents' theta.
+    pub theta: f64,
+}
+
+/// Solves the problem at its load with `nodes` collocation nodes: the width first with
+/// `COARSE_NODES` nodes, then refined with `nodes`.
+pub fn solve(problem: &Problem, nodes: usize) -> Result<Solution, SolveError> {
+    let theta = problem.theta();
+    let near = if nodes > COARSE_NODES {
+        let coarse = Discretisation::new(theta, COARSE_NODES);
+        Some(width::solve(problem, &coarse, None)?.0)
+    } else {
+        None
+    };
+    let d = Discretisation::new(theta, nodes);
+    let (l, unknowns) = width::solve(problem, &d, near)?;
+    Ok(assemble(problem, unknowns.pressure(&d, problem, l)))
+}
+
+/// The forces and mu* of the pressure `p`.
+fn assemble(problem: &Problem, p: Pressure) -> Solution {
+    let (a, b) = (0.5 * p.l - p.c, 0.5 * p.l + p.c);
+    let rule = Pressure::rule(&problem.splits(&p));
+    let shape = problem.shape;
+    let f = &problem.friction;
+    let psi = p.integrate(&rule, |x, q| q * shape.slope(x));
+    let phi = p.integrate(&rule, |x, q| f.shear(q) * shape.slope(x));
+    let friction_force = problem.friction_force(&p);
+    let tangential_force = friction_force + psi;
+    Solution {
+        a,
+        b,
+        normal_force: p.normal_force(),
+        friction_force,
+        psi,
+        phi,
+        delta_g: shape.height(b) - shape.height(-a),
+        tangential_force,
+        mu_star: (tangential_force - f.adhesion * (a + b)) / problem.load,
+        theta: p.theta,
+        pressure: p,
+    }
+}

@@ -1,0 +1,216 @@
+//! The collocation of equation (E) at one contact width L (docs/physics/plane-general.md sections
+//! 2-3), half-plane and wide strip:
+//!   gamma0 q2 + (1/m) H[q2] + Nl(q2) + chi c12 Q1/(m h) + pi chi tau0/m + g'(x) = 0,
+//!   Nl(q) = (pi chi/m) (Pi(q) - mu q - tau0) - (F(q) - k1 q),
+//! gamma0 = pi chi mu/m - k1, k1 = k for the linear wear law and 0 otherwise. With q2 = w phi on
+//! x = c + (L/2) t, unknowns phi_i at the zeros t_i of P_N^(1/2+theta, 1/2-theta) and collocation
+//! at the zeros xi_k of P_{N+1}^(-1/2-theta, -1/2+theta), (1/pi) sum W_i phi_i/(t_i - xi_k) is
+//! exactly tan(pi theta) q2 + (1/pi) p.v. int q2/(t - xi) for polynomial phi (Erdogan, Gupta & Cook
+//! 1973), i.e. m/pi times the first two terms; q2 at xi_k is w(xi_k) times phi interpolated there.
+//! The N + 1 equations fix the N values and the shift c: the end conditions q2(-a) = q2(b) = 0.
+//!
+//! Unknowns y_i = W_i phi_i/m (slopes, like g') and s = c/(L/2); Newton on them with the Jacobian
+//! of the nonlinear terms (Pi and F are piecewise smooth), each row divided by its largest entry
+//! before LU, steps halved while the residual grows.
+
+use std::sync::Arc;
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::physics::plane::general::Problem;
+use crate::physics::plane::general::pressure::Pressure;
+use crate::physics::plane::strip::collocation::Rules;
+
+/// Newton iterations at one width.
+const NEWTON_STEPS: usize = 60;
+/// Halvings of one Newton step.
+const HALVINGS: usize = 30;
+/// Newton stops when the step is below this, relative to the unknowns.
+const NEWTON_TOLERANCE: f64 = 1e-14;
+/// A step this small (relative) that lowers no residual is taken as converged: the residual is
+/// at its round-off floor.
+const ROUND_OFF_STEP: f64 = 1e-10;
+
+/// The matrices of one (theta, N): the Cauchy part 1/(t_i - xi_k) and the interpolation of phi
+/// from the nodes to the collocation points times w(xi_k).
+pub struct Discretisation {
+    rules: Arc<Rules>,
+    cauchy: DMatrix<f64>,
+    /// w(xi_k) l_i(xi_k): q2 at xi_k is this times phi.
+    to_points: DMatrix<f64>,
+}
+
+impl Discretisation {
+    /// The discretisation with n nodes at exponent shift theta.
+    pub fn new(theta: f64, n: usize) -> Discretisation {
+        let rules = Rules::cached(theta, n);
+        let (nodes, points, bary) = (rules.nodes(), rules.points(), rules.bary());
+        let cauchy = DMatrix::from_fn(n + 1, n, |k, i| 1.0 / (nodes[i] - points[k]));
+        let mut to_points = DMatrix::from_fn(n + 1, n, |k, i| bary[i] / (points[k] - nodes[i]));
+        for (k, mut row) in to_points.row_iter_mut().enumerate() {
+            let t = points[k];
+            let weight = ((0.5 + theta) * (-t).ln_1p() + (0.5 - theta) * t.ln_1p()).exp();
+            let sum = row.sum();
+            row.scale_mut(weight / sum);
+        }
+        Discretisation {
+            rules,
+            cauchy,
+            to_points,
+        }
+    }
+
+    /// The number of nodes N.
+    pub fn len(&self) -> usize {
+        self.rules.len()
+    }
+
+    /// Never empty; here for clippy's len_without_is_empty.
+    pub fn is_empty(&self) -> bool {
+        self.rules.is_empty()
+    }
+
+    /// The rules.
+    pub fn rules(&self) -> &Arc<Rules> {
+        &self.rules
+    }
+}
+
+/// The unknowns at one width: y_i = W_i phi_i/m and s = c/(L/2).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unknowns {
+    pub y: DVector<f64>,
+    pub s: f64,
+}
+
+impl Unknowns {
+    /// Zero pressure centred on the tip: Newton's first step from here solves the problem with
+    /// the nonlinear terms linearised at q2 = 0.
+    pub fn zero(n: usize) -> Unknowns {
+        Unknowns {
+            y: DVector::zeros(n),
+            s: 0.0,
+        }
+    }
+
+    /// The pressure they describe at width l.
+    pub fn pressure(&self, d: &Discretisation, problem: &Problem, l: f64) -> Pressure {
+        let m = problem.m();
+        let phi = self
+            .y
+            .iter()
+            .zip(d.rules.weights())
+            .map(|(y, w)| m * y / w)
+            .collect();
+        Pressure::new(Arc::clone(&d.rules), l, self.s * 0.5 * l, phi)
+    }
+}
+
+/// The residual of (E) at the collocation points and, when `jacobian` is given, its Jacobian in
+/// (y, s).
+fn residual(
+    d: &Discretisation,
+    problem: &Problem,
+    l: f64,
+    u: &Unknowns,
+    jacobian: Option<&mut DMatrix<f64>>,
+) -> DVector<f64> {
+    let n = d.len();
+    let (m, half) = (problem.m(), 0.5 * l);
+    let (friction, wear) = (&problem.friction, &problem.wear);
+    let pi_chi = std::f64::consts::PI * problem.material.chi();
+    let weights = d.rules.weights();
+    let phi = DVector::from_iterator(n, u.y.iter().zip(weights).map(|(y, w)| m * y / w));
+    let q = &d.to_points * &phi;
+    let c12 = problem.c12_over_h();
+    let pressure = (c12 != 0.0).then(|| u.pressure(d, problem, l));
+    let q1 = pressure.as_ref().map_or(0.0, |p| problem.friction_force(p));
+    let constant = c12 * q1 / m + pi_chi * friction.adhesion / m;
+    let k1 = wear.linear_part();
+    let points = d.rules.points();
+    let mut r = &d.cauchy * &u.y;
+    for k in 0..=n {
+        let x = (u.s + points[k]) * half;
+        let nl = pi_chi / m
+            * (friction.shear(q[k]) - friction.coefficient * q[k] - friction.adhesion)
+            - (wear.rate(q[k]) - k1 * q[k]);
+        r[k] += nl + constant + problem.shape.slope(x);
+    }
+    if let Some(jac) = jacobian {
+        jac.view_mut((0, 0), (n + 1, n)).copy_from(&d.cauchy);
+        let dq1 = pressure
+            .as_ref()
+            .map(|p| problem.friction_force_gradient(p, d));
+        for k in 0..=n {
+            let dnl = pi_chi / m * (friction.shear_derivative(q[k]) - friction.coefficient)
+                - (wear.rate_derivative(q[k]) - k1);
+            for i in 0..n {
+                let mut entry = jac[(k, i)] + dnl * d.to_points[(k, i)] * m / weights[i];
+                if let Some(g) = &dq1 {
+                    entry += c12 / m * g[i];
+                }
+                jac[(k, i)] = entry;
+            }
+            let x = (u.s + points[k]) * half;
+            jac[(k, n)] = problem.shape.curvature(x, 1e-7 * l) * half;
+        }
+    }
+    r
+}
+
+/// Solves (E) at width l by Newton from `start`; None when it does not converge in
+/// `NEWTON_STEPS` steps or the Jacobian is singular.
+pub fn solve_at(
+    d: &Discretisation,
+    problem: &Problem,
+    l: f64,
+    start: &Unknowns,
+) -> Option<Unknowns> {
+    let n = d.len();
+    let mut u = start.clone();
+    let mut jac = DMatrix::zeros(n + 1, n + 1);
+    let mut r = residual(d, problem, l, &u, Some(&mut jac));
+    for _ in 0..NEWTON_STEPS {
+        let mut rhs = -&r;
+        for k in 0..=n {
+            let big = jac.row(k).amax();
+            if !(big > 0.0 && big.is_finite()) {
+                return None;
+            }
+            jac.row_mut(k).scale_mut(1.0 / big);
+            rhs[k] /= big;
+        }
+        let step = jac.clone().lu().solve(&rhs)?;
+        let scale = u.y.amax().max(f64::MIN_POSITIVE);
+        let size = (step.rows(0, n).amax() / scale).max(step[n].abs());
+        let full = Unknowns {
+            y: &u.y + step.rows(0, n),
+            s: u.s + step[n],
+        };
+        if size <= NEWTON_TOLERANCE {
+            return Some(full);
+        }
+        let norm = r.norm();
+        let mut factor = 1.0;
+        let mut next = None;
+        for _ in 0..HALVINGS {
+            let trial = Unknowns {
+                y: &u.y + factor * step.rows(0, n),
+                s: u.s + factor * step[n],
+            };
+            let r_trial = residual(d, problem, l, &trial, Some(&mut jac));
+            if r_trial.iter().all(|v| v.is_finite()) && r_trial.norm() < norm {
+                next = Some((trial, r_trial));
+                break;
+            }
+            factor *= 0.5;
+        }
+        match next {
+            Some((trial, r_trial)) => (u, r) = (trial, r_trial),
+            // the residual is at its round-off floor: no step lowers it
+            None if size <= ROUND_OFF_STEP => return Some(full),
+            None => return None,
+        }
+    }
+    None
+}
