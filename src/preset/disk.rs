@@ -1,8 +1,10 @@
 //! Preset files on disk, read and written defensively: only regular files of at most
 //! `MAX_PRESET_BYTES` are read (a FIFO or a device is refused before it is opened, and the open
 //! cannot block), text must be UTF-8; a save replaces the file atomically, writes through a
-//! symbolic link to its target, keeps the mode of the file it replaces, and removes the temporary
-//! files an interrupted save of ours left behind.
+//! symbolic link to a target the user may write (a link to a file they cannot write, such as a
+//! teacher's shared preset, is replaced by their own copy and the file stays as it was), keeps
+//! the mode of the file it replaces, and removes the temporary files an interrupted save of ours
+//! left behind.
 
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Read, Write};
@@ -120,8 +122,77 @@ fn too_large(path: &Path) -> PresetError {
     )
 }
 
-/// The file a save to `path` writes: `path` itself, or the target its symbolic links lead to
-/// (a relative link is relative to the link's folder).
+/// What a save does with a symbolic link at the path it writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Links {
+    /// Writes the file the link leads to, when the user may replace it (else as `Replace`).
+    Follow,
+    /// Replaces the link by the saved file: the file it led to stays as it was.
+    Replace,
+}
+
+/// The file a save to `path` writes: `path` itself, or with `Links::Follow` the target its
+/// symbolic links lead to (a relative link is relative to the link's folder) when the user may
+/// replace it (`kept_by_save`).
+fn save_target(path: &Path, links: Links) -> io::Result<PathBuf> {
+    if links == Links::Replace {
+        return Ok(path.to_path_buf());
+    }
+    let target = link_target(path)?;
+    Ok(if target == path || writable(&target) {
+        target
+    } else {
+        path.to_path_buf()
+    })
+}
+
+/// The file that `path`, a symbolic link, leads to, and that a save to `path` with `links`
+/// leaves as it was (the link is replaced by the saved file); None when `path` is no such link.
+pub fn kept_by_save(path: &Path, links: Links) -> Option<PathBuf> {
+    let target = link_target(path).ok()?;
+    let kept = links == Links::Replace || !writable(&target);
+    (target != path && target.exists() && kept).then_some(target)
+}
+
+/// Whether `path` is a symbolic link (possibly through others) to a file in one of `folders`.
+pub fn leads_into(path: &Path, folders: &[PathBuf]) -> bool {
+    let canonical = |p: &Path| fs::canonicalize(p).ok();
+    let Some(target) = link_target(path).ok().filter(|t| t != path) else {
+        return false;
+    };
+    let Some(dir) = target.parent().and_then(canonical) else {
+        return false;
+    };
+    folders
+        .iter()
+        .any(|f| canonical(f).is_some_and(|f| dir.starts_with(f)))
+}
+
+/// Whether the user may replace the file at `path`: write it and write in its folder (where the
+/// saved file is renamed over it).
+fn writable(path: &Path) -> bool {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let may_write = |p: &Path| {
+            std::ffi::CString::new(p.as_os_str().as_bytes())
+                // SAFETY: access only reads the NUL-terminated path it is given
+                .is_ok_and(|c| unsafe { libc::access(c.as_ptr(), libc::W_OK) } == 0)
+        };
+        (!path.exists() || may_write(path)) && may_write(dir)
+    }
+    #[cfg(not(unix))]
+    {
+        fs::metadata(path).map_or(true, |m| !m.permissions().readonly())
+            && fs::metadata(dir).is_ok_and(|m| !m.permissions().readonly())
+    }
+}
+
+/// The file `path`'s symbolic links lead to (`path` itself when it is none).
 fn link_target(path: &Path) -> io::Result<PathBuf> {
     let mut at = path.to_path_buf();
     for _ in 0..MAX_LINKS {
@@ -189,9 +260,10 @@ fn same_owner(a: &fs::Metadata, b: &fs::Metadata) -> bool {
 /// renamed over it. If `write` fails, the old file is untouched and the temporary file removed.
 pub fn write_atomically(
     path: &Path,
+    links: Links,
     write: impl FnOnce(&mut File) -> io::Result<()>,
 ) -> io::Result<()> {
-    let target = link_target(path)?;
+    let target = save_target(path, links)?;
     let dir = match target.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),

@@ -240,10 +240,15 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
     }
 }
 
-/// Saves a preset atomically.
+/// Saves a preset atomically, through a symbolic link to a file the user may replace.
 pub fn save(preset: &Preset, path: &Path) -> std::io::Result<()> {
+    save_with(preset, path, disk::Links::Follow)
+}
+
+/// Saves a preset atomically, doing `links` with a symbolic link at `path`.
+pub fn save_with(preset: &Preset, path: &Path, links: disk::Links) -> std::io::Result<()> {
     let text = to_toml(preset);
-    disk::write_atomically(path, |f| f.write_all(text.as_bytes()))
+    disk::write_atomically(path, links, |f| f.write_all(text.as_bytes()))
 }
 
 /// Where a name typed in the explorer's save prompt goes.

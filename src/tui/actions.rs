@@ -13,6 +13,7 @@ use crate::tui::map_cursor;
 use crate::tui::sweep_form_keys;
 use crate::tui::sweep_keys;
 use crate::tui::sweep_state::View;
+use crate::tui::text_field::TextField;
 
 /// The most harmonics a punch has (`limits::HARMONICS`).
 pub const MAX_HARMONICS: usize = crate::physics::limits::HARMONICS.max as usize;
@@ -44,7 +45,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
                     app.say(format!("{}: {}", row.symbol(), row.param().allowed()));
                 }
                 None => {
-                    app.ui.mode = Mode::Editing(String::new());
+                    app.ui.mode = Mode::Editing(TextField::default());
                     app.say(format!("type {} ({})", row.symbol(), row.param().allowed()));
                 }
             }
@@ -109,8 +110,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::RemoveHarmonic => remove_harmonic(app),
         Action::Open => vec![Command::ListPresets],
         Action::Save => {
-            app.ui.mode = Mode::SaveAs(String::new());
-            app.say("save as: a name (saved in your preset folder) or a path, e.g. ~/lab.toml");
+            app.ui.mode = Mode::SaveAs(TextField::proposed(proposed_name(app)));
             Vec::new()
         }
         Action::Pin | Action::ClearPins | Action::LogY | Action::Export | Action::ExportSvg
@@ -224,6 +224,29 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.ui.playing = false;
     app.say(format!("opened {}", entry.source));
     vec![app.request()]
+}
+
+/// The name `s` proposes: the preset's own file's name when that file is in the user's preset
+/// folder (saved over it, after asking); else the name of the file it was read from (bundled or
+/// shared), with "-edited" when it was edited, a bare name that saves a copy in the user's
+/// folder; "lab" for a preset read from no file.
+fn proposed_name(app: &App) -> String {
+    let doc = &app.doc;
+    let own = (doc.path.as_ref()).is_some_and(|p| {
+        p.parent()
+            .is_some_and(|d| Some(d) == app.places.presets.as_deref())
+    });
+    let stem = match (&doc.path, &doc.source) {
+        (Some(path), _) => path.file_stem().map(|s| s.to_string_lossy().into_owned()),
+        (None, Some(source)) => (source.strip_prefix("bundled: "))
+            .map(|file| file.trim_end_matches(".toml").to_string()),
+        (None, None) => None,
+    };
+    match stem {
+        Some(stem) if own || !doc.dirty => stem,
+        Some(stem) => format!("{stem}-edited"),
+        None => "lab".into(),
+    }
 }
 
 /// Quits, or asks first when there are unsaved edits.

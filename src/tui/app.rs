@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use crate::tui::text_field::TextField;
+
 use crate::engine::{Answer, Request};
 use crate::preset::{Preset, Problem, SaveTarget};
 use ratatui::crossterm::event::KeyEvent;
@@ -70,7 +72,7 @@ pub enum Mode {
     /// The main screen.
     Normal,
     /// Typing a value for the selected row.
-    Editing(String),
+    Editing(TextField),
     /// Picking one of the selected row's choices.
     Choosing(usize),
     /// Reading the help, scrolled by this many lines.
@@ -90,7 +92,7 @@ pub enum Mode {
         filter: String,
     },
     /// Typing a file name to save to.
-    SaveAs(String),
+    SaveAs(TextField),
     /// The file exists: overwrite?
     ConfirmOverwrite(SaveTarget),
     /// The export's file exists: overwrite? (the file, the text to write)
@@ -241,8 +243,8 @@ pub enum Msg {
     PresetRead(Box<PickerEntry>),
     /// A save needs confirmation: the file exists.
     SaveExists(SaveTarget),
-    /// A save finished: the preset written, or why not.
-    Saved(SaveTarget, Box<Preset>, Result<(), String>),
+    /// A save finished: the preset written and what to say of it, or why not.
+    Saved(SaveTarget, Box<Preset>, Result<String, String>),
     /// An export needs confirmation: the file exists (the file, the text to write).
     ExportExists(PathBuf, String),
     /// An export finished: the file, or why not.

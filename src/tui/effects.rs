@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::preset::{self, BUNDLED, Preset, SaveTarget};
+use crate::preset::{self, BUNDLED, Links, Preset, SaveTarget};
 
 use crate::tui::app::{Msg, PickerEntry, Places};
 
@@ -91,8 +91,10 @@ fn entry(
 }
 
 /// Saves `preset` to the target: refuses a missing folder (except the user's preset folder,
-/// which is created), asks about an existing file unless `overwrite`.
-pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool) -> Msg {
+/// which is created), asks about an existing file unless `overwrite`. A symbolic link to a file
+/// in one of the `shared` folders, or to a file the user may not replace, is replaced by the
+/// user's own copy, and the file stays as it was.
+pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool, shared: &[PathBuf]) -> Msg {
     let path = &target.path;
     let folder = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
@@ -108,10 +110,25 @@ pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool) -> Msg {
     } else if path.exists() && !overwrite {
         return Msg::SaveExists(target);
     } else {
+        let links = if preset::leads_into(path, shared) {
+            Links::Replace
+        } else {
+            Links::Follow
+        };
+        let kept = preset::kept_by_save(path, links);
         std::fs::create_dir_all(&folder)
             .map_err(|e| format!("cannot create {}: {e}", folder.display()))
             .and_then(|()| {
-                preset::save(&preset, path).map_err(|e| format!("{}: {e}", path.display()))
+                preset::save_with(&preset, path, links)
+                    .map_err(|e| format!("{}: {e}", path.display()))
+            })
+            .map(|()| match kept {
+                Some(original) => format!(
+                    "saved {} as your own copy: it was a link to {}, which stays as it was",
+                    path.display(),
+                    original.display()
+                ),
+                None => format!("saved {}", path.display()),
             })
     };
     Msg::Saved(target, preset, result)
@@ -122,7 +139,7 @@ pub fn export(path: PathBuf, text: String, overwrite: bool) -> Msg {
     if !overwrite && path.exists() {
         return Msg::ExportExists(path, text);
     }
-    let written = preset::write_atomically(&path, |f| f.write_all(text.as_bytes()));
+    let written = preset::write_atomically(&path, Links::Follow, |f| f.write_all(text.as_bytes()));
     let result = written.map_err(|e| e.to_string());
     Msg::Exported(path, result)
 }

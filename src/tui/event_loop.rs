@@ -167,7 +167,7 @@ impl<B: Backend> Loop<B> {
                         target,
                         preset,
                         overwrite,
-                    } => effects::save(target, preset, overwrite),
+                    } => effects::save(target, preset, overwrite, &self.app.places.shared),
                     Command::Export {
                         path,
                         text,

@@ -22,6 +22,7 @@ pub mod sweep_form_keys;
 pub mod sweep_keys;
 pub mod sweep_shown;
 pub mod sweep_state;
+pub mod text_field;
 pub mod update;
 pub mod view;
 

@@ -33,9 +33,9 @@ pub enum PromptAction {
     Yes,
     /// Answer no.
     No,
-    /// The previous choice of a form's row.
+    /// The previous choice of a form's row, or the cursor left in typed text.
     Left,
-    /// The next choice of a form's row.
+    /// The next choice of a form's row, or the cursor right in typed text.
     Right,
 }
 
@@ -58,10 +58,14 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 39] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 43] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
+    (Prompt::Text, key(KeyCode::Left), PromptAction::Left, "←→ Home End edit"),
+    (Prompt::Text, key(KeyCode::Right), PromptAction::Right, ""),
+    (Prompt::Text, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Text, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::List, key(KeyCode::Up), PromptAction::Up, "↑↓ choose"),
     (Prompt::List, ch('k'), PromptAction::Up, ""),
     (Prompt::List, key(KeyCode::Down), PromptAction::Down, ""),

@@ -13,6 +13,7 @@ use crate::tui::chart_keys;
 use crate::tui::keys;
 use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};
+use crate::tui::text_field::TextField;
 use crate::tui::view::windows_on_last_screen;
 
 impl App {
@@ -57,10 +58,10 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
         }
         Msg::Saved(target, preset, result) => {
             match result {
-                Ok(()) => {
+                Ok(said) => {
                     // edits made while the file was written stay unsaved
                     app.doc.dirty = app.doc.preset != *preset;
-                    app.say(format!("saved {}", target.path.display()));
+                    app.say(said);
                     app.doc.source = Some(target.path.display().to_string());
                     app.doc.path = Some(target.path);
                 }
@@ -247,17 +248,17 @@ fn selection_moved(selected: usize, len: usize, action: Option<PromptAction>) ->
     }
 }
 
-/// A key in a text prompt: Enter hands the text to `accept`, Esc cancels, Backspace deletes;
-/// printable characters are typed (never Ctrl- or Alt- chords).
+/// A key in a text prompt: Enter hands the text to `accept`, Esc cancels, Backspace deletes,
+/// ←→ Home End move the cursor; printable characters are typed (never Ctrl- or Alt- chords).
 fn text_key(
     app: &mut App,
     key: KeyEvent,
-    mut buffer: String,
-    mode: fn(String) -> Mode,
+    mut buffer: TextField,
+    mode: fn(TextField) -> Mode,
     accept: fn(&mut App, String) -> Vec<Command>,
 ) -> Vec<Command> {
     match prompt_keys::prompt_action(Prompt::Text, &key) {
-        Some(PromptAction::Accept) => accept(app, buffer),
+        Some(PromptAction::Accept) => accept(app, buffer.text().to_string()),
         Some(PromptAction::Cancel) => {
             let what = match app.ui.mode {
                 Mode::SaveAs(_) => "not saved",
@@ -268,8 +269,23 @@ fn text_key(
             Vec::new()
         }
         Some(PromptAction::Backspace) => {
-            buffer.pop();
+            buffer.backspace();
             edited(app, mode(buffer));
+            Vec::new()
+        }
+        Some(
+            action @ (PromptAction::Left
+            | PromptAction::Right
+            | PromptAction::First
+            | PromptAction::Last),
+        ) => {
+            buffer.move_cursor(match action {
+                PromptAction::Left => -1,
+                PromptAction::Right => 1,
+                PromptAction::First => isize::MIN,
+                _ => isize::MAX,
+            });
+            app.ui.mode = mode(buffer);
             Vec::new()
         }
         _ => {
@@ -278,7 +294,7 @@ fn text_key(
                 .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT);
             match (key.code, chord) {
                 (KeyCode::Char(c), false) => {
-                    buffer.push(c);
+                    buffer.insert(c);
                     edited(app, mode(buffer));
                 }
                 (KeyCode::Tab | KeyCode::BackTab, _) => {

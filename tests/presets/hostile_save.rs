@@ -97,7 +97,7 @@ fn a_save_creates_no_folder() {
     let missing = dir.path().join("no/such/folder/lab.toml");
     assert!(save(&default_preset(), &missing).is_err());
     assert!(!dir.path().join("no").exists());
-    assert!(preset::write_atomically(&missing, |_| Ok(())).is_err());
+    assert!(preset::write_atomically(&missing, preset::Links::Follow, |_| Ok(())).is_err());
 }
 
 #[test]
@@ -105,7 +105,9 @@ fn a_failed_write_leaves_the_old_file() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("lab.toml");
     fs::write(&path, "old").unwrap();
-    let failed = preset::write_atomically(&path, |_| Err(std::io::Error::other("disk full")));
+    let failed = preset::write_atomically(&path, preset::Links::Follow, |_| {
+        Err(std::io::Error::other("disk full"))
+    });
     assert!(failed.is_err());
     assert_eq!(fs::read_to_string(&path).unwrap(), "old");
     assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);

@@ -170,7 +170,7 @@ fn a_save_that_fails_midway_leaves_the_old_file_intact() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("lab.toml");
     std::fs::write(&path, BASE).unwrap();
-    let result = write_atomically(&path, |f| {
+    let result = write_atomically(&path, wearlab::preset::Links::Follow, |f| {
         f.write_all(b"schema = 1\nname = \"half writ")?;
         Err(std::io::Error::other("disk full"))
     });

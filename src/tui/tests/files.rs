@@ -6,6 +6,7 @@ use ratatui::crossterm::event::KeyCode;
 use super::update::message;
 use super::*;
 use crate::tui::app::{Mode, PickerEntry};
+use crate::tui::text_field::TextField;
 
 #[test]
 fn o_lists_the_presets_and_asks_before_dropping_unsaved_edits() {
@@ -75,16 +76,19 @@ fn a_broken_preset_in_the_picker_shows_its_error_and_keeps_the_state() {
 }
 
 #[test]
-fn s_starts_an_empty_prompt_and_never_overwrites_without_asking() {
+fn s_proposes_the_files_name_and_never_overwrites_without_asking() {
     let mut app = app("polymer-coating.toml");
     app.places.presets = Some("/data/presets".into());
     app.doc.path = Some("/data/presets/my lab 1.toml".into());
     press(&mut app, KeyCode::Char('s'));
-    assert_eq!(
-        app.ui.mode,
-        Mode::SaveAs(String::new()),
-        "typing replaces, never appends"
+    assert_eq!(app.ui.mode, Mode::SaveAs(TextField::proposed("my lab 1")));
+    // where it goes is said before anything is written
+    let s = screen(&app, 120, 40, PLAIN);
+    assert!(
+        s.contains("save as: [my lab 1]_ -> /data/presets/my lab 1.toml"),
+        "{s}"
     );
+    // typing replaces the proposal, never appends to it
     type_text(&mut app, "my lab 1");
     let cmds = press(&mut app, KeyCode::Enter);
     let target = SaveTarget {
@@ -118,7 +122,8 @@ fn s_starts_an_empty_prompt_and_never_overwrites_without_asking() {
     select(&mut app, "E", None);
     press(&mut app, KeyCode::Right);
     let saved = Box::new(app.doc.preset.clone());
-    update(&mut app, Msg::Saved(target.clone(), saved, Ok(())));
+    let said = "saved /data/presets/my lab 1.toml".to_string();
+    update(&mut app, Msg::Saved(target.clone(), saved, Ok(said)));
     assert!(!app.doc.dirty);
     assert_eq!(message(&app), "saved /data/presets/my lab 1.toml");
     update(
@@ -145,8 +150,8 @@ fn a_preset_saved_after_a_nudge_holds_the_clean_value() {
         path: dir.path().join("nudged.toml"),
         create_folder: false,
     };
-    let saved = crate::tui::effects::save(target, Box::new(app.doc.preset.clone()), false);
-    assert!(matches!(saved, Msg::Saved(_, _, Ok(()))), "{saved:?}");
+    let saved = crate::tui::effects::save(target, Box::new(app.doc.preset.clone()), false, &[]);
+    assert!(matches!(saved, Msg::Saved(_, _, Ok(_))), "{saved:?}");
     let text = std::fs::read_to_string(dir.path().join("nudged.toml")).unwrap();
     assert!(
         text.lines().any(|l| l == "youngs_modulus = 3300000000.0"),

@@ -235,7 +235,7 @@ impl Monkey {
                         preset,
                         overwrite,
                     } => reports.push(if self.inside(&target.path) {
-                        effects::save(target, preset, overwrite)
+                        effects::save(target, preset, overwrite, &[])
                     } else {
                         Msg::Saved(target, preset, Err("outside the monkey's folder".into()))
                     }),

@@ -9,6 +9,7 @@ use ratatui::crossterm::event::KeyCode;
 use super::update::message;
 use super::*;
 use crate::tui::app::Mode;
+use crate::tui::text_field::TextField;
 
 /// The screen's rows, each with its trailing blanks (and the test backend's quotes) removed.
 fn rows(app: &App) -> Vec<String> {
@@ -69,7 +70,10 @@ fn a_name_that_is_a_folder_or_a_hidden_file_is_refused_on_screen() {
         // the reason over the prompt, which keeps the text for a correction
         let shown = bottom(&app, 3);
         assert!(shown.contains(&squeezed(why)), "{typed}: {shown}");
-        assert!(shown.ends_with(&format!("~/lab.toml):{typed}_")), "{shown}");
+        assert!(
+            shown.contains(&squeezed(&format!("save as: {typed}_"))),
+            "{shown}"
+        );
         // a correction: the reason goes
         press(&mut app, KeyCode::Backspace);
         assert!(!bottom(&app, 3).contains(&squeezed(why)));
@@ -145,7 +149,7 @@ fn a_folder_that_cannot_be_written_is_named_with_the_file_not_a_temporary_one() 
         create_folder: false,
     };
     let preset = Box::new(bundled("polymer-coating.toml"));
-    let Msg::Saved(_, _, Err(why)) = crate::tui::effects::save(target, preset, false) else {
+    let Msg::Saved(_, _, Err(why)) = crate::tui::effects::save(target, preset, false, &[]) else {
         panic!("saved in {}", folder.display())
     };
     assert_eq!(
@@ -229,4 +233,58 @@ fn broken_files_in_the_preset_folder_are_listed_with_their_errors_and_cost_no_ed
         assert_eq!(app.doc.preset, edited);
         assert!(app.doc.dirty);
     }
+}
+
+#[test]
+fn an_edited_shared_or_bundled_preset_is_proposed_as_a_copy_in_your_folder() {
+    // bundled, edited: "<file>-edited" in the user's folder
+    let mut edited = prompting();
+    edited.doc.source = Some("bundled: polymer-coating.toml".into());
+    press(&mut edited, KeyCode::Esc);
+    press(&mut edited, KeyCode::Char('s'));
+    assert_eq!(
+        edited.ui.mode,
+        Mode::SaveAs(TextField::proposed("polymer-coating-edited"))
+    );
+    let s = screen(&edited, 120, 40, PLAIN);
+    assert!(
+        s.contains("-> /data/presets/polymer-coating-edited.toml"),
+        "{s}"
+    );
+    // a shared file, unedited: its name, in the user's folder (not its own folder)
+    let mut app = app("hertz-check.toml");
+    app.places.presets = Some("/data/presets".into());
+    app.doc.path = Some("/labs/shared/week3.toml".into());
+    press(&mut app, KeyCode::Char('s'));
+    assert_eq!(app.ui.mode, Mode::SaveAs(TextField::proposed("week3")));
+    assert!(screen(&app, 120, 40, PLAIN).contains("-> /data/presets/week3.toml"));
+}
+
+#[test]
+fn a_link_into_a_shared_folder_is_replaced_by_your_copy_and_the_original_stays() {
+    let dir = tempfile::tempdir().unwrap();
+    let (shared, mine) = (dir.path().join("shared"), dir.path().join("mine"));
+    std::fs::create_dir_all(&shared).unwrap();
+    std::fs::create_dir_all(&mine).unwrap();
+    let original = shared.join("week3.toml");
+    let text = crate::preset::BUNDLED[1].text;
+    std::fs::write(&original, text).unwrap();
+    let link = mine.join("week3.toml");
+    std::os::unix::fs::symlink(&original, &link).unwrap();
+    let target = crate::preset::SaveTarget {
+        path: link.clone(),
+        create_folder: true,
+    };
+    let preset = Box::new(bundled("polymer-coating.toml"));
+    let saved = crate::tui::effects::save(target, preset, true, std::slice::from_ref(&shared));
+    let Msg::Saved(_, _, Ok(said)) = saved else {
+        panic!("{saved:?}")
+    };
+    assert!(said.contains("as your own copy"), "{said}");
+    assert_eq!(std::fs::read_to_string(&original).unwrap(), text);
+    assert!(!std::fs::symlink_metadata(&link).unwrap().is_symlink());
+    assert_eq!(
+        crate::preset::load(&link).unwrap().name,
+        bundled("polymer-coating.toml").name
+    );
 }

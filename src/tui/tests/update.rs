@@ -65,7 +65,7 @@ fn enter_types_a_value_with_units_and_refuses_garbage_keeping_the_text() {
     let mut app = app("polymer-coating.toml");
     select(&mut app, "E", None);
     press(&mut app, KeyCode::Enter);
-    assert_eq!(app.ui.mode, Mode::Editing(String::new()));
+    assert_eq!(app.ui.mode, Mode::Editing(Default::default()));
     assert_eq!(message(&app), "type E (1e2 <= E <= 1e13 (Pa))");
     type_text(&mut app, "7 GPa");
     assert_eq!(press(&mut app, KeyCode::Enter).len(), 1);

@@ -6,6 +6,7 @@ use ratatui::style::Style;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
+use crate::preset::resolve_save_path;
 use crate::tui::app::{App, Mode};
 use crate::tui::keys;
 use crate::tui::prompt_keys::{self, Prompt};
@@ -32,10 +33,19 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
 /// the preset's name.
 fn message(app: &App, style: RenderOptions) -> (String, Style) {
     let (text, st) = match &app.ui.mode {
-        Mode::SaveAs(buffer) => (
-            format!("save as (a name, or a path such as ~/lab.toml): {buffer}_"),
-            Style::default(),
-        ),
+        Mode::SaveAs(buffer) => {
+            // where the name goes, said before anything is written
+            let places = &app.places;
+            let home = places.home.as_deref();
+            let goes = match resolve_save_path(buffer.text(), home, places.presets.as_deref()) {
+                Ok(target) => format!("-> {}", target.path.display()),
+                Err(_) => "(a name, or a path such as ~/lab.toml)".into(),
+            };
+            (
+                format!("save as: {} {goes}", buffer.shown()),
+                Style::default(),
+            )
+        }
         Mode::ConfirmOverwrite(target) => (
             format!("{} exists: overwrite? y/n", target.path.display()),
             style.error(),

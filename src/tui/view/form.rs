@@ -34,7 +34,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         }
         let selected = i == app.ui.selected;
         let value = match (&app.ui.mode, selected) {
-            (Mode::Editing(buffer), true) => tail(&format!("{buffer}_"), width),
+            (Mode::Editing(buffer), true) => tail(&buffer.shown(), width),
             _ => form::show(&app.doc.preset, row),
         };
         let text = format!("  {:<LABEL$}{value:>width$}", row.param().symbol);
