@@ -58,7 +58,7 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 43] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 45] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -97,8 +97,10 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 43] = [
     (Prompt::Question, key(KeyCode::Esc), PromptAction::No, "Esc no"),
     (Prompt::Form, key(KeyCode::Up), PromptAction::Up, "↑↓ row"),
     (Prompt::Form, key(KeyCode::Down), PromptAction::Down, ""),
-    (Prompt::Form, key(KeyCode::Left), PromptAction::Left, "←→ choose"),
+    (Prompt::Form, key(KeyCode::Left), PromptAction::Left, "←→ choose or edit"),
     (Prompt::Form, key(KeyCode::Right), PromptAction::Right, ""),
+    (Prompt::Form, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Form, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::Form, key(KeyCode::Backspace), PromptAction::Backspace, "type ⌫"),
     (Prompt::Form, key(KeyCode::Enter), PromptAction::Accept, "⏎ show"),
     (Prompt::Form, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),

@@ -8,6 +8,7 @@
 use crate::physics::Spacing;
 use crate::physics::limits;
 use crate::sweeps::Axis;
+use crate::tui::text_field::TextField;
 use crate::units::parse_si;
 
 use crate::sweeps::curve::CurveSpec;
@@ -63,6 +64,22 @@ pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
         }
         Some(PromptAction::Up) => form.row = form.row.checked_sub(1).unwrap_or(rows - 1),
         Some(PromptAction::Down) => form.row = (form.row + 1) % rows,
+        Some(action @ (PromptAction::Left | PromptAction::Right))
+            if text_of(&mut form).is_some() =>
+        {
+            if let Some(text) = text_of(&mut form) {
+                text.move_cursor(if action == PromptAction::Left { -1 } else { 1 });
+            }
+        }
+        Some(action @ (PromptAction::First | PromptAction::Last)) => {
+            if let Some(text) = text_of(&mut form) {
+                text.move_cursor(if action == PromptAction::First {
+                    isize::MIN
+                } else {
+                    isize::MAX
+                });
+            }
+        }
         Some(action @ (PromptAction::Left | PromptAction::Right)) => {
             let up = action == PromptAction::Right;
             match form.field() {
@@ -88,7 +105,7 @@ pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
         }
         Some(PromptAction::Backspace) => {
             if let Some(text) = text_of(&mut form) {
-                text.pop();
+                text.backspace();
             }
         }
         _ => {
@@ -97,7 +114,7 @@ pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
                 .intersects(KeyModifiers::CONTROL | KeyModifiers::ALT);
             if let (KeyCode::Char(c), false) = (key.code, chord) {
                 match text_of(&mut form) {
-                    Some(text) => text.push(c),
+                    Some(text) => text.insert(c),
                     None => app.complain("this row is a choice: ←→ change it"),
                 }
             }
@@ -107,7 +124,7 @@ pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
     Vec::new()
 }
 
-fn text_of(form: &mut SweepForm) -> Option<&mut String> {
+fn text_of(form: &mut SweepForm) -> Option<&mut TextField> {
     match form.field() {
         Field::From(n) => Some(&mut form.axes[n].from),
         Field::To(n) => Some(&mut form.axes[n].to),
@@ -125,11 +142,11 @@ pub fn axis(app: &App, draft: &Draft) -> Result<Axis, String> {
         parse_si(text, param.unit)
             .map_err(|why| format!("{}: {end} = {why} (allowed {allowed})", key.symbol()))
     };
-    let points: usize = draft.points.trim().parse().map_err(|_| {
+    let points: usize = draft.points.text().trim().parse().map_err(|_| {
         format!(
             "{}: points = '{}' is not a whole number: allowed {}",
             key.symbol(),
-            draft.points,
+            draft.points.text(),
             limits::SWEEP_POINTS.allowed
         )
     })?;
@@ -138,7 +155,10 @@ pub fn axis(app: &App, draft: &Draft) -> Result<Axis, String> {
     } else {
         Spacing::Linear
     };
-    let ends = [value("from", &draft.from)?, value("to", &draft.to)?];
+    let ends = [
+        value("from", draft.from.text())?,
+        value("to", draft.to.text())?,
+    ];
     Axis::new(&app.doc.preset, key, ends, points, spacing)
 }
 

@@ -8,6 +8,7 @@ use crate::preset::{Key, Preset};
 use crate::sweeps::curve::CurveSpec;
 use crate::sweeps::map::MapSpec;
 use crate::sweeps::{Axis, Opening, QuantityKey, opening};
+use crate::tui::text_field::TextField;
 use crate::units::format_si_exact;
 
 /// What the chart area shows instead of the charts.
@@ -60,11 +61,11 @@ pub struct Draft {
     /// The parameter.
     pub key: Key,
     /// The first value, as typed (the parameter's unit when none is typed).
-    pub from: String,
+    pub from: TextField,
     /// The last value.
-    pub to: String,
+    pub to: TextField,
     /// The number of points.
-    pub points: String,
+    pub points: TextField,
     /// Log spacing (else linear).
     pub log: bool,
 }
@@ -74,9 +75,9 @@ impl Draft {
     pub fn of(axis: &Axis) -> Draft {
         Draft {
             key: axis.key,
-            from: format_si_exact(axis.range.min, axis.key.param().unit),
-            to: format_si_exact(axis.range.max, axis.key.param().unit),
-            points: axis.range.points.to_string(),
+            from: TextField::proposed(format_si_exact(axis.range.min, axis.key.param().unit)),
+            to: TextField::proposed(format_si_exact(axis.range.max, axis.key.param().unit)),
+            points: TextField::proposed(axis.range.points.to_string()),
             log: axis.range.spacing == Spacing::Log,
         }
     }

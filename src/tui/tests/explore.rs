@@ -300,8 +300,8 @@ fn the_default_ranges_are_accepted_and_the_command_runs_the_sweep_on_screen() {
                 "{} {}: from {} to {}: {:?}",
                 b.file,
                 draft.key,
-                draft.from,
-                draft.to,
+                draft.from.text(),
+                draft.to.text(),
                 app.ui.message
             );
             let shown = app.explore.curve.as_ref().unwrap().axis;
@@ -404,4 +404,27 @@ fn the_legend_names_only_the_dim_parts_that_show() {
     let s = screen(&app, 80, 24, PLAIN);
     assert!(s.contains("mu* narrow: off scale"), "{s}");
     assert!(!s.contains("narrow fails"), "{s}");
+}
+
+#[test]
+fn typing_into_a_sweep_field_replaces_its_value_at_a_visible_cursor() {
+    let mut app = app("polymer-coating.toml");
+    press(&mut app, KeyCode::Char('v'));
+    press(&mut app, KeyCode::Down);
+    let Mode::Form(form) = &app.ui.mode else {
+        panic!()
+    };
+    let proposed = form.axes[0].from.text().to_string();
+    assert!(screen(&app, 80, 24, PLAIN).contains(&format!("[{proposed}]_")));
+    for c in "0.1".chars() {
+        press(&mut app, KeyCode::Char(c));
+    }
+    press(&mut app, KeyCode::Left);
+    press(&mut app, KeyCode::Char('5'));
+    let Mode::Form(form) = &app.ui.mode else {
+        panic!()
+    };
+    assert_eq!(form.axes[0].from.text(), "0.51");
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("0.5|1"), "{s}");
 }

@@ -8,6 +8,7 @@
 use crate::engine::sweep_worker::SweepResult;
 use crate::sweeps::groups::of_input;
 use crate::sweeps::{Opening, opening};
+use crate::tui::text_field::TextField;
 use crate::units::format_si;
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -287,9 +288,12 @@ pub fn form(form: &SweepForm, style: RenderOptions, frame: &mut Frame, area: Rec
                         format!("◀ {}: {} [{unit}] ▶", k.symbol(), p.label),
                     )
                 }
-                Field::From(n) => ("  from".into(), form.axes[n].from.clone()),
-                Field::To(n) => ("  to".into(), form.axes[n].to.clone()),
-                Field::Points(n) => ("  points".into(), form.axes[n].points.clone()),
+                Field::From(n) => ("  from".into(), typed(&form.axes[n].from, i == form.row)),
+                Field::To(n) => ("  to".into(), typed(&form.axes[n].to, i == form.row)),
+                Field::Points(n) => (
+                    "  points".into(),
+                    typed(&form.axes[n].points, i == form.row),
+                ),
                 Field::Scale(n) => (
                     "  scale".into(),
                     if form.axes[n].log {
@@ -337,4 +341,14 @@ pub fn form(form: &SweepForm, style: RenderOptions, frame: &mut Frame, area: Rec
             .map(|l| Line::styled(l, Style::default())),
     );
     frame.render_widget(Paragraph::new(lines), inner);
+}
+
+/// A typed field of the form: on the selected row with its cursor (`TextField::shown`), else its
+/// text.
+fn typed(field: &TextField, selected: bool) -> String {
+    if selected {
+        field.shown()
+    } else {
+        field.text().to_string()
+    }
 }
