@@ -13,3 +13,4 @@ pub mod sweeps;
 #[cfg(feature = "explorer")]
 pub mod tui;
 pub mod units;
+pub mod views;

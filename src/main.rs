@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 
 mod cli;
 
-use cli::{Format, explorer, solve, sweep};
+use cli::{Format, check, explorer, solve, sweep};
 use wearlab::tui;
 
 #[derive(Parser)]
@@ -82,6 +82,14 @@ enum Command {
         #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
         max_seconds: Option<f64>,
     },
+    /// Print the answer key of a preset's lesson: each question with the program's answer.
+    Check {
+        /// The preset file (TOML, schema 1) with a [lesson] section.
+        preset: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = check::CheckFormat::Text)]
+        format: check::CheckFormat,
+    },
 }
 
 fn main() -> ExitCode {
@@ -123,6 +131,7 @@ fn main() -> ExitCode {
             format,
             max_seconds,
         }),
+        Some(Command::Check { preset, format }) => check::run(&preset, format),
         None => explorer::run(
             cli.preset,
             tui::Options {

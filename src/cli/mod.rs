@@ -11,6 +11,7 @@ use wearlab::finite;
 use wearlab::physics::SolveError;
 use wearlab::preset::{self, Preset};
 
+pub mod check;
 pub mod explorer;
 pub mod solve;
 pub mod solve_output;

@@ -23,7 +23,7 @@ pub fn parse(preset: &Preset, list: &str) -> Result<Vec<QuantityKey>, String> {
 
 /// A number as text: plain between 1e-3 and 1e6, in exponent form outside (both the shortest
 /// that reads back to the same f64).
-fn number(v: f64) -> String {
+pub fn number(v: f64) -> String {
     if v == 0.0 || (1e-3..1e6).contains(&v.abs()) {
         format!("{v}")
     } else {

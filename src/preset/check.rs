@@ -1,5 +1,5 @@
 //! The checks of a preset file: every value against `physics::limits`, the sections a problem
-//! needs, the sweep's order, the `[explore]` section; each refusal is `path:line: reason`.
+//! needs, the sweep's order, the `[explore]` and `[lesson]` sections; each refusal is `path:line: reason`.
 
 use std::cell::RefCell;
 use std::ops::Range;
@@ -18,7 +18,7 @@ use crate::preset::{
     PlaneSection, Preset, PresetError, Problem, SCHEMA, SpatialSection, default_load_sweep,
     default_plane_section, default_pressure_sweep, default_spatial_section,
 };
-use crate::preset::{disk, plausible, wording};
+use crate::preset::{disk, lesson, plausible, wording};
 use crate::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use crate::sweeps::quantity::QuantityKey;
 
@@ -184,6 +184,7 @@ pub fn parse_with_warnings(
         plane,
         spatial,
         explore: None,
+        lesson: None,
     };
     if !duration_given {
         preset.spatial.duration = preset.auto_duration();
@@ -191,6 +192,9 @@ pub fn parse_with_warnings(
     // the section that names keys and outputs is checked against the preset it belongs to
     if let Some(e) = &file.explore {
         preset.explore = Some(ck.explore(e, &preset)?);
+    }
+    if let Some(l) = &file.lesson {
+        preset.lesson = Some(lesson::read(l, &preset, &|span, why| ck.error(span, why))?);
     }
     Ok((preset, ck.warnings.into_inner()))
 }

@@ -10,6 +10,7 @@ use toml::Spanned;
 use crate::physics::Spacing;
 use crate::physics::plane::Model;
 use crate::preset::explore_section::Explore;
+use crate::preset::lesson::{self, FileLesson};
 use crate::preset::written::Written;
 use crate::preset::{Preset, Problem, SCHEMA, SpatialSection, default_spatial_section, disk};
 use crate::sweeps::axis::Axis;
@@ -117,6 +118,8 @@ pub(super) struct FilePreset {
     pub(super) spatial: Option<Spanned<FileSpatial>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) explore: Option<Spanned<FileExplore>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) lesson: Option<Spanned<FileLesson>>,
 }
 
 #[derive(Deserialize, Serialize)]
@@ -186,6 +189,7 @@ pub fn to_toml(preset: &Preset) -> String {
         })),
         spatial: Some(plain(spatial_file(&preset.spatial))),
         explore: preset.explore.as_ref().map(|e| plain(explore_file(e))),
+        lesson: preset.lesson.as_ref().map(|l| plain(lesson::to_file(l))),
     };
     toml::to_string(&file).expect("a preset always serializes")
 }

@@ -9,6 +9,9 @@ mod file;
 #[cfg(test)]
 mod hand_written_tests;
 mod key;
+mod lesson;
+#[cfg(test)]
+mod lesson_tests;
 mod params;
 mod plausible;
 mod wording;
@@ -30,6 +33,7 @@ pub use disk::{Links, MAX_PRESET_BYTES, kept_by_save, leads_into, write_atomical
 pub use explore_section::Explore;
 pub use file::{SaveTarget, resolve_save_path, save, save_with, to_toml};
 pub use key::Key;
+pub use lesson::{DEFAULT_TOLERANCE, Lesson, Question, Tolerance, grade};
 pub use params::{Access, PARAMS, Param};
 
 /// The schema version this build reads and writes.
@@ -108,6 +112,8 @@ pub struct Preset {
     pub spatial: SpatialSection,
     /// The sweep or map the preset's lesson is about (`[explore]`, optional).
     pub explore: Option<Explore>,
+    /// The view to open on, the locked keys and the questions (`[lesson]`, optional).
+    pub lesson: Option<Lesson>,
 }
 
 impl Preset {

@@ -9,6 +9,8 @@ use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
 use crate::tui::form::{self, Change};
 use crate::tui::keys::Action;
+use crate::tui::lesson_keys;
+use crate::tui::lesson_state::{LessonState, invitation};
 use crate::tui::map_cursor;
 use crate::tui::sweep_form_keys;
 use crate::tui::sweep_keys;
@@ -24,10 +26,16 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
     match action {
         Action::PrevField => {
             app.ui.selected = app.ui.selected.checked_sub(1).unwrap_or(rows - 1);
+            lesson_keys::say_if_locked(app);
             Vec::new()
         }
         Action::NextField => {
             app.ui.selected = (app.ui.selected + 1) % rows;
+            lesson_keys::say_if_locked(app);
+            Vec::new()
+        }
+        Action::Nudge { .. } | Action::Edit if lesson_keys::locked(app, app.row()) => {
+            app.complain(lesson_keys::why_locked(app, app.row()));
             Vec::new()
         }
         Action::Nudge { up, large } => {
@@ -146,6 +154,10 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
                 app.doc.preset = previous;
                 app.doc.dirty = true;
                 app.fit();
+                // undoing an open brings back the other preset's lesson
+                if app.doc.preset.lesson != app.lesson.preset.lesson {
+                    app.lesson = LessonState::opened(&app.doc.preset);
+                }
                 app.say(format!(
                     "undo: {} {} -> {}",
                     change.name, change.to, change.from
@@ -165,6 +177,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.ui.mode = Mode::About(0);
             Vec::new()
         }
+        Action::Questions => lesson_keys::open(app),
         Action::Quit => quit(app),
     }
 }
@@ -184,6 +197,10 @@ fn set(app: &mut App, value: f64) -> Vec<Command> {
 /// Replaces the preset by an edited one (undo keeps the old) and asks for a solve.
 pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     if next == app.doc.preset {
+        return Vec::new();
+    }
+    if let Some(key) = lesson_keys::locked_change(&app.doc.preset, &next) {
+        app.complain(lesson_keys::why_locked(app, key));
         return Vec::new();
     }
     let previous = std::mem::replace(&mut app.doc.preset, next);
@@ -219,10 +236,12 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.doc.source = Some(entry.source.clone());
     app.doc.dirty = false;
     app.ui.selected = 0;
-    app.ui.chart = Chart::first(app.doc.preset.problem);
+    app.ui.chart = Chart::opening(&app.doc.preset);
+    app.lesson = LessonState::opened(&app.doc.preset);
     sweep_keys::reopen(app);
     app.ui.playing = false;
-    app.say(format!("opened {}", entry.source));
+    let lesson = invitation(&app.doc.preset).map_or(String::new(), |l| format!("; {l}"));
+    app.say(format!("opened {}{lesson}", entry.source));
     vec![app.request()]
 }
 

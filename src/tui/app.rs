@@ -13,6 +13,7 @@ use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
+use crate::tui::lesson_state::{LessonState, Quiz, invitation};
 use crate::tui::sweep_state::Explore;
 use crate::tui::sweep_state::SweepForm;
 
@@ -103,6 +104,8 @@ pub enum Mode {
     ConfirmQuit(Box<Mode>),
     /// Choosing the axes and the quantity of a sweep or a map (`v`, `M`).
     Form(Box<SweepForm>),
+    /// Answering the lesson's questions (`a`).
+    Questions(Quiz),
 }
 
 /// A preset the picker offers.
@@ -251,6 +254,8 @@ pub enum Msg {
     Exported(PathBuf, Result<(), String>),
     /// The explorer's thread answered (a pass of) a sweep or a map.
     Explored(Box<SweepAnswer>),
+    /// The program's answers to the lesson's questions at these inputs (each SI, or why not).
+    LessonAnswered(Box<Preset>, Vec<Result<f64, String>>),
 }
 
 /// What the loop must do after an update (the I/O and the solving happen there).
@@ -286,6 +291,8 @@ pub enum Command {
     /// Compute this sweep or map on the explorer's thread (cancelling older work), answered
     /// by `SweepResult`.
     Explore(u64, Box<SweepRequest>),
+    /// Answer the lesson's questions at these inputs, answered by `LessonAnswered`.
+    AnswerLesson(Box<Preset>),
     /// Leave.
     Quit,
 }
@@ -315,6 +322,8 @@ pub struct App {
     pub ui: Ui,
     /// The sweep chart and the regime map.
     pub explore: Explore,
+    /// The preset's lesson: its questions' answers.
+    pub lesson: LessonState,
 }
 
 impl App {
@@ -323,11 +332,12 @@ impl App {
         App {
             places,
             explore: Explore::opened(&preset),
+            lesson: LessonState::opened(&preset),
             ui: Ui {
                 selected: 0,
                 mode: Mode::Normal,
-                chart: Chart::first(preset.problem),
-                message: None,
+                chart: Chart::opening(&preset),
+                message: invitation(&preset).map(|text| Message { text, error: false }),
                 playing: false,
                 export_waiting: None,
                 cursor: None,

@@ -1,5 +1,5 @@
 //! The loop's I/O, carried out for `update`'s commands and reported back as messages: listing
-//! the presets, saving, exporting.
+//! the presets, saving, exporting, answering a lesson's questions.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -142,4 +142,14 @@ pub fn export(path: PathBuf, text: String, overwrite: bool) -> Msg {
     let written = preset::write_atomically(&path, Links::Follow, |f| f.write_all(text.as_bytes()));
     let result = written.map_err(|e| e.to_string());
     Msg::Exported(path, result)
+}
+
+/// The program's answers to the preset's lesson questions, each at the question's inputs, as
+/// `wearlab check` computes them (a spatial preset in partial contact runs its running-in here).
+pub fn answer_lesson(preset: Preset) -> Msg {
+    let values = (preset.lesson.iter())
+        .flat_map(|l| &l.questions)
+        .map(|q| q.solve(&preset).map_err(|e| e.to_string()))
+        .collect();
+    Msg::LessonAnswered(Box::new(preset), values)
 }

@@ -173,6 +173,7 @@ impl<B: Backend> Loop<B> {
                         text,
                         overwrite,
                     } => effects::export(path, text, overwrite),
+                    Command::AnswerLesson(preset) => effects::answer_lesson(*preset),
                     Command::Quit => return false,
                 };
                 reports.push(report);

@@ -99,6 +99,8 @@ pub enum Action {
     Undo,
     /// Show the preset's name and whole description.
     About,
+    /// Answer the questions of the preset's lesson.
+    Questions,
     /// Show the help.
     Help,
     /// Quit (asks when there are unsaved edits).
@@ -199,7 +201,7 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 22] = [
+pub const BINDINGS: [Binding; 23] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
@@ -306,6 +308,11 @@ pub const BINDINGS: [Binding; 22] = [
         &[(ch('i'), Action::About)],
         "i", "about this preset: its name and whole description (Up/Down, PgUp/PgDn scroll; Esc closes)",
         ("i", "about", "", 5), None,
+    ),
+    binding(
+        &[(ch('a'), Action::Questions)],
+        "a", "answer the lesson's questions, in a preset that has them: type an answer with its unit (52 um, 0.39) and Enter says right or not; rows marked = are locked by the lesson",
+        ("", "", "", 0), None,
     ),
     binding(
         &[(ch('?'), Action::Help)],

@@ -12,6 +12,8 @@ pub mod event_loop;
 pub mod form;
 pub mod glossary;
 pub mod keys;
+pub mod lesson_keys;
+pub mod lesson_state;
 pub mod map_cursor;
 pub mod on_screen;
 pub mod picker_keys;

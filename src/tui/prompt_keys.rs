@@ -54,11 +54,13 @@ pub enum Prompt {
     Question,
     /// A form of several rows (the sweep's and the map's axes).
     Form,
+    /// The lesson's questions, an answer being typed.
+    Quiz,
 }
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 45] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 50] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -104,6 +106,11 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 45] = [
     (Prompt::Form, key(KeyCode::Backspace), PromptAction::Backspace, "type ⌫"),
     (Prompt::Form, key(KeyCode::Enter), PromptAction::Accept, "⏎ show"),
     (Prompt::Form, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
+    (Prompt::Quiz, key(KeyCode::Up), PromptAction::Up, "↑↓ question"),
+    (Prompt::Quiz, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Quiz, key(KeyCode::Enter), PromptAction::Accept, "⏎ check"),
+    (Prompt::Quiz, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
+    (Prompt::Quiz, key(KeyCode::Esc), PromptAction::Cancel, "Esc close"),
 ];
 
 /// What a key does in a prompt, if anything.

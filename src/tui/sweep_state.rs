@@ -42,10 +42,16 @@ pub struct Explore {
 }
 
 impl Explore {
-    /// The state for a newly opened preset: on its `[explore]` section's view, if it has one.
+    /// The state for a newly opened preset: on its `[explore]` section's view, if it has one,
+    /// unless its lesson opens on a chart.
     pub fn opened(preset: &Preset) -> Explore {
+        let on_chart = matches!(
+            preset.lesson.as_ref().and_then(|l| l.view),
+            Some(crate::views::View::Chart(_))
+        );
         Explore {
             view: match opening(preset) {
+                _ if on_chart => None,
                 Some(Ok(Opening::Curve(_))) => Some(View::Sweep),
                 Some(Ok(Opening::Map(_))) => Some(View::Map),
                 _ => None,

@@ -73,6 +73,10 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             crate::tui::sweep_keys::on_answer(app, *answer);
             Vec::new()
         }
+        Msg::LessonAnswered(preset, values) => {
+            crate::tui::lesson_keys::answered(app, *preset, values);
+            Vec::new()
+        }
         Msg::ExportExists(path, text) => {
             app.ui.mode = Mode::ConfirmExport(Box::new((path, text)));
             Vec::new()
@@ -173,6 +177,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                 prompt_keys::scrolled(&key, scroll, last).map_or(Mode::Normal, Mode::Help);
             Vec::new()
         }
+        Mode::Questions(quiz) => crate::tui::lesson_keys::key(app, key, quiz),
         Mode::About(scroll) => {
             let last = crate::tui::view::popups::about_last(app, windows_on_last_screen(app));
             app.ui.mode =

@@ -1,6 +1,7 @@
-//! `wearlab solve` and `wearlab sweep` as a script sees them: the JSON and CSV contract of
+//! `wearlab solve`, `wearlab sweep` and `wearlab check` as a script sees them: the JSON and CSV contract of
 //! `docs/cli.md`, `--set`, exit codes and messages, hostile command lines.
 
+mod check;
 mod cli;
 mod cli_set;
 mod cli_sweep;

@@ -1,7 +1,8 @@
-//! The charts as data: each problem's charts are an enum, and each chart has a title, a help
-//! text and a pure builder from an engine answer to the figure it draws. The view draws that
-//! figure and `e` exports it, so what is exported is by construction what is drawn. A new chart
-//! is one variant and one arm of its problem's `spec` (title, help, builder).
+//! The charts as data: each problem's charts are an enum (`crate::views`, which holds their
+//! titles), and each chart has a help text and a pure builder from an engine answer to the figure
+//! it draws. The view draws that figure and `e` exports it, so what is exported is by
+//! construction what is drawn. A new chart is one variant and its title in `views`, and one arm
+//! of its problem's `spec` here (help, builder).
 
 pub mod contact;
 pub mod export;
@@ -16,8 +17,10 @@ pub mod sweep;
 pub mod ticks;
 
 use crate::engine::{Answer, Output, PlaneOutput, SpatialOutput};
-use crate::preset::{Preset, Problem};
-use strum::VariantArray;
+use crate::preset::Preset;
+
+use crate::views::View;
+pub use crate::views::{Chart, PlaneChart, SpatialChart};
 
 pub use ticks::Scale;
 
@@ -167,48 +170,30 @@ type Build<O> = fn(&Preset, &O) -> Result<Figure, NoFigure>;
 
 /// A chart's definition.
 struct ChartSpec<O> {
-    title: &'static str,
     help: &'static str,
     overlays: bool,
     build: Build<O>,
-}
-
-/// The charts of the plane problem, in Tab order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, VariantArray)]
-pub enum PlaneChart {
-    /// q2 and q1 against x.
-    Pressure,
-    /// Wear per pass and wear rate against x.
-    Wear,
-    /// mu* against load, the other models overlaid.
-    MuStar,
-    /// a and b against load.
-    Edges,
 }
 
 impl PlaneChart {
     fn spec(self) -> ChartSpec<PlaneOutput> {
         match self {
             Self::Pressure => ChartSpec {
-                title: "pressure and shear",
                 help: "Pressure q2(x) and shear q1 = mu q2 + tau0 over the contact [-a, b]; b is the leading edge. A peak behind the tip (a > b) means friction dominates, ahead of it wear.",
                 overlays: false,
                 build: plane::pressure,
             },
             Self::Wear => ChartSpec {
-                title: "wear",
                 help: "Wear per pass: the depth a strip point loses while the punch passes over it (k times the integral of q2 from x to b). Wear rate k q2: depth per unit sliding distance.",
                 overlays: false,
                 build: plane::wear,
             },
             Self::MuStar => ChartSpec {
-                title: "mu* against load",
                 help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The 'now' marker is the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
                 overlays: true,
                 build: plane::mu_star,
             },
             Self::Edges => ChartSpec {
-                title: "contact edges against load",
                 help: "Contact edges a (trailing) and b (leading) against load, for the preset's model.",
                 overlays: false,
                 build: plane::edges,
@@ -217,50 +202,30 @@ impl PlaneChart {
     }
 }
 
-/// The charts of the spatial problem, in Tab order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, VariantArray)]
-pub enum SpatialChart {
-    /// p(x, y) over the period cell.
-    PressureMap,
-    /// p and U along the middle line.
-    Line,
-    /// A_n(t) and mu*(t).
-    History,
-    /// mu* against pbar.
-    MuStar,
-    /// c against kh.
-    Dispersion,
-}
-
 impl SpatialChart {
     fn spec(self) -> ChartSpec<SpatialOutput> {
         match self {
             Self::PressureMap => ChartSpec {
-                title: "pressure map",
                 help: "Contact pressure over one period cell in bands of a round step, one colour (or shade) each; the bar labels every band's edges, the words beside it give the unit and the step. In partial contact the zones out of contact (p = 0) are drawn apart, in grey (without colour, · or ~), named beside the bar. The layer slides towards -x; friction on it points to +x. The bands are coarse: x shows a cursor X (from the middle), [ ] move it along x, { } along y, and the status reads x, y and p there.",
                 overlays: false,
                 build: spatial::pressure_map,
             },
             Self::Line => ChartSpec {
-                title: "pressure and shape along a line",
                 help: "Pressure and shape along the middle line y = const: the pressure leads the shape by the phase lead phi.",
                 overlays: false,
                 build: spatial::line,
             },
             Self::History => ChartSpec {
-                title: "time history",
                 help: "Complete contact: the harmonic amplitudes A_n(t) decaying by wear, and the run-in of mu*(t) towards mu. Partial contact at t = 0: the running-in simulated by wear on the period cell, the contact fraction and mu*(t), with the time at which contact becomes complete marked. The blocks mark the current time; the time slider (Left/Right on t) and space play it.",
                 overlays: false,
                 build: spatial::history,
             },
             Self::MuStar => ChartSpec {
-                title: "mu* against mean pressure",
                 help: "mu* against the mean pressure pbar for the punch as it is at time t, one curve: partial contact below the complete-contact load (marked 'complete'), complete contact above. The 'now' marker is the preset's pbar. Below the complete-contact load the contact set gains or loses whole grid nodes, so mu* moves in small steps: they are the grid's resolution (the grid row of the form), not physics. Solved on the period cell while this chart is visible (without a period cell: only where contact is complete).",
                 overlays: true,
                 build: spatial::mu_star,
             },
             Self::Dispersion => ChartSpec {
-                title: "dispersion: drift velocity",
                 help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards (X* marked where c changes sign). Where the three directions differ by less than a line width the legend says so ('one line') and a second plot draws the 45 and 75 degree curves' differences from the 0 degree one.",
                 overlays: false,
                 build: spatial::dispersion,
@@ -269,62 +234,12 @@ impl SpatialChart {
     }
 }
 
-/// A chart of either problem.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Chart {
-    /// A plane chart.
-    Plane(PlaneChart),
-    /// A spatial chart.
-    Spatial(SpatialChart),
-}
-
 impl Chart {
-    /// The charts of a problem, in Tab order.
-    pub fn all(problem: Problem) -> Vec<Chart> {
-        match problem {
-            Problem::Plane => PlaneChart::VARIANTS
-                .iter()
-                .copied()
-                .map(Chart::Plane)
-                .collect(),
-            Problem::Spatial => (SpatialChart::VARIANTS.iter().copied())
-                .map(Chart::Spatial)
-                .collect(),
-        }
-    }
-
-    /// The first chart of a problem.
-    pub fn first(problem: Problem) -> Chart {
-        Chart::all(problem)[0]
-    }
-
-    /// The problem the chart belongs to.
-    pub fn problem(self) -> Problem {
-        match self {
-            Chart::Plane(_) => Problem::Plane,
-            Chart::Spatial(_) => Problem::Spatial,
-        }
-    }
-
-    /// Position (from 1) and count within its problem, for "2/4".
-    pub fn position(self) -> (usize, usize) {
-        let all = Chart::all(self.problem());
-        let i = all.iter().position(|c| *c == self).expect("listed");
-        (i + 1, all.len())
-    }
-
-    /// The chart `step` places further in Tab order (wrapping).
-    pub fn step(self, step: isize) -> Chart {
-        let all = Chart::all(self.problem());
-        let (i, n) = self.position();
-        all[(i as isize - 1 + step).rem_euclid(n as isize) as usize]
-    }
-
-    /// The title.
-    pub fn title(self) -> &'static str {
-        match self {
-            Chart::Plane(c) => c.spec().title,
-            Chart::Spatial(c) => c.spec().title,
+    /// The chart a preset opens on: its lesson's, else its problem's first.
+    pub fn opening(preset: &Preset) -> Chart {
+        match preset.lesson.as_ref().and_then(|l| l.view) {
+            Some(View::Chart(c)) if c.problem() == preset.problem => c,
+            _ => Chart::first(preset.problem),
         }
     }
 

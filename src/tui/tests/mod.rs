@@ -12,6 +12,7 @@ mod files;
 mod groups;
 mod keys;
 mod legend;
+mod lesson;
 mod map_cursor;
 mod monkey;
 mod partial;

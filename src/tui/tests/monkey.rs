@@ -248,6 +248,9 @@ impl Monkey {
                     } else {
                         Msg::Exported(path, Err("outside the monkey's folder".into()))
                     }),
+                    Command::AnswerLesson(preset) => {
+                        reports.push(effects::answer_lesson(*preset));
+                    }
                     Command::Quit => self.quits += 1,
                 }
             }

@@ -22,6 +22,7 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         Mode::Picker { .. } => Some(Prompt::Picker),
         Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
         Mode::Form(_) => Some(Prompt::Form),
+        Mode::Questions(_) => Some(Prompt::Quiz),
         Mode::ConfirmOverwrite(_)
         | Mode::ConfirmExport(_)
         | Mode::ConfirmOpen(_)

@@ -1,5 +1,6 @@
 //! The form panel: the parameters grouped under headings, the selected row highlighted (showing
-//! the text being typed), scrolled to keep the selection visible.
+//! the text being typed), the rows a lesson locks marked `=`, scrolled to keep the selection
+//! visible.
 
 use crate::preset::Problem;
 use ratatui::Frame;
@@ -37,7 +38,13 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
             (Mode::Editing(buffer), true) => tail(&buffer.shown(), width),
             _ => form::show(&app.doc.preset, row),
         };
-        let text = format!("  {:<LABEL$}{value:>width$}", row.param().symbol);
+        // a key the lesson locks: marked, so that a refused edit is no surprise
+        let mark = if crate::tui::lesson_keys::locked(app, *row) {
+            "= "
+        } else {
+            "  "
+        };
+        let text = format!("{mark}{:<LABEL$}{value:>width$}", row.param().symbol);
         if selected {
             selected_line = lines.len();
             lines.push(Line::from(Span::styled(text, style.selected())));

@@ -12,6 +12,7 @@ pub mod heatmap;
 pub mod hidden;
 pub mod layout;
 pub mod legend;
+pub mod lesson;
 mod long_words;
 pub mod map_readout;
 pub mod picker;
@@ -73,6 +74,7 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         } => picker::draw(entries, *selected, *scroll, filter, style, frame, over),
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
         Mode::Form(form) => sweep::form(form, style, frame, area),
+        Mode::Questions(quiz) => lesson::draw(app, quiz, style, frame, over),
         _ => {}
     }
     style.to_ascii(frame.buffer_mut());

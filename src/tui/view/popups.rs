@@ -71,7 +71,7 @@ pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'st
 
 /// Where the help goes on a screen: over everything but the message and key lines, the whole
 /// width up to 100 columns (so that no border of the screen under it shows beside it).
-pub(super) fn help_rect(screen: Rect) -> Rect {
+pub fn help_rect(screen: Rect) -> Rect {
     let above = Rect {
         height: screen.height.saturating_sub(2),
         ..screen

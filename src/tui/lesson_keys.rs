@@ -1,0 +1,148 @@
+//! The lesson in the explorer (part of `update`: pure): the keys its `[lesson]` locks refuse
+//! every edit with the reason, and the questions window (`a`) grades typed answers against the
+//! program's, which the loop computes once (`Command::AnswerLesson`).
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent};
+
+use crate::preset::{Key, Preset, grade};
+use crate::units::format_si;
+
+use crate::tui::app::{App, Command, Mode};
+use crate::tui::form;
+use crate::tui::lesson_state::{Mark, Quiz};
+use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action};
+
+/// True when the preset's lesson locks this key.
+pub fn locked(app: &App, key: Key) -> bool {
+    (app.doc.preset.lesson.as_ref()).is_some_and(|l| l.locks(key))
+}
+
+/// The first locked key whose value differs between two presets.
+pub fn locked_change(now: &Preset, next: &Preset) -> Option<Key> {
+    let lesson = now.lesson.as_ref()?;
+    lesson
+        .locked
+        .iter()
+        .copied()
+        .find(|k| now.get(*k).ok() != next.get(*k).ok())
+}
+
+/// Why a locked key cannot change.
+pub fn why_locked(app: &App, key: Key) -> String {
+    let value = match key.harmonic_index() {
+        Some(n) if n >= app.doc.preset.spatial.harmonics.len() => String::new(),
+        _ => format!(": it stays {}", form::show(&app.doc.preset, &key)),
+    };
+    format!("{} is locked by the lesson{value}", key.symbol())
+}
+
+/// Says so when the selected row is locked.
+pub fn say_if_locked(app: &mut App) {
+    let row = app.row();
+    if locked(app, row) {
+        app.say(why_locked(app, row));
+    }
+}
+
+/// `a`: opens the questions, asking for the program's answers the first time.
+pub fn open(app: &mut App) -> Vec<Command> {
+    let count = app.lesson.marks.len();
+    if count == 0 {
+        app.complain(
+            "this preset has no lesson questions (docs/lessons.md says how to write them)",
+        );
+        return Vec::new();
+    }
+    app.ui.mode = Mode::Questions(Quiz {
+        selected: 0,
+        typed: String::new(),
+    });
+    app.ui.message = None;
+    match app.lesson.values {
+        Some(_) => Vec::new(),
+        None => vec![Command::AnswerLesson(Box::new(app.lesson.preset.clone()))],
+    }
+}
+
+/// The program's answers arrived (for the lesson's inputs: else they are another preset's).
+pub fn answered(app: &mut App, preset: Preset, values: Vec<Result<f64, String>>) {
+    if preset == app.lesson.preset {
+        app.lesson.values = Some(values);
+    }
+}
+
+/// A key in the questions window.
+pub fn key(app: &mut App, key: KeyEvent, mut quiz: Quiz) -> Vec<Command> {
+    let count = app.lesson.marks.len();
+    match prompt_action(Prompt::Quiz, &key) {
+        Some(PromptAction::Cancel) => {
+            app.ui.mode = Mode::Normal;
+            app.ui.message = None;
+            return Vec::new();
+        }
+        Some(PromptAction::Up) => {
+            quiz.selected = quiz.selected.checked_sub(1).unwrap_or(count - 1);
+            quiz.typed.clear();
+        }
+        Some(PromptAction::Down) => {
+            quiz.selected = (quiz.selected + 1) % count;
+            quiz.typed.clear();
+        }
+        Some(PromptAction::Backspace) => {
+            quiz.typed.pop();
+        }
+        Some(PromptAction::Accept) => check(app, &mut quiz),
+        _ => {
+            if let KeyCode::Char(c) = key.code {
+                quiz.typed.push(c);
+            }
+        }
+    }
+    app.ui.mode = Mode::Questions(quiz);
+    Vec::new()
+}
+
+/// Grades the typed answer of the selected question, or says why it cannot yet.
+fn check(app: &mut App, quiz: &mut Quiz) {
+    let typed = quiz.typed.trim().to_string();
+    if typed.is_empty() {
+        app.say("type your answer with its unit, then Enter");
+        return;
+    }
+    let Some(question) =
+        (app.lesson.preset.lesson.as_ref()).and_then(|l| l.questions.get(quiz.selected))
+    else {
+        return;
+    };
+    let value = match app.lesson.values.as_ref().map(|v| v[quiz.selected].clone()) {
+        None => {
+            app.say("the program is still computing its answers: Enter again in a moment");
+            return;
+        }
+        Some(Err(why)) => {
+            app.complain(format!("the program has no answer to this question: {why}"));
+            return;
+        }
+        Some(Ok(v)) => v,
+    };
+    let quantity = question.answer.quantity();
+    match grade(&typed, value, quantity, question.tolerance) {
+        Err(why) => app.complain(format!("{why}: type the answer again")),
+        Ok(right) => {
+            let verdict = if right { "right" } else { "not right" };
+            let shown = if !question.reveal {
+                String::new()
+            } else if quantity.flag {
+                format!(
+                    " (the program: {})",
+                    if value != 0.0 { "yes" } else { "no" }
+                )
+            } else {
+                format!(" (the program: {})", format_si(value, quantity.unit))
+            };
+            app.say(format!("question {}: {verdict}{shown}", quiz.selected + 1));
+            app.lesson.marks[quiz.selected] = Some(Mark { typed, right });
+            quiz.typed.clear();
+        }
+    }
+}
