@@ -83,6 +83,11 @@ fn a_right_and_a_wrong_answer_are_told_and_only_a_revealed_value_is_shown() {
     // question 3: a in um, revealed
     press(&mut app, KeyCode::Down);
     press(&mut app, KeyCode::Down);
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(
+        s.contains("answer with its unit, m or prefixed (within 2 %):"),
+        "{s}"
+    );
     let a = value(&app, 2);
     type_text(&mut app, &format!("{} um", a * 1e6));
     press(&mut app, KeyCode::Enter);
@@ -141,4 +146,21 @@ fn the_questions_window_at_80x24_and_120x40() {
     type_text(&mut app, "-0.05");
     insta::assert_snapshot!("questions_80x24", screen(&app, 80, 24, PLAIN));
     insta::assert_snapshot!("questions_120x40", screen(&app, 120, 40, PLAIN));
+}
+
+#[test]
+fn undoing_an_open_brings_back_the_lesson() {
+    let mut app = app("friction-half-plane.toml");
+    let other = crate::tui::app::PickerEntry {
+        title: "polymer".into(),
+        source: "bundled: polymer-coating.toml".into(),
+        path: None,
+        preset: Ok(super::bundled("polymer-coating.toml")),
+        folder: "lab".into(),
+    };
+    crate::tui::actions::open(&mut app, other);
+    assert!(app.lesson.marks.is_empty());
+    press(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.lesson.marks.len(), 3);
+    assert_eq!(app.lesson.preset.name, app.doc.preset.name);
 }

@@ -8,7 +8,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::preset::{Question, Tolerance};
-use crate::units::format_si;
+use crate::units::{format_si, prefixable};
 
 use crate::tui::app::App;
 use crate::tui::lesson_state::Quiz;
@@ -40,6 +40,9 @@ fn asked(q: &Question) -> String {
     };
     match quantity.unit {
         "" => format!("answer (within {within})"),
+        unit if prefixable(unit) => {
+            format!("answer with its unit, {unit} or prefixed (within {within})")
+        }
         unit => format!("answer in {unit} (within {within})"),
     }
 }
