@@ -152,7 +152,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::Undo => match app.doc.undo.pop() {
             Some((previous, change)) => {
                 app.doc.preset = previous;
-                app.doc.dirty = true;
+                app.doc.dirty = app.doc.edited();
                 app.fit();
                 // undoing an open brings back the other preset's lesson
                 if app.doc.preset.lesson != app.lesson.preset.lesson {
@@ -214,7 +214,7 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     if app.doc.undo.len() > UNDO_DEPTH {
         app.doc.undo.remove(0);
     }
-    app.doc.dirty = true;
+    app.doc.dirty = app.doc.edited();
     app.fit();
     vec![app.request()]
 }
@@ -232,6 +232,7 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.doc
         .undo
         .push((std::mem::replace(&mut app.doc.preset, preset), change));
+    app.doc.opened = app.doc.preset.clone();
     app.doc.path = entry.path;
     app.doc.source = Some(entry.source.clone());
     app.doc.dirty = false;

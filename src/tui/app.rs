@@ -26,10 +26,23 @@ pub struct Document {
     pub path: Option<PathBuf>,
     /// Where it was read, as `i` says it: its file, or "bundled: <file>" (None: not known).
     pub source: Option<String>,
-    /// Edited since the last save or load.
+    /// Edited since the last save or load (`Document::edited`).
     pub dirty: bool,
+    /// The preset as last opened or saved: what `dirty` and a saved copy's provenance compare
+    /// with.
+    pub opened: Preset,
     /// Earlier presets with the change that left each, newest last.
     pub undo: Vec<(Preset, Change)>,
+}
+
+impl Document {
+    /// Whether the inputs differ from those opened or saved, the time apart: the time shown (t,
+    /// and playing it) is where one looks, not an edit.
+    pub fn edited(&self) -> bool {
+        let mut then = self.opened.clone();
+        then.spatial.time = self.preset.spatial.time;
+        then != self.preset
+    }
 }
 
 /// The smallest terminal the explorer draws in (and the screen assumed before the first draw).
@@ -349,6 +362,7 @@ impl App {
                 screen: ratatui::layout::Rect::new(0, 0, MIN_SIZE.0, MIN_SIZE.1),
             },
             doc: Document {
+                opened: preset.clone(),
                 preset,
                 source: path.as_ref().map(|p| p.display().to_string()),
                 path,

@@ -3,7 +3,7 @@
 //! only the explorer needs: how Left/Right nudge each parameter. A new parameter is one entry of
 //! the registry and one of `STEPS`.
 
-use crate::preset::{Key, Preset};
+use crate::preset::{Key, Preset, Problem};
 use crate::units::{clean, format_si};
 
 /// How Left/Right change a number.
@@ -93,6 +93,29 @@ pub fn show(preset: &Preset, row: &Row) -> String {
         None if param.is_whole() => format!("{v}"),
         None => format_si(v, param.unit),
     }
+}
+
+/// What differs from `from` to `to`, as the form shows it ("mu 0.1 -> 0.3"), the time apart
+/// (where one looks, not an input); a harmonic added or removed is counted.
+pub fn differences(from: &Preset, to: &Preset) -> Vec<String> {
+    let (was, now) = (&from.spatial.harmonics, &to.spatial.harmonics);
+    let mut out: Vec<String> = rows(to)
+        .iter()
+        .filter(|r| r.param().key != "spatial.time")
+        .filter(|r| r.harmonic_index().is_none_or(|n| n < was.len()))
+        .filter(|r| show(from, r) != show(to, r))
+        .map(|r| format!("{} {} -> {}", r.symbol(), show(from, r), show(to, r)))
+        .collect();
+    if from.problem != to.problem {
+        out.insert(
+            0,
+            format!("problem {} -> {}", from.problem.name(), to.problem.name()),
+        );
+    }
+    if to.problem == Problem::Spatial && was.len() != now.len() {
+        out.push(format!("harmonics {} -> {}", was.len(), now.len()));
+    }
+    out
 }
 
 /// A change the form made, for the undo message: "E 3.00 GPa -> 3.30 GPa".

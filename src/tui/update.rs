@@ -8,8 +8,9 @@ use crate::preset::{Problem, resolve_save_path};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::tui::actions::{act, apply, export, open, quit};
-use crate::tui::app::{App, Command, Mode, Msg};
+use crate::tui::app::{App, Command, Document, Mode, Msg};
 use crate::tui::chart_keys;
+use crate::tui::form;
 use crate::tui::keys;
 use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};
@@ -60,7 +61,8 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             match result {
                 Ok(said) => {
                     // edits made while the file was written stay unsaved
-                    app.doc.dirty = app.doc.preset != *preset;
+                    app.doc.opened = *preset;
+                    app.doc.dirty = app.doc.edited();
                     app.say(said);
                     app.doc.source = Some(target.path.display().to_string());
                     app.doc.path = Some(target.path);
@@ -100,8 +102,6 @@ fn tick(app: &mut App) -> Vec<Command> {
     if sp.time > sp.duration {
         sp.time = 0.0;
     }
-    // playing is not an edit to undo, but the time is saved with the preset
-    app.doc.dirty = true;
     vec![app.request()]
 }
 
@@ -349,6 +349,7 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
     match resolve_save_path(&buffer, places.home.as_deref(), places.presets.as_deref()) {
         Ok(target) => {
             app.ui.mode = Mode::Normal;
+            with_provenance(&mut app.doc);
             vec![Command::Save {
                 target,
                 preset: Box::new(app.doc.preset.clone()),
@@ -361,3 +362,28 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
         }
     }
 }
+
+/// Marks an edited preset before it is saved, so that a copy never passes for the original:
+/// its description starts with what changed since it was opened (`Edited from "<name>": mu 0.1
+/// -> 0.3.`) and its name ends in "(edited)".
+fn with_provenance(doc: &mut Document) {
+    let changed = form::differences(&doc.opened, &doc.preset);
+    if changed.is_empty() {
+        return;
+    }
+    let line = format!(
+        "Edited from \"{}\": {}.",
+        doc.opened.name,
+        changed.join(", ")
+    );
+    let p = &mut doc.preset;
+    if !p.description.starts_with(&line) {
+        p.description = format!("{line}\n{}", p.description);
+    }
+    if !p.name.ends_with(EDITED) {
+        p.name = format!("{}{EDITED}", p.name);
+    }
+}
+
+/// The end of an edited copy's name.
+const EDITED: &str = " (edited)";

@@ -288,3 +288,38 @@ fn a_link_into_a_shared_folder_is_replaced_by_your_copy_and_the_original_stays()
         bundled("polymer-coating.toml").name
     );
 }
+
+#[test]
+fn a_saved_edited_copy_says_what_was_edited_and_time_is_no_edit() {
+    let mut spatial = app("contact-lost.toml");
+    let mut app = app("polymer-coating.toml");
+    let opened = app.doc.preset.clone();
+    select(&mut app, "mu", None);
+    press(&mut app, KeyCode::Enter);
+    type_text(&mut app, "0.4");
+    press(&mut app, KeyCode::Enter);
+    assert!(app.doc.dirty);
+    // i says the description was written for other values
+    press(&mut app, KeyCode::Char('i'));
+    let about = screen(&app, 120, 40, PLAIN);
+    assert!(
+        about.contains("edited since opened (mu 0.3 -> 0.4)"),
+        "{about}"
+    );
+    press(&mut app, KeyCode::Esc);
+    press(&mut app, KeyCode::Char('s'));
+    let cmds = press(&mut app, KeyCode::Enter);
+    let [Command::Save { preset, .. }] = cmds.as_slice() else {
+        panic!("{cmds:?}")
+    };
+    assert_eq!(preset.name, format!("{} (edited)", opened.name));
+    let first = preset.description.lines().next().unwrap();
+    assert_eq!(
+        first,
+        format!("Edited from \"{}\": mu 0.3 -> 0.4.", opened.name)
+    );
+    // the time of a spatial preset moves without an edit to save
+    spatial.ui.playing = true;
+    update(&mut spatial, Msg::Tick);
+    assert!(spatial.doc.preset.spatial.time > 0.0 && !spatial.doc.dirty);
+}

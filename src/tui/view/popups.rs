@@ -148,6 +148,18 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
     if let Some(source) = &doc.source {
         lines.extend(wrap(source, width).into_iter().map(Line::from));
     }
+    let changed = crate::tui::form::differences(&doc.opened, &doc.preset);
+    if !changed.is_empty() {
+        let note = format!(
+            "edited since opened ({}): the description below was written for the values as opened",
+            changed.join(", ")
+        );
+        lines.extend(
+            wrap(&note, width)
+                .into_iter()
+                .map(|l| Line::styled(l, style.error())),
+        );
+    }
     lines.extend(paragraphs(&doc.preset.description, width));
     lines
 }
