@@ -16,6 +16,7 @@ pub mod lesson_keys;
 pub mod lesson_state;
 pub mod map_cursor;
 pub mod on_screen;
+pub mod picker_entry;
 pub mod picker_keys;
 pub mod prompt_keys;
 #[cfg(unix)]
