@@ -45,7 +45,7 @@ pub struct MapSpec {
 pub struct Sample {
     /// The quantity (the preset's model), or why there is none.
     pub value: Result<f64, String>,
-    /// Plane: theta (4.5), > 0 friction dominates, < 0 wear dominates.
+    /// Plane: theta (4.5): > 0 friction shifts the edge exponents more than wear, < 0 wear does.
     pub theta: Option<f64>,
     /// Plane: whether the wide model holds here (None: no wide solution).
     pub wide_holds: Option<bool>,

@@ -187,7 +187,7 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("tangential_force", "T", "N/m", "tangential force that drives the punch, T = Q1 + psi (3.11)", |p| Ok(p.solution.tangential_force)),
     plane("a", "a", "m", "trailing half-width: the contact zone is [-a, b]", |p| Ok(p.solution.a)),
     plane("b", "b", "m", "leading half-width (b is the leading edge)", |p| Ok(p.solution.b)),
-    plane("theta", "theta", "", "exponent shift of the pressure, q2 ~ (a+x)^(1/2-theta) (b-x)^(1/2+theta) (4.5): > 0 friction dominates (a > b), < 0 wear dominates (b > a)", |p| exponent(p.solution.theta)).only(EXPONENT).group(),
+    plane("theta", "theta", "", "exponent shift of the pressure, q2 ~ (a+x)^(1/2-theta) (b-x)^(1/2+theta) (4.5), from gamma = pi chi mu/m - k: > 0 friction shifts the edges more than wear, < 0 wear does; which dominates the contact is the sign of mu* - mu (on a half-plane, the same as theta's)", |p| exponent(p.solution.theta)).only(EXPONENT).group(),
     plane("gamma", "gamma", "1/Pa", "gamma = pi chi mu/m - k of (4.3); theta has its sign", |p| exponent(p.solution.gamma)).only(EXPONENT),
     plane("psi", "psi", "N/m", "deformation component of friction, the integral of q2 g' (2.2)", |p| Ok(p.solution.psi)),
     plane("delta_g", "Delta_g", "m", "g(b) - g(-a) (3.11)", |p| Ok(p.solution.delta_g)),

@@ -12,7 +12,7 @@ pub type Entry = (&'static str, &'static str, &'static str);
 #[rustfmt::skip]
 pub const PLANE: [Entry; 9] = [
     ("a, b", "m", "contact zone [-a, b] around the punch tip; b is the leading edge (the punch moves to +x)"),
-    ("theta", "-", "exponent shift of the pressure (wide and strip models; eq. 4.5): > 0 peak behind the tip (friction wins), < 0 ahead (wear wins)"),
+    ("theta", "-", "exponent shift of the pressure at the contact edges (wide and strip models; eq. 4.5), from gamma = pi chi mu/m - k: > 0 where friction shifts the edges more than wear, < 0 where wear does. On a half-plane its sign is which effect dominates; on a strip of finite thickness that is said by mu* - mu and a - b (> 0 and a < b: wear dominates)"),
     ("Q2", "N/m", "normal contact force, the integral of the pressure q2 over the contact"),
     ("psi", "N/m", "deformation component of friction, the integral of q2 g'(x) (eq. 2.2); > 0 adds to friction"),
     ("mu*", "-", "total friction coefficient (T - tau0 (a+b))/P = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P (eq. 3.13): the friction force T less the adhesive part tau0 (a+b), over the load P (T/P only without adhesion)"),

@@ -132,8 +132,11 @@ pub struct PlaneSolution {
     pub a: f64,
     /// Leading half-width b [m].
     pub b: f64,
-    /// Exponent shift theta of the wide solution (4.5), in (-1/2, 1/2); > 0 shifts the pressure
-    /// backwards (friction dominates), < 0 forwards (wear dominates). None for the narrow model.
+    /// Exponent shift theta of the wide solution (4.5), in (-1/2, 1/2), from gamma of (4.3): > 0
+    /// where friction shifts the edge exponents more than wear, < 0 where wear does. On the
+    /// half-plane its sign is which effect dominates (a > b and mu* < mu for > 0); on a strip of
+    /// finite thickness the thickness term moves the balance and the sign of mu* - mu says it.
+    /// None for the narrow model.
     pub theta: Option<f64>,
     /// gamma = pi chi mu / m - k [1/Pa] of (4.3). None for the narrow model.
     pub gamma: Option<f64>,

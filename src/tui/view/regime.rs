@@ -27,7 +27,7 @@ const BAR: u16 = 10;
 /// The letter of a line and what it means.
 pub fn line_key(kind: LineKind) -> (char, &'static str) {
     match kind {
-        LineKind::ThetaZero => ('0', "theta = 0 line (> 0: friction wins, < 0: wear)"),
+        LineKind::ThetaZero => ('0', "theta = 0 line (mu* = mu on a half-plane)"),
         LineKind::Validity(m) if m.name() == "wide" => ('W', "wide model's validity limit"),
         LineKind::Validity(_) => ('N', "narrow (Winkler) model's validity limit"),
         LineKind::CompleteContact => ('C', "complete contact lost"),
