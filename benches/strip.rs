@@ -35,8 +35,9 @@ fn inputs(mu: f64, load: f64) -> PlaneInputs {
             coefficient: mu,
             adhesion: 0.0,
         },
-        wear: 0.5 / m,
-        radius: 0.05,
+        shear_strength: f64::INFINITY,
+        wear: wearlab::physics::plane::WearLaw::linear(0.5 / m),
+        shape: wearlab::physics::plane::Shape::Parabola { radius: 0.05 },
         load,
     }
 }

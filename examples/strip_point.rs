@@ -33,8 +33,9 @@ fn main() {
             coefficient,
             adhesion: 0.0,
         },
-        wear: km / m,
-        radius: r,
+        shear_strength: f64::INFINITY,
+        wear: wearlab::physics::plane::WearLaw::linear(km / m),
+        shape: wearlab::physics::plane::Shape::Parabola { radius: r },
         load: p,
     };
     strip::kernels_for(nu);

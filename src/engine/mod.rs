@@ -244,11 +244,11 @@ impl Engine {
         let preset = &request.preset;
         let inputs = preset.plane_inputs();
         let model = preset.plane.model;
-        let point = self
-            .points
-            .get_or((inputs, model), &mut self.counts.operating_point, || {
-                operating_point(&inputs, model, PROFILE_POINTS).map(Arc::new)
-            });
+        let point = self.points.get_or(
+            (inputs.clone(), model),
+            &mut self.counts.operating_point,
+            || operating_point(&inputs, model, PROFILE_POINTS).map(Arc::new),
+        );
         let unloaded = inputs.with_load(1.0);
         let range = preset.plane.sweep;
         let others: Vec<Model> = Model::ALL
@@ -258,14 +258,14 @@ impl Engine {
             .filter(|_| request.overlays)
             .collect();
         let mut out = PlaneOutput {
-            strip_check: self.strip_checks.get(&(inputs, model)),
+            strip_check: self.strip_checks.get(&(inputs.clone(), model)),
             point,
-            sweep: self.sweeps.get(&(unloaded, model, range)),
+            sweep: self.sweeps.get(&(unloaded.clone(), model, range)),
             overlays: Vec::new(),
         };
         let cached: Vec<_> = others
             .iter()
-            .map_while(|m| Some((*m, self.sweeps.get(&(unloaded, *m, range))?)))
+            .map_while(|m| Some((*m, self.sweeps.get(&(unloaded.clone(), *m, range))?)))
             .collect();
         let checked = out.strip_check.is_some() || out.point.is_err();
         if checked && out.sweep.is_some() && cached.len() == others.len() {
@@ -284,10 +284,11 @@ impl Engine {
             }
         }
         let mut sweep_of = |m: Model| {
-            self.sweeps
-                .get_or((unloaded, m, range), &mut self.counts.load_sweep, || {
-                    Arc::new(sweep(&unloaded, m, &range))
-                })
+            self.sweeps.get_or(
+                (unloaded.clone(), m, range),
+                &mut self.counts.load_sweep,
+                || Arc::new(sweep(&unloaded, m, &range)),
+            )
         };
         out.sweep = Some(sweep_of(model));
         out.overlays = others.into_iter().map(|m| (m, sweep_of(m))).collect();

@@ -136,6 +136,20 @@ pub const ADHESION: Limit = range("0 <= tau0 <= 1e10 (Pa)", 0.0, 1e10);
 pub const WEAR: Limit = range("0 <= k <= 0.1 (1/Pa)", 0.0, 0.1);
 /// Punch radius R [m]: a nanometre tip to a nearly flat punch.
 pub const RADIUS: Limit = range("1e-9 <= R <= 1e6 (m)", 1e-9, 1e6);
+/// Exponent n of the power punch g = (R/n)(|x|/R)^n (n = 2 is the parabola; above 10 the punch is
+/// a flat with a corner in all but name).
+pub const POWER_EXPONENT: Limit = range("1 < n <= 10", 1.0 + f64::EPSILON, 10.0);
+/// Half-width c [m] of a flat punch's face.
+pub const HALF_WIDTH: Limit = range("1e-9 <= c <= 1e3 (m)", 1e-9, 1e3);
+/// Edge radius r [m] of a flat punch: 0 is a sharp corner.
+pub const EDGE_RADIUS: Limit = range("0, or 1e-9 <= r <= 1e6 (m)", 1e-9, 1e6).or_zero();
+/// Exponent n of the wear law W' = -k q2 (q2/p0)^(n-1) (1 is Archard's linear law).
+pub const WEAR_EXPONENT: Limit = range("1 <= n <= 4", 1.0, 4.0);
+/// Reference pressure p0 [Pa] of a nonlinear wear law.
+pub const REFERENCE_PRESSURE: Limit = range("1e-3 <= p0 <= 1e12 (Pa)", 1e-3, 1e12);
+/// Shear strength tau_max [Pa] capping the friction stress; inf is no cap.
+pub const SHEAR_STRENGTH: Limit =
+    range("1e-3 <= tau_max <= 1e12 (Pa) or inf", 1e-3, 1e12).or_infinite();
 /// Load per unit length P [N/m], also the ends of the load sweep.
 pub const LINE_LOAD: Limit = range("1e-9 <= P <= 1e12 (N/m)", 1e-9, 1e12);
 /// Number of sweep points.

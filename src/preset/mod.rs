@@ -122,8 +122,11 @@ impl Preset {
         PlaneInputs {
             material: self.material,
             friction: self.friction,
-            wear: self.wear,
-            radius: self.plane.radius,
+            shear_strength: f64::INFINITY,
+            wear: crate::physics::plane::WearLaw::linear(self.wear),
+            shape: crate::physics::plane::Shape::Parabola {
+                radius: self.plane.radius,
+            },
             load: self.plane.load,
         }
     }

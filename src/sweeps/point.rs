@@ -113,6 +113,6 @@ impl PlanePoint {
         let sol = &self.solution;
         let from = 0f64.clamp(-sol.a, sol.b);
         let rule = tanh_sinh(1.0 / 16.0);
-        sol.inputs.wear * rule.integrate(from, sol.b, |x| sol.pressure(x))
+        sol.inputs.wear.coefficient * rule.integrate(from, sol.b, |x| sol.pressure(x))
     }
 }

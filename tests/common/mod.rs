@@ -18,8 +18,9 @@ pub fn plane(e: f64, nu: f64, h: f64, mu: f64, tau0: f64, k: f64, r: f64, p: f64
             coefficient: mu,
             adhesion: tau0,
         },
-        wear: k,
-        radius: r,
+        shear_strength: f64::INFINITY,
+        wear: wearlab::physics::plane::WearLaw::linear(k),
+        shape: wearlab::physics::plane::Shape::Parabola { radius: r },
         load: p,
     }
 }

@@ -67,7 +67,8 @@ fn wear_loss_is_the_integral_of_k_q2_squared() {
     for (inp, model) in cases() {
         let sol = solve(&inp, model).unwrap();
         let en = energy(&sol);
-        let direct = inp.wear * integrate_cos(-sol.a, sol.b, 100, |x| sol.pressure(x).powi(2));
+        let direct =
+            inp.wear.coefficient * integrate_cos(-sol.a, sol.b, 100, |x| sol.pressure(x).powi(2));
         assert!(
             (en.wear_loss - direct).abs() <= 1e-8 * sol.tangential_force,
             "{model:?}: psi - J = {} against k int q2^2 = {direct}",
@@ -79,7 +80,7 @@ fn wear_loss_is_the_integral_of_k_q2_squared() {
 
 #[test]
 fn without_wear_all_the_work_goes_to_friction() {
-    let (inp, model) = cases()[0];
+    let (inp, model) = cases()[0].clone();
     let en = energy(&solve(&inp, model).unwrap());
     assert!(en.wear_loss.abs() < 1e-9 * en.external, "{en:?}");
 }

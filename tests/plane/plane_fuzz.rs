@@ -34,8 +34,9 @@ fn inputs(nu: BoxedStrategy<f64>) -> impl Strategy<Value = PlaneInputs> {
                 coefficient: mu,
                 adhesion: tau0,
             },
-            wear: k,
-            radius: r,
+            shear_strength: f64::INFINITY,
+            wear: wearlab::physics::plane::WearLaw::linear(k),
+            shape: wearlab::physics::plane::Shape::Parabola { radius: r },
             load: p,
         })
 }
@@ -140,8 +141,11 @@ fn a_strip_contact_its_nodes_do_not_resolve_is_refused() {
             coefficient: 0.0,
             adhesion: 647_341.981_642_277,
         },
-        wear: 0.1,
-        radius: 1_358.102_410_308_278_9,
+        shear_strength: f64::INFINITY,
+        wear: wearlab::physics::plane::WearLaw::linear(0.1),
+        shape: wearlab::physics::plane::Shape::Parabola {
+            radius: 1_358.102_410_308_278_9,
+        },
         load: 0.000_195_146_823_636_854_73,
     };
     match operating_point(&inp, Model::Strip, 21) {

@@ -25,8 +25,8 @@ fn cases() -> Vec<PlaneInputs> {
 fn integrate_ode(sol: &PlaneSolution, steps: usize) -> Vec<(f64, f64)> {
     let inp = &sol.inputs;
     let beta = winkler_beta(inp);
-    let lambda = inp.wear / beta;
-    let f = |x: f64, q: f64| lambda * q - x / (inp.radius * beta);
+    let lambda = inp.wear.coefficient / beta;
+    let f = |x: f64, q: f64| lambda * q - x / (inp.radius() * beta);
     let h = -(sol.a + sol.b) / steps as f64;
     let (mut x, mut q) = (sol.b, 0.0);
     let mut out = vec![(x, q)];
@@ -81,11 +81,11 @@ fn closed_form_agrees_with_ode_integration_from_the_leading_edge() {
                 / 3.0
         };
         let q2 = simpson(&|_, q| q);
-        let psi = simpson(&|x, q| q * x / inp.radius);
+        let psi = simpson(&|x, q| q * x / inp.radius());
         assert!(rel(q2, sol.normal_force) < 1e-9);
-        assert!((psi - sol.psi).abs() < 1e-9 * q2 * sol.contact_width() / inp.radius);
+        assert!((psi - sol.psi).abs() < 1e-9 * q2 * sol.contact_width() / inp.radius());
         let (mu, tau0) = (inp.friction.coefficient, inp.friction.adhesion);
-        let load = q2 - mu * psi - tau0 * inp.wear * q2;
+        let load = q2 - mu * psi - tau0 * inp.wear.coefficient * q2;
         assert!(rel(load, inp.load) < 1e-9);
     }
 }
@@ -115,7 +115,7 @@ fn small_wear_formula_of_the_paper() {
 #[test]
 fn without_wear_the_winkler_strip_has_no_deformation_friction() {
     // docs/physics/plane.md section 4: with k = 0 the Winkler model gives a symmetric parabola and mu* = mu.
-    let inp = cases()[3];
+    let inp = cases()[3].clone();
     let sol = solve(&inp, Model::Narrow).unwrap();
     assert_eq!(sol.mu_star, 0.3);
     assert!(rel(sol.a, sol.b) < 1e-15);
@@ -124,7 +124,7 @@ fn without_wear_the_winkler_strip_has_no_deformation_friction() {
     assert!(
         rel(
             sol.normal_force,
-            sol.contact_width().powi(3) / (12.0 * inp.radius * beta)
+            sol.contact_width().powi(3) / (12.0 * inp.radius() * beta)
         ) < 1e-14
     );
 }
@@ -146,7 +146,7 @@ fn energy_identity_is_zero_for_winkler() {
 fn strong_wear_stays_finite_and_positive() {
     let inp = plane(1e8, 0.3, 1e-4, 0.3, 0.0, 1e-7, 0.05, 1e4);
     let sol = solve(&inp, Model::Narrow).unwrap();
-    let y = inp.wear / winkler_beta(&inp) * sol.contact_width();
+    let y = inp.wear.coefficient / winkler_beta(&inp) * sol.contact_width();
     assert!(y > 100.0, "lambda L = {y}");
     let prof = wearlab::physics::plane::profile::profile(&sol, 201);
     assert!(prof.pressure.iter().all(|q| q.is_finite() && *q >= 0.0));

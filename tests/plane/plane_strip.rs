@@ -215,11 +215,11 @@ fn the_contact_condition_holds_between_the_nodes() {
             q2(s) * k.r2((s - x) / h) + q1(s) * k.chi_b12((s - x) / h)
         }) / h;
         let mv = -std::f64::consts::PI * chi * q1(x) - hilbert(lo, hi, x, &q2) - regular;
-        let lhs = mv + m * inp.wear * q2(x);
+        let lhs = mv + m * inp.wear.coefficient * q2(x);
         assert!(
-            (lhs - m * x / inp.radius).abs() < 1e-6 * m * sol.contact_width() / inp.radius,
+            (lhs - m * x / inp.radius()).abs() < 1e-6 * m * sol.contact_width() / inp.radius(),
             "at {frac}: {lhs} vs {}",
-            m * x / inp.radius
+            m * x / inp.radius()
         );
     }
 }
@@ -229,7 +229,7 @@ fn a_narrow_strip_with_strong_wear_keeps_a_positive_pressure() {
     // lambda L ~ 100: where LU with partial pivoting gave garbage (docs/physics/plane.md section 6).
     let inp = plane(1e8, 0.3, 1e-4, 0.3, 0.0, 1e-7, 0.05, 1e3);
     let sol = solve(&inp, Model::Strip).unwrap();
-    let lambda_l = inp.wear / winkler_beta(&inp) * sol.contact_width();
+    let lambda_l = inp.wear.coefficient / winkler_beta(&inp) * sol.contact_width();
     assert!(lambda_l > 50.0, "lambda L = {lambda_l}");
     let prof = wearlab::physics::plane::profile::profile(&sol, 101);
     assert!(

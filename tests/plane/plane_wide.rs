@@ -34,8 +34,12 @@ fn collocate(inp: &PlaneInputs, l: f64, n: usize) -> Collocated {
     let mat = &inp.material;
     let m = plane_modulus(mat.youngs_modulus, mat.poisson_ratio);
     let chi = chi(mat.poisson_ratio);
-    let (mu, tau0, r) = (inp.friction.coefficient, inp.friction.adhesion, inp.radius);
-    let gamma = PI * chi * mu / m - inp.wear;
+    let (mu, tau0, r) = (
+        inp.friction.coefficient,
+        inp.friction.adhesion,
+        inp.radius(),
+    );
+    let gamma = PI * chi * mu / m - inp.wear.coefficient;
     let theta = (m * gamma / PI).atan() / PI;
     let c12h = if mat.thickness.is_finite() {
         chi_c12(mat.poisson_ratio) / mat.thickness
@@ -123,7 +127,7 @@ fn closed_form_agrees_with_gauss_jacobi_collocation() {
         );
         assert!(rel(closed.normal_force, col.q2) < 1e-9, "Q2");
         assert!(
-            (closed.psi - col.psi).abs() < 1e-9 * closed.normal_force * scale / inp.radius,
+            (closed.psi - col.psi).abs() < 1e-9 * closed.normal_force * scale / inp.radius(),
             "psi"
         );
     }
@@ -182,7 +186,7 @@ fn integrals_of_the_pressure_match_q2_and_psi() {
     for inp in cases() {
         let sol = solve(&inp, Model::Wide).unwrap();
         let q2 = integrate_cos(-sol.a, sol.b, 100, |x| sol.pressure(x));
-        let psi = integrate_cos(-sol.a, sol.b, 100, |x| sol.pressure(x) * x / inp.radius);
+        let psi = integrate_cos(-sol.a, sol.b, 100, |x| sol.pressure(x) * x / inp.radius());
         assert!(
             rel(q2, sol.normal_force) < 1e-8,
             "Q2 {q2} vs {}",
@@ -273,16 +277,16 @@ fn energy_identity_holds_and_matches_the_kernel_identity() {
 
 #[test]
 fn wear_per_pass_totals_k_q2_at_the_trailing_edge() {
-    let inp = cases()[1];
+    let inp = cases()[1].clone();
     let sol = solve(&inp, Model::Wide).unwrap();
     let prof = wearlab::physics::plane::profile::profile(&sol, 201);
     assert_eq!(prof.x.len(), 201);
     assert_eq!((prof.x[0], prof.x[200]), (-sol.a, sol.b));
     assert!(
-        rel(prof.wear[0], inp.wear * sol.normal_force) < 1e-6,
+        rel(prof.wear[0], inp.wear.coefficient * sol.normal_force) < 1e-6,
         "{} vs {}",
         prof.wear[0],
-        inp.wear * sol.normal_force
+        inp.wear.coefficient * sol.normal_force
     );
     assert_eq!(prof.wear[200], 0.0);
     assert!(prof.wear.windows(2).all(|w| w[0] >= w[1]));

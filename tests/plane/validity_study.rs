@@ -22,7 +22,8 @@ pub fn strip_at_width(nu: f64, mu: f64, km: f64, lambda: f64) -> (PlaneInputs, P
     let n = nodes_for(lambda).div_ceil(16) * 16;
     let col = collocate(&base, kernels_for(nu).as_ref(), lambda * H, n).unwrap();
     let inputs = base.with_load(col.load);
-    (inputs, solution(&inputs, col, Model::Strip))
+    let sol = solution(&inputs, col, Model::Strip);
+    (inputs, sol)
 }
 
 /// A model's deviation from the strip solution, as the study measures it.

@@ -160,8 +160,9 @@ mod tests {
                 coefficient: 0.0,
                 adhesion: 0.0,
             },
-            wear: 0.0,
-            radius: 0.05,
+            shear_strength: f64::INFINITY,
+            wear: crate::physics::plane::WearLaw::linear(0.0),
+            shape: crate::physics::plane::Shape::Parabola { radius: 0.05 },
             load: 1e4,
         })
         .unwrap()

@@ -135,8 +135,8 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         Model::Narrow => {
             let alpha = winkler_alpha(inputs);
             let beta = winkler_beta(inputs);
-            let lambda = inputs.wear / beta;
-            let (r, a) = (inputs.radius, sol.a);
+            let lambda = inputs.wear.coefficient / beta;
+            let (r, a) = (inputs.radius(), sol.a);
             Box::new(move |u| {
                 let dq2 = lambda * q2(u) - (u - a) / (r * beta); // (5.3), g'(x) = x/R
                 (alpha * mu * dq2, -beta * dq2)
@@ -160,7 +160,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
     }
     let scale = i.abs().max(j.abs()).max(gross).max(f64::MIN_POSITIVE);
     let wear_loss = sol.psi - j;
-    let direct_wear_loss = inputs.wear * q2_squared;
+    let direct_wear_loss = inputs.wear.coefficient * q2_squared;
     let contact_scale = sol.tangential_force.abs().max(gross).max(f64::MIN_POSITIVE);
     Energy {
         i,

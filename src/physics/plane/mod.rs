@@ -11,9 +11,13 @@ pub mod criteria;
 pub mod energy;
 pub mod general;
 pub mod groups;
+pub mod laws;
 pub mod narrow;
 pub mod operating_point;
 pub mod profile;
+pub mod scope;
+pub mod shape;
+pub mod spline;
 pub mod strip;
 pub mod sweep;
 pub mod validity;
@@ -23,7 +27,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
+pub use laws::WearLaw;
 pub use operating_point::{OperatingPoint, operating_point};
+pub use shape::Shape;
 
 /// Which asymptotic model of the strip to solve.
 #[derive(
@@ -70,34 +76,97 @@ impl Model {
 }
 
 /// The inputs of one plane solve at one load.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PlaneInputs {
     /// The elastic strip.
     pub material: Material,
-    /// Friction law q1 = mu q2 + tau0.
+    /// Friction law q1 = mu q2 + tau0 below the shear strength.
     pub friction: Friction,
-    /// Wear coefficient k [1/Pa], >= 0: W' = -k q2, wear depth per unit sliding distance per Pa.
-    pub wear: f64,
-    /// Punch radius of curvature R [m], > 0: g(x) = x^2/(2R).
-    pub radius: f64,
+    /// Shear strength tau_max [Pa] > tau0 capping the friction stress, q1 = min(mu q2 + tau0,
+    /// tau_max); inf (the default) is no cap.
+    pub shear_strength: f64,
+    /// Wear law W' = -k q2 (q2/p0)^(n-1): wear depth per unit sliding distance.
+    pub wear: WearLaw,
+    /// The punch's shape g(x).
+    pub shape: Shape,
     /// Normal load per unit length P [N/m], > 0.
     pub load: f64,
 }
 
 impl PlaneInputs {
-    /// The same inputs at another load.
-    pub fn with_load(&self, load: f64) -> PlaneInputs {
-        PlaneInputs { load, ..*self }
+    /// The paper's worked example: a parabolic punch of radius R [m], the linear wear law with
+    /// coefficient k [1/Pa] and uncapped friction, at the load P [N/m].
+    pub fn parabolic(
+        material: Material,
+        friction: Friction,
+        wear: f64,
+        radius: f64,
+        load: f64,
+    ) -> PlaneInputs {
+        PlaneInputs {
+            material,
+            friction,
+            shear_strength: f64::INFINITY,
+            wear: WearLaw::linear(wear),
+            shape: Shape::Parabola { radius },
+            load,
+        }
     }
 
-    /// Checks every field against its allowed range (see `physics::limits`).
+    /// The same inputs at another load.
+    pub fn with_load(&self, load: f64) -> PlaneInputs {
+        PlaneInputs {
+            load,
+            ..self.clone()
+        }
+    }
+
+    /// The punch's radius R [m] (`Shape::radius`): the parabola's for the closed forms.
+    pub fn radius(&self) -> f64 {
+        self.shape.radius()
+    }
+
+    /// True when the closed forms and today's strip solver answer: a parabola, the linear wear
+    /// law and no shear cap.
+    pub fn is_classical(&self) -> bool {
+        self.shape.parabola_radius().is_some()
+            && self.wear.is_linear()
+            && self.shear_strength == f64::INFINITY
+    }
+
+    /// Pi(q) [Pa]: the shear stress at the pressure q [Pa] (`laws::capped_shear`).
+    pub fn shear_at(&self, q: f64) -> f64 {
+        laws::capped_shear(&self.friction, self.shear_strength, q)
+    }
+
+    /// Checks every field against its allowed range (see `physics::limits`) and refuses the
+    /// combinations without a steady solution: sharp corners with a nonlinear wear law (the
+    /// wear at a corner's singular pressure outgrows every power), sharp corners with a finite
+    /// shear strength (the cap holds at the corners, a case not derived here).
     pub fn validate(&self) -> Result<(), SolveError> {
-        validate_common(&self.material, &self.friction, self.wear)?;
-        limits::check_all(&[
-            (&limits::RADIUS, "radius", self.radius),
-            (&limits::LINE_LOAD, "load", self.load),
-        ])
-        .map_err(SolveError::InvalidInput)
+        validate_common(&self.material, &self.friction, self.wear.coefficient)?;
+        self.wear.validate()?;
+        laws::validate_cap(&self.friction, self.shear_strength)?;
+        self.shape.validate()?;
+        limits::check_all(&[(&limits::LINE_LOAD, "load", self.load)])
+            .map_err(SolveError::InvalidInput)?;
+        if self.shape.is_sharp() && self.wear.coefficient > 0.0 && !self.wear.is_linear() {
+            return Err(SolveError::InvalidInput(
+                "a flat punch with sharp corners has no steady solution with a nonlinear wear \
+                 law (n > 1): the wear at the singular corner pressure cannot be balanced; use \
+                 wear.exponent = 1, k = 0 or a rounded edge (edge_radius > 0)"
+                    .into(),
+            ));
+        }
+        if self.shape.is_sharp() && self.shear_strength.is_finite() {
+            return Err(SolveError::InvalidInput(
+                "a flat punch with sharp corners cannot take a finite shear_strength: the cap \
+                 would hold at the corners, where the pressure is unbounded, a case wearlab does \
+                 not solve; remove shear_strength or round the edges (edge_radius > 0)"
+                    .into(),
+            ));
+        }
+        Ok(())
     }
 }
 
@@ -180,23 +249,24 @@ impl PlaneSolution {
         match &self.law {
             &PressureLaw::Wide { c, theta } => c * u.powf(0.5 - theta) * (l - u).powf(0.5 + theta),
             &PressureLaw::Narrow { lambda, beta } => {
-                narrow::pressure(u, l, lambda, beta, self.inputs.radius)
+                narrow::pressure(u, l, lambda, beta, self.inputs.radius())
             }
             PressureLaw::Strip(col) => col.pressure_from_trailing_edge(u),
         }
     }
 
-    /// Shear stress q1(x) = mu q2 + tau0 [Pa] on the strip, positive in +x; 0 outside [-a, b].
+    /// Shear stress q1(x) = min(mu q2 + tau0, tau_max) [Pa] on the strip, positive in +x; 0
+    /// outside [-a, b].
     pub fn shear(&self, x: f64) -> f64 {
         if x < -self.a || x > self.b {
             return 0.0;
         }
-        self.inputs.friction.coefficient * self.pressure(x) + self.inputs.friction.adhesion
+        self.inputs.shear_at(self.pressure(x))
     }
 
-    /// Wear rate k q2(x): wear depth per unit sliding distance (dimensionless).
+    /// Wear rate F(q2(x)): wear depth per unit sliding distance (dimensionless).
     pub fn wear_rate(&self, x: f64) -> f64 {
-        self.inputs.wear * self.pressure(x)
+        self.inputs.wear.rate(self.pressure(x))
     }
 }
 
@@ -204,6 +274,7 @@ impl PlaneSolution {
 /// the physical checks (`plane::checks`).
 pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
     inputs.validate()?;
+    scope::check(inputs, model)?;
     let sol = match model {
         Model::Wide => wide::solve(inputs),
         Model::Narrow => narrow::solve(inputs),
@@ -218,7 +289,7 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
 pub(crate) fn exponent(inputs: &PlaneInputs) -> (f64, f64, f64) {
     let m = inputs.material.plane_modulus();
     let gamma = std::f64::consts::PI * inputs.material.chi() * inputs.friction.coefficient / m
-        - inputs.wear;
+        - inputs.wear.coefficient;
     (
         m,
         gamma,
@@ -258,7 +329,7 @@ impl PlaneSolution {
             inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width;
         PlaneSolution {
             model,
-            inputs: *inputs,
+            inputs: inputs.clone(),
             normal_force: found.q2,
             friction_force,
             tangential_force: friction_force + found.psi,

@@ -143,11 +143,11 @@ struct NarrowState {
 }
 
 fn state(inputs: &PlaneInputs, beta: f64, lambda: f64, l: f64) -> NarrowState {
-    let r = inputs.radius;
+    let r = inputs.radius();
     let sh = shape(lambda * l);
     let q2 = l.powi(3) * sh.g / (2.0 * r * beta);
     let psi = l.powi(4) * sh.s / (2.0 * beta * r * r);
-    let delta_g = inputs.wear * q2; // (5.10)
+    let delta_g = inputs.wear.coefficient * q2; // (5.10)
     NarrowState {
         a: l * sh.hh,
         q2,
@@ -167,10 +167,10 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
         ));
     }
     let beta = winkler_beta(inputs);
-    let lambda = inputs.wear / beta;
+    let lambda = inputs.wear.coefficient / beta;
     let p = inputs.load;
     let f = |l: f64| state(inputs, beta, lambda, l).load - p;
-    let l0 = (12.0 * beta * inputs.radius * p).cbrt();
+    let l0 = (12.0 * beta * inputs.radius() * p).cbrt();
     let (lo, hi) = bracket_or_why(l0, (0.5, 60), (2.0, 200), f).map_err(|why| {
         SolveError::NoSolution(format!(
             "the narrow-strip model finds no contact width for P = {p:.4e} N/m: {why} \

@@ -35,7 +35,7 @@ pub fn profile(sol: &PlaneSolution, points: usize) -> Profile {
         })
         .collect();
     let pressure: Vec<f64> = x.iter().map(|&x| sol.pressure(x)).collect();
-    let k = sol.inputs.wear;
+    let k = sol.inputs.wear.coefficient;
     // Wear per pass, accumulated from the leading edge; the end segments carry the edge
     // singularities of q2 and get the tanh–sinh rule.
     let interior = gauss_legendre(8);

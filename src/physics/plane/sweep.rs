@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
-use crate::physics::plane::{checks, validity};
+use crate::physics::plane::{checks, scope, validity};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -34,7 +34,7 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
     {
         return gather(Vec::new(), &[]);
     }
-    let valid = inputs.validate().is_ok();
+    let valid = inputs.validate().is_ok() && scope::check(inputs, model).is_ok();
     if model == Model::Strip {
         return by_contact_width(inputs, loads, valid);
     }

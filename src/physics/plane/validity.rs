@@ -130,7 +130,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
             format!("theta = {theta:.3} near +-1/2: pressure nearly singular at the {edge} edge"),
         );
     }
-    let l_over_r = l / inputs.radius;
+    let l_over_r = l / inputs.radius();
     if l_over_r > 0.1 {
         assumption(
             format!(
@@ -155,8 +155,8 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
     let inputs = &sol.inputs;
     let nu = inputs.material.poisson_ratio;
     let mu = inputs.friction.coefficient;
-    let km = inputs.wear * inputs.material.plane_modulus();
-    let h_over_r = inputs.material.thickness / inputs.radius;
+    let km = inputs.wear.coefficient * inputs.material.plane_modulus();
+    let h_over_r = inputs.material.thickness / inputs.radius();
     let mut failed = Vec::new();
     let name = if sol.model == Model::Wide {
         "the wide model"
@@ -318,7 +318,7 @@ pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
         Err(e) => return estimated(format!("the exact strip model has no answer here: {e}")),
     };
     let mu = sol.inputs.friction.coefficient;
-    let floor = MU_STAR_FLOOR * strip.contact_width() / sol.inputs.radius;
+    let floor = MU_STAR_FLOOR * strip.contact_width() / sol.inputs.radius();
     StripCheck::Measured(Deviation {
         contact_width: (sol.contact_width() / strip.contact_width() - 1.0).abs(),
         mu_star_minus_mu: (sol.mu_star - strip.mu_star).abs()

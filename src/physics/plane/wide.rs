@@ -39,7 +39,7 @@ impl WideConstants {
             m,
             gamma,
             theta,
-            q2_per_l2: (1.0 - 4.0 * theta * theta) * m / (8.0 * inputs.radius),
+            q2_per_l2: (1.0 - 4.0 * theta * theta) * m / (8.0 * inputs.radius()),
             phi0_adhesion: PI * chi * inputs.friction.adhesion / m,
             phi0_per_q1,
         }
@@ -67,7 +67,7 @@ pub struct WideState {
 
 /// The closed form at contact width `l`: (4.5)-(4.8) and (3.11).
 pub fn state(c: &WideConstants, inputs: &PlaneInputs, l: f64) -> WideState {
-    let r = inputs.radius;
+    let r = inputs.radius();
     let mu = inputs.friction.coefficient;
     let tau0 = inputs.friction.adhesion;
     let q2 = c.q2_per_l2 * l * l;
@@ -97,7 +97,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
 /// once: chi c12 costs a quadrature).
 pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     let p = inputs.load;
-    let hertz = (8.0 * inputs.radius * p / c.m).sqrt();
+    let hertz = (8.0 * inputs.radius() * p / c.m).sqrt();
     let f = |l: f64| state(c, inputs, l).load - p;
     let (lo, hi) = march_up(hertz * 1e-4, 1.1, hertz * 1e6, f).map_err(|why| match why {
         NoBracket::NoPositive { best_x, best_f, .. } => SolveError::NoSolution(format!(
@@ -130,7 +130,7 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
             gamma: Some(c.gamma),
         },
         PressureLaw::Wide {
-            c: c.m * (PI * c.theta).cos() / (PI * inputs.radius),
+            c: c.m * (PI * c.theta).cos() / (PI * inputs.radius()),
             theta: c.theta,
         },
     ))

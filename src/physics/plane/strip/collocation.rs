@@ -148,7 +148,7 @@ impl<'a> System<'a> {
     ) -> System<'a> {
         let n = rules.len();
         System {
-            inputs: *inputs,
+            inputs: inputs.clone(),
             kernels,
             tolerance,
             regular: Rc::clone(regular),
@@ -224,7 +224,7 @@ impl<'a> System<'a> {
         let (chi, tau0, r) = (
             inputs.material.chi(),
             inputs.friction.adhesion,
-            inputs.radius,
+            inputs.radius(),
         );
         let adhesion = tau0 * r / (m * half);
         let b = DVector::from_iterator(
@@ -318,7 +318,7 @@ impl<'a> System<'a> {
         let (mu, tau0, r) = (
             inputs.friction.coefficient,
             inputs.friction.adhesion,
-            inputs.radius,
+            inputs.radius(),
         );
         let half = 0.5 * l;
         let p0 = inputs.material.plane_modulus() * half / r;

@@ -109,9 +109,9 @@ pub fn collocate(
 /// layer is softer than Winkler's and the search grows it.
 fn start_width(inputs: &PlaneInputs, p: f64) -> f64 {
     let (m, _, theta) = exponent(inputs);
-    let half_plane = (8.0 * inputs.radius * p / ((1.0 - 4.0 * theta * theta) * m)).sqrt();
+    let half_plane = (8.0 * inputs.radius() * p / ((1.0 - 4.0 * theta * theta) * m)).sqrt();
     let winkler = narrow::solve(&inputs.with_load(p)).map_or_else(
-        |_| (12.0 * winkler_beta(inputs) * inputs.radius * p).cbrt(),
+        |_| (12.0 * winkler_beta(inputs) * inputs.radius() * p).cbrt(),
         |s| s.contact_width(),
     );
     half_plane.min(winkler).min(widest(inputs))

@@ -155,8 +155,9 @@ mod tests {
                 coefficient: 0.3,
                 adhesion: tau0,
             },
-            wear: km / m,
-            radius: 0.05,
+            shear_strength: f64::INFINITY,
+            wear: crate::physics::plane::WearLaw::linear(km / m),
+            shape: crate::physics::plane::Shape::Parabola { radius: 0.05 },
             load: 1.0,
         }
     }

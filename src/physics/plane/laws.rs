@@ -1,0 +1,146 @@
+//! The wear law and the capped friction law of the plane problem (Soldatenkov (2007) eq. (1.1)
+//! with F depending on the pressure only, and section 5's friction law q1 = Pi(q2);
+//! `docs/physics/plane.md`, "General shapes and laws").
+
+use crate::physics::{Friction, SolveError, limits};
+
+/// Wear law W'(x) = -F(q2), F(q) = k q (q/p0)^(n-1): wear depth per unit sliding distance
+/// (dimensionless) at the pressure q [Pa].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WearLaw {
+    /// Wear coefficient k [1/Pa], >= 0.
+    pub coefficient: f64,
+    /// Exponent n in [1, 4] (dimensionless); 1 is Archard's linear law of the paper.
+    pub exponent: f64,
+    /// Reference pressure p0 [Pa], > 0; plays no part when n = 1.
+    pub reference_pressure: f64,
+}
+
+impl WearLaw {
+    /// The paper's linear law F = k q (n = 1; p0 is set to 1 Pa and plays no part).
+    pub fn linear(coefficient: f64) -> WearLaw {
+        WearLaw {
+            coefficient,
+            exponent: 1.0,
+            reference_pressure: 1.0,
+        }
+    }
+
+    /// True for the linear law (n = 1).
+    pub fn is_linear(&self) -> bool {
+        self.exponent == 1.0
+    }
+
+    /// F(q) = k q |q/p0|^(n-1), the wear rate (dimensionless) at the pressure q [Pa]; odd in q
+    /// so that an iterate with q < 0 stays defined. Exactly k q for n = 1.
+    pub fn rate(&self, q: f64) -> f64 {
+        if self.is_linear() {
+            self.coefficient * q
+        } else {
+            self.coefficient
+                * q
+                * (q / self.reference_pressure)
+                    .abs()
+                    .powf(self.exponent - 1.0)
+        }
+    }
+
+    /// dF/dq = n k |q/p0|^(n-1) [1/Pa].
+    pub fn rate_slope(&self, q: f64) -> f64 {
+        if self.is_linear() {
+            self.coefficient
+        } else {
+            self.exponent
+                * self.coefficient
+                * (q / self.reference_pressure)
+                    .abs()
+                    .powf(self.exponent - 1.0)
+        }
+    }
+
+    /// Checks k, n and (for n != 1) p0 against their ranges.
+    pub fn validate(&self) -> Result<(), SolveError> {
+        let mut checks = vec![
+            (&limits::WEAR, "wear coefficient", self.coefficient),
+            (&limits::WEAR_EXPONENT, "wear exponent", self.exponent),
+        ];
+        if !self.is_linear() {
+            checks.push((
+                &limits::REFERENCE_PRESSURE,
+                "reference_pressure",
+                self.reference_pressure,
+            ));
+        }
+        limits::check_all(&checks).map_err(SolveError::InvalidInput)
+    }
+}
+
+/// Pi(q) = min(mu q + tau0, tau_max) [Pa]: the shear stress at the pressure q [Pa], Coulomb
+/// friction with adhesion capped by the shear strength tau_max [Pa] (inf: no cap).
+pub fn capped_shear(friction: &Friction, shear_strength: f64, q: f64) -> f64 {
+    (friction.coefficient * q + friction.adhesion).min(shear_strength)
+}
+
+/// dPi/dq: mu below the cap, 0 where the cap holds (dimensionless).
+pub fn capped_shear_slope(friction: &Friction, shear_strength: f64, q: f64) -> f64 {
+    if friction.coefficient * q + friction.adhesion < shear_strength {
+        friction.coefficient
+    } else {
+        0.0
+    }
+}
+
+/// Checks tau_max against its range and against tau0: with tau_max <= tau0 the cap holds at the
+/// contact edges and the shear is tau_max everywhere, which is Coulomb friction with mu = 0.
+pub fn validate_cap(friction: &Friction, shear_strength: f64) -> Result<(), SolveError> {
+    limits::check_all(&[(&limits::SHEAR_STRENGTH, "shear_strength", shear_strength)])
+        .map_err(SolveError::InvalidInput)?;
+    if shear_strength <= friction.adhesion {
+        return Err(SolveError::InvalidInput(format!(
+            "shear_strength = {} Pa does not exceed the adhesion tau0 = {} Pa: the cap would hold \
+             everywhere (that is mu = 0 with tau0 = shear_strength); give shear_strength > tau0",
+            limits::show(shear_strength),
+            limits::show(friction.adhesion)
+        )));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_wear_rate_and_its_slope() {
+        let law = WearLaw {
+            coefficient: 1e-12,
+            exponent: 2.0,
+            reference_pressure: 1e6,
+        };
+        // F(2 MPa) = 1e-12 * 2e6 * 2 = 4e-6; dF/dq = 2 * 1e-12 * 2 = 4e-12.
+        assert!((law.rate(2e6) - 4e-6).abs() < 1e-20);
+        assert!((law.rate_slope(2e6) - 4e-12).abs() < 1e-26);
+        assert_eq!(law.rate(-2e6), -law.rate(2e6));
+        assert_eq!(WearLaw::linear(3e-12).rate(5e6), 3e-12 * 5e6);
+    }
+
+    #[test]
+    fn the_cap_limits_the_shear_and_must_exceed_the_adhesion() {
+        let f = Friction {
+            coefficient: 0.5,
+            adhesion: 1e5,
+        };
+        assert_eq!(capped_shear(&f, f64::INFINITY, 2e6), 0.5 * 2e6 + 1e5);
+        assert_eq!(capped_shear(&f, 5e5, 2e6), 5e5);
+        assert_eq!(capped_shear_slope(&f, 5e5, 2e6), 0.0);
+        assert_eq!(capped_shear_slope(&f, 5e5, 1e5), 0.5);
+        let err = validate_cap(&f, 1e5).unwrap_err().to_string();
+        assert!(err.contains("does not exceed the adhesion"), "{err}");
+        assert!(
+            validate_cap(&f, 0.0)
+                .unwrap_err()
+                .to_string()
+                .contains("out of range")
+        );
+    }
+}

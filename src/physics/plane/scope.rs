@@ -1,0 +1,74 @@
+//! Which model answers which inputs: the closed forms (wide, narrow) and the strip collocation
+//! solve the paper's worked example - a parabolic punch, the linear wear law, friction without a
+//! shear cap; other shapes and laws are refused by name, never answered with a wrong number.
+
+use crate::physics::SolveError;
+use crate::physics::plane::{Model, PlaneInputs};
+
+/// Ok when `model` solves `inputs`, else why not (exit 2 on the command line).
+pub fn check(inputs: &PlaneInputs, model: Model) -> Result<(), SolveError> {
+    if inputs.is_classical() {
+        return Ok(());
+    }
+    Err(SolveError::InvalidInput(format!(
+        "the {} model solves a parabolic punch with the linear wear law (wear.exponent = 1) and \
+         no shear_strength only; these inputs have {}",
+        model.name(),
+        departures(inputs)
+    )))
+}
+
+/// What sets the inputs apart from the worked example, in words.
+fn departures(inputs: &PlaneInputs) -> String {
+    let mut out = Vec::new();
+    if inputs.shape.parabola_radius().is_none() {
+        out.push(format!("a {} punch", inputs.shape.kind()));
+    }
+    if !inputs.wear.is_linear() {
+        out.push(format!("wear.exponent = {}", inputs.wear.exponent));
+    }
+    if inputs.shear_strength.is_finite() {
+        out.push(format!("shear_strength = {} Pa", inputs.shear_strength));
+    }
+    out.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::plane::{Shape, WearLaw};
+    use crate::physics::{Friction, Material};
+
+    #[test]
+    fn other_shapes_and_laws_are_refused_by_name() {
+        let mut inputs = PlaneInputs::parabolic(
+            Material {
+                youngs_modulus: 1e9,
+                poisson_ratio: 0.3,
+                thickness: 1e-3,
+            },
+            Friction {
+                coefficient: 0.3,
+                adhesion: 0.0,
+            },
+            1e-12,
+            0.05,
+            1e4,
+        );
+        assert!(check(&inputs, Model::Wide).is_ok());
+        inputs.shape = Shape::Power {
+            radius: 0.05,
+            exponent: 3.0,
+        };
+        inputs.wear = WearLaw {
+            exponent: 2.0,
+            reference_pressure: 1e6,
+            ..inputs.wear
+        };
+        let err = check(&inputs, Model::Strip).unwrap_err().to_string();
+        assert!(
+            err.contains("strip model") && err.contains("a power punch, wear.exponent = 2"),
+            "{err}"
+        );
+    }
+}
