@@ -4,12 +4,12 @@
 use serde::Serialize;
 
 use crate::physics::SolveError;
-use crate::physics::plane::PlaneSolution;
 use crate::physics::plane::energy::Energy;
 use crate::physics::plane::operating_point;
 use crate::physics::plane::profile::Profile;
 use crate::physics::plane::sweep::{Sweep, sweep};
 use crate::physics::plane::validity::Validity;
+use crate::physics::plane::{PlaneSolution, Shape};
 use crate::preset::Preset;
 
 /// The full plane report.
@@ -20,6 +20,8 @@ pub struct PlaneReport {
     /// The solution at the preset's load (its keys at the top level of the JSON).
     #[serde(flatten)]
     pub solution: PlaneSolution,
+    /// The punch's shape as the preset gives it.
+    pub shape: Shape,
     /// I, J of (2.9).
     pub energy: Energy,
     /// Validity flags.
@@ -37,6 +39,7 @@ pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, Solve
     let point = operating_point(&inputs, model, points)?;
     Ok(PlaneReport {
         problem: "plane",
+        shape: inputs.shape.clone(),
         solution: point.solution,
         energy: point.energy,
         validity: point.validity,

@@ -18,7 +18,7 @@ use crate::preset::{
     PlaneSection, Preset, PresetError, Problem, SCHEMA, SpatialSection, default_load_sweep,
     default_plane_section, default_pressure_sweep, default_spatial_section,
 };
-use crate::preset::{disk, lesson, plausible, wording};
+use crate::preset::{disk, law_rules, lesson, plausible, wording};
 use crate::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use crate::sweeps::quantity::QuantityKey;
 
@@ -30,7 +30,7 @@ fn line_of(text: &str, offset: usize) -> usize {
 }
 
 pub(super) struct Checker<'a> {
-    path: &'a Path,
+    pub(super) path: &'a Path,
     text: &'a str,
     /// The values that look like a unit mistake, and the harmonics that vanish.
     warnings: RefCell<Vec<PresetError>>,
@@ -51,7 +51,12 @@ impl Checker<'_> {
 
     /// A number of the file, in SI units or a text with units, within `limit`; `key` is its
     /// preset key (`material.thickness`), which gives the unit and the examples.
-    fn value(&self, v: &Spanned<Written>, key: &str, limit: &Limit) -> Result<f64, PresetError> {
+    pub(super) fn value(
+        &self,
+        v: &Spanned<Written>,
+        key: &str,
+        limit: &Limit,
+    ) -> Result<f64, PresetError> {
         let value = v
             .get_ref()
             .si(key)
@@ -152,6 +157,7 @@ pub fn parse_with_warnings(
         Some(w) => ck.value(&w.coefficient, "wear.coefficient", &limits::WEAR)?,
         None => 0.0,
     };
+    let laws = ck.laws(file.wear.as_ref(), file.friction.as_ref())?;
     let problem = *file.problem.get_ref();
     let missing = |section: &str, keys: &str| {
         ck.error(
@@ -181,11 +187,15 @@ pub fn parse_with_warnings(
         material,
         friction,
         wear,
+        wear_exponent: laws.wear_exponent,
+        reference_pressure: laws.reference_pressure,
+        shear_strength: laws.shear_strength,
         plane,
         spatial,
         explore: None,
         lesson: None,
     };
+    law_rules::check(&preset).map_err(|why| ck.error(None, why))?;
     if !duration_given {
         preset.spatial.duration = preset.auto_duration();
     }
@@ -236,7 +246,7 @@ impl Checker<'_> {
         material: &Material,
     ) -> Result<PlaneSection, PresetError> {
         let pl = plane.get_ref();
-        let radius = self.value(&pl.radius, "plane.radius", &limits::RADIUS)?;
+        let (radius, shape) = self.plane_shape(plane, default_plane_section().radius)?;
         let load = self.value(&pl.load, "plane.load", &limits::LINE_LOAD)?;
         if pl.model.needs_finite_thickness() && material.is_half_space() {
             return Err(self.error(
@@ -263,6 +273,7 @@ impl Checker<'_> {
         Ok(PlaneSection {
             model: pl.model,
             radius,
+            shape,
             load,
             sweep,
         })

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
 use crate::physics::Spacing;
-use crate::physics::plane::Model;
+use crate::physics::plane::{Model, Shape};
 use crate::preset::explore_section::Explore;
 use crate::preset::lesson::{self, FileLesson};
 use crate::preset::written::Written;
@@ -30,6 +30,9 @@ pub(super) struct FileFriction {
     pub(super) coefficient: Spanned<Written>,
     #[serde(default = "zero")]
     pub(super) adhesion: Spanned<Written>,
+    /// Absent: no cap (inf).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) shear_strength: Option<Spanned<Written>>,
 }
 
 #[derive(Deserialize, Serialize)]
@@ -37,6 +40,28 @@ pub(super) struct FileFriction {
 pub(super) struct FileWear {
     #[serde(default = "zero")]
     pub(super) coefficient: Spanned<Written>,
+    /// Absent: 1, the linear law.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) exponent: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) reference_pressure: Option<Spanned<Written>>,
+}
+
+/// `plane.shape`: the kind and the keys of that kind (the checks say which belong to which).
+#[derive(Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileShape {
+    pub(super) kind: Spanned<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) radius: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) exponent: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) half_width: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) edge_radius: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) file: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize, Serialize)]
@@ -52,8 +77,12 @@ pub(super) struct FileLoadSweep {
 #[serde(deny_unknown_fields)]
 pub(super) struct FilePlane {
     pub(super) model: Model,
-    pub(super) radius: Spanned<Written>,
+    /// The parabola's radius; absent when `shape` is given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) radius: Option<Spanned<Written>>,
     pub(super) load: Spanned<Written>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) shape: Option<Spanned<FileShape>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FileLoadSweep>>,
 }
@@ -172,14 +201,25 @@ pub fn to_toml(preset: &Preset) -> String {
         friction: Some(FileFriction {
             coefficient: num(preset.friction.coefficient),
             adhesion: num(preset.friction.adhesion),
+            shear_strength: preset
+                .shear_strength
+                .is_finite()
+                .then(|| num(preset.shear_strength)),
         }),
         wear: Some(FileWear {
             coefficient: num(preset.wear),
+            exponent: (preset.wear_exponent != 1.0).then(|| num(preset.wear_exponent)),
+            reference_pressure: preset.reference_pressure.map(num),
         }),
         plane: Some(plain(FilePlane {
             model: preset.plane.model,
-            radius: num(preset.plane.radius),
+            radius: preset
+                .plane
+                .shape
+                .is_none()
+                .then(|| num(preset.plane.radius)),
             load: num(preset.plane.load),
+            shape: preset.plane.shape.as_ref().map(|s| plain(shape_file(s))),
             sweep: Some(plain(FileLoadSweep {
                 load_min: num(sw.min),
                 load_max: num(sw.max),
@@ -192,6 +232,34 @@ pub fn to_toml(preset: &Preset) -> String {
         lesson: preset.lesson.as_ref().map(|l| plain(lesson::to_file(l))),
     };
     toml::to_string(&file).expect("a preset always serializes")
+}
+
+/// `plane.shape` as written by `to_toml`: the kind and its keys.
+fn shape_file(shape: &Shape) -> FileShape {
+    let mut out = FileShape {
+        kind: plain(shape.kind().to_string()),
+        radius: None,
+        exponent: None,
+        half_width: None,
+        edge_radius: None,
+        file: None,
+    };
+    match shape {
+        Shape::Parabola { radius } => out.radius = Some(num(*radius)),
+        Shape::Power { radius, exponent } => {
+            out.radius = Some(num(*radius));
+            out.exponent = Some(num(*exponent));
+        }
+        Shape::Flat {
+            half_width,
+            edge_radius,
+        } => {
+            out.half_width = Some(num(*half_width));
+            out.edge_radius = Some(num(*edge_radius));
+        }
+        Shape::Table(t) => out.file = Some(plain(t.file.clone())),
+    }
+    out
 }
 
 /// The `[explore]` section as written by `to_toml`.

@@ -8,6 +8,7 @@ use std::fmt;
 use crate::physics::SweepRange;
 use crate::physics::limits;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
+use crate::preset::law_rules;
 use crate::preset::params::{Access, PARAMS, Param};
 use crate::preset::{Preset, Problem};
 use crate::units::parse_si;
@@ -90,7 +91,7 @@ impl Key {
     pub fn all(preset: &Preset) -> Vec<Key> {
         let mut keys: Vec<Key> = Vec::new();
         for (index, p) in PARAMS.iter().enumerate() {
-            if !p.applies_to(preset.problem) {
+            if !p.applies_to(preset.problem) || !shown(p, preset) {
                 continue;
             }
             match p.access {
@@ -112,6 +113,16 @@ impl Key {
             }
         }
         keys
+    }
+}
+
+/// Whether the form shows the parameter: the laws beyond the paper's worked example (a wear
+/// exponent, a shear cap) show only in a preset that uses them.
+fn shown(p: &Param, preset: &Preset) -> bool {
+    match p.key {
+        "wear.exponent" | "wear.reference_pressure" => preset.wear_exponent != 1.0,
+        "friction.shear_strength" => preset.shear_strength.is_finite(),
+        _ => true,
     }
 }
 
@@ -226,6 +237,7 @@ impl Preset {
             &self.spatial.sweep,
             ["spatial.sweep.pressure_min", "spatial.sweep.pressure_max"],
         )?;
+        law_rules::check(self)?;
         validate_harmonics(&self.spatial.harmonics)
             .and_then(|()| validate_grid(&self.spatial.harmonics, self.spatial.grid))
             .map_err(|e| e.to_string().trim_start_matches("invalid input: ").into())

@@ -9,11 +9,14 @@ mod file;
 #[cfg(test)]
 mod hand_written_tests;
 mod key;
+mod law_rules;
 mod lesson;
 #[cfg(test)]
 mod lesson_tests;
 mod params;
 mod plausible;
+mod profile_csv;
+mod shape_check;
 mod wording;
 mod written;
 
@@ -22,7 +25,7 @@ use std::path::PathBuf;
 
 use serde::{Deserialize, Serialize};
 
-use crate::physics::plane::{Model, PlaneInputs};
+use crate::physics::plane::{Model, PlaneInputs, Shape, WearLaw};
 use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::{SpatialInputs, StateAt};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
@@ -58,12 +61,14 @@ impl Problem {
 }
 
 /// The `[plane]` section.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PlaneSection {
     /// Which model solves it.
     pub model: Model,
-    /// Punch radius R [m].
+    /// Punch radius R [m] of the parabola, the shape when `shape` is None.
     pub radius: f64,
+    /// The punch's shape when the file gives `plane.shape` (other than a parabola).
+    pub shape: Option<Shape>,
     /// Load per unit length P [N/m].
     pub load: f64,
     /// The loads of the mu*(P) sweep.
@@ -106,6 +111,12 @@ pub struct Preset {
     pub friction: Friction,
     /// Wear coefficient k [1/Pa].
     pub wear: f64,
+    /// Exponent n of the wear law W' = -k q2 (q2/p0)^(n-1), 1 (the linear law) by default.
+    pub wear_exponent: f64,
+    /// Reference pressure p0 [Pa] of the wear law, required when n != 1.
+    pub reference_pressure: Option<f64>,
+    /// Shear strength tau_max [Pa] capping the friction stress, inf (no cap) by default.
+    pub shear_strength: f64,
     /// The plane problem (defaults when the file has no `[plane]`).
     pub plane: PlaneSection,
     /// The spatial problem (defaults when the file has no `[spatial]`).
@@ -119,14 +130,19 @@ pub struct Preset {
 impl Preset {
     /// The plane solver's inputs at the preset's load.
     pub fn plane_inputs(&self) -> PlaneInputs {
+        let wear = WearLaw::linear(self.wear);
         PlaneInputs {
             material: self.material,
             friction: self.friction,
-            shear_strength: f64::INFINITY,
-            wear: crate::physics::plane::WearLaw::linear(self.wear),
-            shape: crate::physics::plane::Shape::Parabola {
-                radius: self.plane.radius,
+            shear_strength: self.shear_strength,
+            wear: WearLaw {
+                exponent: self.wear_exponent,
+                reference_pressure: self.reference_pressure.unwrap_or(wear.reference_pressure),
+                ..wear
             },
+            shape: self.plane.shape.clone().unwrap_or(Shape::Parabola {
+                radius: self.plane.radius,
+            }),
             load: self.plane.load,
         }
     }
@@ -178,6 +194,7 @@ pub fn default_plane_section() -> PlaneSection {
     PlaneSection {
         model: Model::Wide,
         radius: 0.05,
+        shape: None,
         load: 1e4,
         sweep: default_load_sweep(1e4),
     }

@@ -21,13 +21,16 @@ pub enum Step {
 
 /// The nudge of each parameter, by preset key (`N` for the harmonic's index).
 #[rustfmt::skip]
-pub const STEPS: [(&str, Step); 27] = [
+pub const STEPS: [(&str, Step); 30] = [
     ("material.youngs_modulus", Step::Log { seed: 1e9 }),
     ("material.poisson_ratio", Step::Linear { step: 0.01 }),
     ("material.thickness", Step::Log { seed: 1e-3 }),
     ("friction.coefficient", Step::Linear { step: 0.01 }),
     ("friction.adhesion", Step::Log { seed: 1e4 }),
+    ("friction.shear_strength", Step::Log { seed: 1e7 }),
     ("wear.coefficient", Step::Log { seed: 1e-15 }),
+    ("wear.exponent", Step::Linear { step: 0.1 }),
+    ("wear.reference_pressure", Step::Log { seed: 1e6 }),
     ("plane.model", Step::Choice),
     ("plane.radius", Step::Log { seed: 0.01 }),
     ("plane.load", Step::Log { seed: 1e3 }),

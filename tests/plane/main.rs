@@ -11,6 +11,7 @@ mod plane_energy;
 mod plane_fuzz;
 mod plane_general;
 mod plane_narrow;
+mod plane_narrow_general;
 mod plane_strip;
 mod plane_validity;
 mod plane_wide;

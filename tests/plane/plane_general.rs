@@ -112,16 +112,16 @@ fn parabola_with_the_linear_laws_is_the_closed_form() {
             for load in [1e2, 1e4, 1e5] {
                 let radius = 0.05;
                 let k = km / m;
-                let closed = wide::solve(&PlaneInputs {
-                    material: material(thickness),
-                    friction: wearlab::physics::Friction {
+                let closed = wide::solve(&PlaneInputs::parabolic(
+                    material(thickness),
+                    wearlab::physics::Friction {
                         coefficient: mu,
                         adhesion: tau0,
                     },
-                    wear: k,
+                    k,
                     radius,
                     load,
-                })
+                ))
                 .unwrap();
                 for tau_max in [f64::INFINITY, 1e3 * (tau0 + mu * 1e10)] {
                     let g = general(

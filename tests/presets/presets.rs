@@ -89,7 +89,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&unknown),
         format!(
-            "lab/broken.toml:{}: unknown key \"rate\"; allowed here: \"coefficient\"",
+            "lab/broken.toml:{}: unknown key \"rate\"; allowed here: one of \"coefficient\", \"exponent\", \"reference_pressure\"",
             line_of(&unknown, "rate")
         )
     );

@@ -18,6 +18,7 @@
 use serde::Serialize;
 
 use crate::physics::elastic::chi_c12;
+use crate::physics::plane::laws::capped_shear_slope;
 use crate::physics::plane::narrow::{winkler_alpha, winkler_beta};
 use crate::physics::plane::strip::kernels_for;
 use crate::physics::plane::{Model, PlaneSolution};
@@ -44,7 +45,7 @@ pub struct Energy {
     /// External work T [N/m] (3.11): the power of the tangential force per unit sliding speed;
     /// equals friction_loss + wear_loss when I = J.
     pub external: f64,
-    /// |psi - J - k integral q2^2| relative to the larger of |T| and the gross work: how well the
+    /// |psi - J - integral q2 F(q2)| relative to the larger of |T| and the gross work: how well the
     /// solution satisfies the contact condition (the wear loss computed two ways). Dimensionless.
     pub contact_residual: f64,
 }
@@ -75,7 +76,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
     let (mu, tau0) = (inputs.friction.coefficient, inputs.friction.adhesion);
     let l = sol.contact_width();
     let q2 = |u: f64| sol.pressure_from_trailing_edge(u);
-    let q1 = |u: f64| mu * q2(u) + tau0;
+    let q1 = |u: f64| inputs.shear_at(q2(u));
     let derivatives: Box<dyn Fn(f64) -> (f64, f64)> = match sol.model {
         Model::Wide => {
             let mat = &inputs.material;
@@ -132,6 +133,16 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
                 (du / m, dv / m)
             })
         }
+        Model::Narrow if !inputs.is_classical() => {
+            let (alpha, beta, a) = (winkler_alpha(inputs), winkler_beta(inputs), sol.a);
+            Box::new(move |u| {
+                let q = q2(u);
+                // (5.3) with the wear law F and the shape's slope g'
+                let dq2 = (inputs.wear.rate(q) - inputs.shape.slope(u - a)) / beta;
+                let dq1 = capped_shear_slope(&inputs.friction, inputs.shear_strength, q) * dq2;
+                (alpha * dq1, -beta * dq2)
+            })
+        }
         Model::Narrow => {
             let alpha = winkler_alpha(inputs);
             let beta = winkler_beta(inputs);
@@ -143,24 +154,38 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
             })
         }
     };
-    let (mut i, mut j, mut gross, mut q2_squared) = (0.0, 0.0, 0.0, 0.0);
-    let half = 0.5 * l;
-    for (t, w) in rule.nodes.iter().zip(&rule.weights) {
-        let u = if *t < 0.0 {
-            half * (1.0 + t)
-        } else {
-            l - half * (1.0 - t)
-        };
-        let (du, dv) = derivatives(u);
-        let (a, b) = (q1(u) * du, q2(u) * dv);
-        i += w * half * a;
-        j += w * half * b;
-        gross += w * half * (a.abs() + b.abs());
-        q2_squared += w * half * q2(u) * q2(u);
+    // the linear law's k q2^2 integrates q2^2 and scales by k after, as it always has
+    let linear = inputs.wear.is_linear();
+    let wear_of = |q: f64| if linear { q } else { inputs.wear.rate(q) };
+    let (mut i, mut j, mut gross, mut q2_wear) = (0.0, 0.0, 0.0, 0.0);
+    // the rule runs piecewise between the shape's kinks inside the contact, where q2 has kinks
+    let mut ends = vec![0.0];
+    ends.extend(kinks_within(sol));
+    ends.push(l);
+    for piece in ends.windows(2) {
+        let (lo, hi) = (piece[0], piece[1]);
+        let half = 0.5 * (hi - lo);
+        for (t, w) in rule.nodes.iter().zip(&rule.weights) {
+            let u = if *t < 0.0 {
+                lo + half * (1.0 + t)
+            } else {
+                hi - half * (1.0 - t)
+            };
+            let (du, dv) = derivatives(u);
+            let (a, b) = (q1(u) * du, q2(u) * dv);
+            i += w * half * a;
+            j += w * half * b;
+            gross += w * half * (a.abs() + b.abs());
+            q2_wear += w * half * q2(u) * wear_of(q2(u));
+        }
     }
     let scale = i.abs().max(j.abs()).max(gross).max(f64::MIN_POSITIVE);
     let wear_loss = sol.psi - j;
-    let direct_wear_loss = inputs.wear.coefficient * q2_squared;
+    let direct_wear_loss = if linear {
+        inputs.wear.coefficient * q2_wear
+    } else {
+        q2_wear
+    };
     let contact_scale = sol.tangential_force.abs().max(gross).max(f64::MIN_POSITIVE);
     Energy {
         i,
@@ -171,4 +196,19 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         external: sol.tangential_force,
         contact_residual: (wear_loss - direct_wear_loss).abs() / contact_scale,
     }
+}
+
+/// The shape's kinks strictly inside the contact, as distances u from the trailing edge,
+/// ascending: none for the parabola.
+fn kinks_within(sol: &PlaneSolution) -> Vec<f64> {
+    let mut out: Vec<f64> = sol
+        .inputs
+        .shape
+        .kinks()
+        .into_iter()
+        .filter(|x| *x > -sol.a && *x < sol.b)
+        .map(|x| x + sol.a)
+        .collect();
+    out.sort_by(f64::total_cmp);
+    out
 }

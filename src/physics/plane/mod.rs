@@ -13,6 +13,7 @@ pub mod general;
 pub mod groups;
 pub mod laws;
 pub mod narrow;
+pub mod narrow_ode;
 pub mod operating_point;
 pub mod profile;
 pub mod scope;
@@ -179,6 +180,8 @@ pub(crate) enum PressureLaw {
     Narrow { lambda: f64, beta: f64 },
     /// The collocation solution of the strip: q2 = w(t) phi(t).
     Strip(std::sync::Arc<strip::Collocation>),
+    /// The narrow model's shot for any shape and law: q2 interpolated between its nodes.
+    Shooting(std::sync::Arc<narrow_ode::Nodes>),
 }
 
 /// The solution of the plane problem at one load. Serialised with the keys of `wearlab solve`'s
@@ -252,6 +255,7 @@ impl PlaneSolution {
                 narrow::pressure(u, l, lambda, beta, self.inputs.radius())
             }
             PressureLaw::Strip(col) => col.pressure_from_trailing_edge(u),
+            PressureLaw::Shooting(nodes) => nodes.pressure(u - self.a),
         }
     }
 
@@ -277,11 +281,21 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
     scope::check(inputs, model)?;
     let sol = match model {
         Model::Wide => wide::solve(inputs),
-        Model::Narrow => narrow::solve(inputs),
+        Model::Narrow => solve_narrow(inputs),
         Model::Strip => strip::solve(inputs),
     }?;
     checks::check(&sol)?;
     Ok(sol)
+}
+
+/// The narrow model: the closed form (5.7) for the parabola with the linear law and no cap, the
+/// shooting of `narrow_ode` for every other shape and law.
+pub(crate) fn solve_narrow(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
+    if inputs.is_classical() {
+        narrow::solve(inputs)
+    } else {
+        narrow_ode::solve(inputs)
+    }
 }
 
 /// m [Pa], gamma [1/Pa] and theta of the dominant equation (4.3): gamma = pi chi mu/m - k,
@@ -314,6 +328,9 @@ pub(crate) struct Found {
     /// theta and gamma of the wide and strip models; None for the narrow model.
     pub theta: Option<f64>,
     pub gamma: Option<f64>,
+    /// Q1 = int Pi(q2) dx [N/m] where the solver integrates it (a capped friction law); None:
+    /// mu Q2 + tau0 L.
+    pub friction_force: Option<f64>,
 }
 
 impl PlaneSolution {
@@ -325,8 +342,9 @@ impl PlaneSolution {
         found: Found,
         law: PressureLaw,
     ) -> PlaneSolution {
-        let friction_force =
-            inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width;
+        let friction_force = found.friction_force.unwrap_or(
+            inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width,
+        );
         PlaneSolution {
             model,
             inputs: inputs.clone(),
@@ -339,7 +357,11 @@ impl PlaneSolution {
             gamma: found.gamma,
             psi: found.psi,
             delta_g: found.delta_g,
-            mu_star: total_friction(&inputs.friction, found.psi, found.delta_g, inputs.load),
+            mu_star: match found.friction_force {
+                // (3.13) as T - tau0 L over P, which holds with the cap too
+                Some(q1) => (q1 + found.psi - inputs.friction.adhesion * found.width) / inputs.load,
+                None => total_friction(&inputs.friction, found.psi, found.delta_g, inputs.load),
+            },
             law,
         }
     }

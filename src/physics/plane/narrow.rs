@@ -158,7 +158,8 @@ fn state(inputs: &PlaneInputs, beta: f64, lambda: f64, l: f64) -> NarrowState {
 }
 
 /// Solves the Winkler problem at the inputs' load: P(L) is increasing; bracket around
-/// L0 = (12 beta R P)^{1/3} (the frictionless, wearless width) and Brent.
+/// L0 = (12 beta R P)^{1/3} (the frictionless, wearless width) and Brent. The parabola with the
+/// linear law and no cap only (`plane::solve_narrow` sends the others to `narrow_ode`).
 pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     if inputs.material.is_half_space() {
         return Err(SolveError::InvalidInput(
@@ -196,6 +197,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
             delta_g: s.delta_g,
             theta: None,
             gamma: None,
+            friction_force: None,
         },
         PressureLaw::Narrow { lambda, beta },
     ))

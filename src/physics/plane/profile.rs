@@ -12,12 +12,14 @@ pub struct Profile {
     pub x: Vec<f64>,
     /// q2(x) [Pa].
     pub pressure: Vec<f64>,
-    /// q1(x) = mu q2 + tau0 [Pa], positive in +x.
+    /// q1(x) = min(mu q2 + tau0, tau_max) [Pa], positive in +x.
     pub shear: Vec<f64>,
-    /// k q2(x): wear depth per unit sliding distance (dimensionless).
+    /// F(q2(x)) = k q2 (q2/p0)^(n-1): wear depth per unit sliding distance (dimensionless).
     pub wear_rate: Vec<f64>,
-    /// k * integral from x to b of q2 [m]: the wear a strip point collects in one pass.
+    /// Integral from x to b of F(q2) [m]: the wear a strip point collects in one pass.
     pub wear: Vec<f64>,
+    /// The punch's shape g(x) [m] at each x.
+    pub shape: Vec<f64>,
 }
 
 /// The profile at `points` >= 2 points.
@@ -35,7 +37,7 @@ pub fn profile(sol: &PlaneSolution, points: usize) -> Profile {
         })
         .collect();
     let pressure: Vec<f64> = x.iter().map(|&x| sol.pressure(x)).collect();
-    let k = sol.inputs.wear.coefficient;
+    let law = sol.inputs.wear;
     // Wear per pass, accumulated from the leading edge; the end segments carry the edge
     // singularities of q2 and get the tanh–sinh rule.
     let interior = gauss_legendre(8);
@@ -48,11 +50,17 @@ pub fn profile(sol: &PlaneSolution, points: usize) -> Profile {
         } else {
             &interior
         };
-        wear[i] = wear[i + 1] + k * rule.integrate(x[i], x[i + 1], q2);
+        wear[i] = wear[i + 1]
+            + if law.is_linear() {
+                law.coefficient * rule.integrate(x[i], x[i + 1], q2)
+            } else {
+                rule.integrate(x[i], x[i + 1], |s| law.rate(q2(s)))
+            };
     }
     Profile {
         shear: x.iter().map(|&x| sol.shear(x)).collect(),
-        wear_rate: pressure.iter().map(|q| k * q).collect(),
+        wear_rate: pressure.iter().map(|&q| law.rate(q)).collect(),
+        shape: x.iter().map(|&x| sol.inputs.shape.g(x)).collect(),
         x,
         pressure,
         wear,

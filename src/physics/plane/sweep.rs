@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
-use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, narrow, strip};
+use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
 use crate::physics::plane::{checks, scope, validity};
 use crate::physics::{SweepRange, limits};
 
@@ -47,7 +47,7 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
             match model {
                 _ if !valid => None,
                 Model::Wide => wide::solve_with(wide.as_ref()?, &at).ok(),
-                Model::Narrow => narrow::solve(&at).ok(),
+                Model::Narrow => solve_narrow(&at).ok(),
                 Model::Strip => unreachable!("the strip sweep runs by contact width"),
             }
             .filter(|sol| checks::check(sol).is_ok())

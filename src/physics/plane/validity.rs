@@ -131,12 +131,22 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         );
     }
     let l_over_r = l / inputs.radius();
-    if l_over_r > 0.1 {
+    // the largest slope of a shape is at a contact end: half (a+b)/R for the parabola
+    let slope = inputs.shape.slope(sol.b).max(-inputs.shape.slope(-sol.a));
+    if inputs.shape.parabola_radius().is_some() && l_over_r > 0.1 {
         assumption(
             format!(
                 "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
             ),
             format!("(a+b)/R = {l_over_r:.3} > 0.1: slopes not small"),
+        );
+    } else if inputs.shape.parabola_radius().is_none() && slope > 0.05 {
+        assumption(
+            format!(
+                "the punch slope |g'| = {slope:.3} at a contact end > 0.05: the punch slopes are \
+                 not small"
+            ),
+            format!("|g'| = {slope:.3} > 0.05: slopes not small"),
         );
     }
     Validity {

@@ -128,6 +128,7 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
             delta_g: s.delta_g,
             theta: Some(c.theta),
             gamma: Some(c.gamma),
+            friction_force: None,
         },
         PressureLaw::Wide {
             c: c.m * (PI * c.theta).cos() / (PI * inputs.radius()),

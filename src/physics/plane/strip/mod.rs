@@ -274,6 +274,7 @@ pub fn solution(inputs: &PlaneInputs, col: Collocation, model: Model) -> PlaneSo
         delta_g: col.delta_g,
         theta: Some(col.theta),
         gamma: Some(gamma),
+        friction_force: None,
     };
     PlaneSolution::assemble(model, inputs, found, PressureLaw::Strip(Arc::new(col)))
 }
