@@ -199,7 +199,17 @@ pub fn figure(
     plot.x_marks = x_marks;
     plot.dim = dim;
     plot.dim_label = dim_label(problem).into();
+    // against mu itself the reference is the diagonal mu* = mu, a curve over the swept range
+    let swept_mu = !dimensionless && spec.axis.key.param().key == "friction.coefficient";
     match quantity.name {
+        "mu_star" if swept_mu => {
+            // at every swept value, so that it is the diagonal on a log axis too
+            plot.series.push(Series {
+                name: "mu* = mu".into(),
+                points: curve.x.iter().map(|&m| (m, m)).collect(),
+            });
+            plot.resolution = super::MU_STAR_RESOLUTION;
+        }
         "mu_star" => plot.against_mu(mu),
         "mu_star_minus_mu" => {
             plot.y_marks = vec![Mark {

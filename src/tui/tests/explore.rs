@@ -428,3 +428,27 @@ fn typing_into_a_sweep_field_replaces_its_value_at_a_visible_cursor() {
     let s = screen(&app, 80, 24, PLAIN);
     assert!(s.contains("0.5|1"), "{s}");
 }
+
+#[test]
+fn a_sweep_of_mu_star_against_mu_draws_the_diagonal_mu_star_equals_mu() {
+    let preset = bundled("polymer-coating.toml");
+    let spec = crate::sweeps::curve::CurveSpec {
+        axis: crate::sweeps::Axis::parse(&preset, "friction.coefficient=0.1:0.9:5", 5).unwrap(),
+        quantity: crate::sweeps::QuantityKey::parse("mu_star", &preset).unwrap(),
+        models: vec![crate::physics::plane::Model::Wide],
+    };
+    let curve = crate::sweeps::curve::curve(&preset, &spec, &AtomicBool::new(false)).unwrap();
+    let mu = preset.friction.coefficient;
+    let crate::tui::charts::Figure::Plots(plots) =
+        crate::tui::charts::sweep::figure(preset.problem, mu, &spec, &curve, false)
+    else {
+        panic!()
+    };
+    let plot = &plots[0];
+    let diagonal = plot.series.iter().find(|s| s.name == "mu* = mu").unwrap();
+    assert_eq!(diagonal.points.len(), 5);
+    assert!(diagonal.points.iter().all(|&(x, y)| x == y));
+    assert_eq!(diagonal.points[0].0, 0.1);
+    // no horizontal line at the preset's own mu, which this chart sweeps away from
+    assert!(plot.y_marks.is_empty(), "{:?}", plot.y_marks);
+}
