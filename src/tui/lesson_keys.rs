@@ -11,6 +11,7 @@ use crate::tui::app::{App, Command, Mode};
 use crate::tui::form;
 use crate::tui::lesson_state::{Mark, Quiz};
 use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action};
+use crate::tui::text_field::TextField;
 
 /// True when the preset's lesson locks this key.
 pub fn locked(app: &App, key: Key) -> bool {
@@ -55,7 +56,7 @@ pub fn open(app: &mut App) -> Vec<Command> {
     }
     app.ui.mode = Mode::Questions(Quiz {
         selected: 0,
-        typed: String::new(),
+        typed: TextField::default(),
     });
     app.ui.message = None;
     match app.lesson.values {
@@ -82,19 +83,21 @@ pub fn key(app: &mut App, key: KeyEvent, mut quiz: Quiz) -> Vec<Command> {
         }
         Some(PromptAction::Up) => {
             quiz.selected = quiz.selected.checked_sub(1).unwrap_or(count - 1);
-            quiz.typed.clear();
+            quiz.typed = TextField::default();
         }
         Some(PromptAction::Down) => {
             quiz.selected = (quiz.selected + 1) % count;
-            quiz.typed.clear();
+            quiz.typed = TextField::default();
         }
-        Some(PromptAction::Backspace) => {
-            quiz.typed.pop();
-        }
+        Some(PromptAction::Backspace) => quiz.typed.backspace(),
+        Some(PromptAction::Left) => quiz.typed.move_cursor(-1),
+        Some(PromptAction::Right) => quiz.typed.move_cursor(1),
+        Some(PromptAction::First) => quiz.typed.move_cursor(isize::MIN),
+        Some(PromptAction::Last) => quiz.typed.move_cursor(isize::MAX),
         Some(PromptAction::Accept) => check(app, &mut quiz),
         _ => {
             if let KeyCode::Char(c) = key.code {
-                quiz.typed.push(c);
+                quiz.typed.insert(c);
             }
         }
     }
@@ -104,7 +107,7 @@ pub fn key(app: &mut App, key: KeyEvent, mut quiz: Quiz) -> Vec<Command> {
 
 /// Grades the typed answer of the selected question, or says why it cannot yet.
 fn check(app: &mut App, quiz: &mut Quiz) {
-    let typed = quiz.typed.trim().to_string();
+    let typed = quiz.typed.text().trim().to_string();
     if typed.is_empty() {
         app.say("type your answer with its unit, then Enter");
         return;
@@ -142,7 +145,7 @@ fn check(app: &mut App, quiz: &mut Quiz) {
             };
             app.say(format!("question {}: {verdict}{shown}", quiz.selected + 1));
             app.lesson.marks[quiz.selected] = Some(Mark { typed, right });
-            quiz.typed.clear();
+            quiz.typed = TextField::default();
         }
     }
 }

@@ -3,6 +3,7 @@
 //! the state of the questions window (`a`).
 
 use crate::preset::Preset;
+use crate::tui::text_field::TextField;
 
 /// A student's answer to a question and its verdict.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,5 +51,5 @@ pub struct Quiz {
     /// The question being answered (0-based).
     pub selected: usize,
     /// The answer being typed.
-    pub typed: String,
+    pub typed: TextField,
 }

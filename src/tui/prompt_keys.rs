@@ -60,7 +60,7 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 50] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 54] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -110,6 +110,10 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 50] = [
     (Prompt::Quiz, key(KeyCode::Down), PromptAction::Down, ""),
     (Prompt::Quiz, key(KeyCode::Enter), PromptAction::Accept, "⏎ check"),
     (Prompt::Quiz, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
+    (Prompt::Quiz, key(KeyCode::Left), PromptAction::Left, "←→ edit"),
+    (Prompt::Quiz, key(KeyCode::Right), PromptAction::Right, ""),
+    (Prompt::Quiz, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Quiz, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::Quiz, key(KeyCode::Esc), PromptAction::Cancel, "Esc close"),
 ];
 

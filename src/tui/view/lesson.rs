@@ -96,7 +96,7 @@ pub fn lines(
         if selected {
             out.extend(indented(&format!("{}:", asked(q)), width));
             typing = out.len();
-            let typed = format!("{INDENT}{}_", quiz.typed);
+            let typed = format!("{INDENT}{}", quiz.typed.shown());
             out.push(Line::styled(typed, style.selected()));
         }
         out.push(Line::from(""));
