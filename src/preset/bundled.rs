@@ -35,6 +35,7 @@ pub const BUNDLED: &[Bundled] = bundled![
     "rubber-running-in.toml",
     "coating-thickness-sweep.toml",
     "friction-or-wear-map.toml",
+    "flat-pin-coating.toml",
 ];
 
 impl Bundled {

@@ -226,3 +226,34 @@ fn broken_spatial_sections_name_the_line() {
         )
     );
 }
+
+#[test]
+fn the_flat_pin_preset_shows_what_its_description_says() {
+    let p = preset::bundled("flat-pin-coating.toml").unwrap().unwrap();
+    let model = p.plane.model;
+    let sol = solve(&p.plane_inputs(), model).unwrap();
+    // "a = 0.507 mm behind, b = 0.521 mm ahead": just past the face c = 0.5 mm
+    assert!((sol.a - 0.507e-3).abs() < 0.5e-6 && (sol.b - 0.521e-3).abs() < 0.5e-6);
+    assert!(sol.a > 0.5e-3 && sol.b > 0.5e-3);
+    // "some 5.5 times from x = -0.4 mm to x = +0.4 mm"
+    let ratio = sol.pressure(0.4e-3) / sol.pressure(-0.4e-3);
+    assert!((5.0..6.0).contains(&ratio), "{ratio}");
+    // "mu* - mu is only 1.4e-4"; "about tenfold per decade of load"
+    let excess = |load: f64| {
+        solve(&p.plane_inputs().with_load(load), model)
+            .unwrap()
+            .mu_star
+            - p.friction.coefficient
+    };
+    assert!((excess(1e4) - 1.4e-4).abs() < 0.05e-4, "{}", excess(1e4));
+    let per_decade = excess(1e4) / excess(1e3);
+    assert!((8.0..12.0).contains(&per_decade), "{per_decade}");
+    // "some 50 coating thicknesses wide"; "the study behind the verdicts covers the parabola only"
+    let v = wearlab::physics::plane::validity::check(&sol);
+    assert!((45.0..55.0).contains(&v.contact_width_over_thickness));
+    assert!(
+        v.warnings
+            .iter()
+            .any(|w| w.contains("only for the parabolic punch"))
+    );
+}

@@ -173,6 +173,21 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
     } else {
         "the Winkler (narrow) model"
     };
+    if !inputs.is_classical() {
+        // the study's formulas are fits to the parabola with the linear law and no cap
+        let kind = inputs.shape.kind();
+        failed.push((
+            Aspect::Unstudied,
+            format!("not judged for this punch and laws ({kind})"),
+            format!(
+                "{name} is judged against the strip model only for the parabolic punch with the \
+                 linear wear law and no shear cap (the validity study); its error for a {kind} \
+                 punch with these laws is not estimated: it holds where the contact is many \
+                 thicknesses wide"
+            ),
+        ));
+        return (Deviation::NONE, failed);
+    }
     let outside: Vec<String> = [
         (nu > STUDIED_NU, format!("nu = {nu}")),
         (mu > STUDIED_MU, format!("mu = {mu}")),

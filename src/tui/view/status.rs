@@ -3,9 +3,9 @@
 //! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
 
 use crate::engine::{Answer, SpatialOutput};
-use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
 use crate::physics::plane::validity::StripCheck;
+use crate::physics::plane::{OperatingPoint, Shape};
 use crate::units::format_si;
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -103,6 +103,10 @@ fn plane(
         format!("a = {}", format_si(s.a, "m")),
         format!("b = {}", format_si(s.b, "m")),
     ];
+    // a punch other than the parabola is named first (the parabola's R is in the form)
+    if let Some(shape) = shape_name(&s.inputs.shape) {
+        items.insert(0, shape);
+    }
     // theta exists only for the models that have it: never a placeholder under another's label
     items.extend(s.theta.map(|t| format!("theta = {}", number("theta", t))));
     items.extend([
@@ -112,6 +116,33 @@ fn plane(
         residual(p.energy.residual),
     ]);
     with_validity(&items, p, check, style, width, height)
+}
+
+/// The punch's shape in a few words; None for the parabola.
+fn shape_name(shape: &Shape) -> Option<String> {
+    match shape {
+        Shape::Parabola { .. } => None,
+        Shape::Power { radius, exponent } => Some(format!(
+            "power punch n = {exponent}, R = {}",
+            format_si(*radius, "m")
+        )),
+        Shape::Flat {
+            half_width,
+            edge_radius,
+        } if *edge_radius == 0.0 => Some(format!(
+            "flat punch c = {}, sharp corners",
+            format_si(*half_width, "m")
+        )),
+        Shape::Flat {
+            half_width,
+            edge_radius,
+        } => Some(format!(
+            "flat punch c = {}, edges r = {}",
+            format_si(*half_width, "m"),
+            format_si(*edge_radius, "m")
+        )),
+        Shape::Table(t) => Some(format!("profile {}", t.file)),
+    }
 }
 
 /// The energy identity's residual, or "< 1e-14" at round-off (whose digits mean nothing).
