@@ -10,4 +10,5 @@ mod closed_stdout;
 mod common;
 mod hostile_cli;
 mod quantities;
+mod shapes_cli;
 mod solve_output;
