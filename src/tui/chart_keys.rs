@@ -91,7 +91,7 @@ fn pins(app: &App) -> Vec<&[Plot]> {
 
 /// Where `x` puts the cursor (a fraction of the x range): at the operating point when the chart
 /// marks one (the current load or time, the sweep's "now": the first read is the student's own
-/// point), else in the middle.
+/// point), else on the data point nearest the middle.
 pub fn start(frames: &[Frame]) -> f64 {
     let Some(f) = frames.first() else {
         return 0.5;
@@ -100,19 +100,19 @@ pub fn start(frames: &[Frame]) -> f64 {
     let marker = plot.markers.iter().flat_map(|m| m.points.first()).next();
     let now = plot.x_marks.iter().find(|m| m.label == "now").map(|m| m.at);
     let [lo, hi] = f.x;
-    marker
-        .map(|p| p.0)
-        .or(now)
-        .and_then(|x| plot.x.scale.to_plot(x))
-        .map_or(0.5, |x| ((x - lo) / (hi - lo)).clamp(0.0, 1.0))
+    let point = marker.map(|p| p.0).or(now);
+    match point.and_then(|x| plot.x.scale.to_plot(x)) {
+        Some(x) => ((x - lo) / (hi - lo)).clamp(0.0, 1.0),
+        // no point of the student's own: the data point nearest the middle, so that the first
+        // reading is a computed value, not one between two
+        None => (point_fractions(f).into_iter())
+            .min_by(|a, b| (a - 0.5).abs().total_cmp(&(b - 0.5).abs()))
+            .unwrap_or(0.5),
+    }
 }
 
-/// The cursor `points` data points of the first curve away from `at` (a fraction of the x
-/// range), or `points` hundredths of the range where there is no curve.
-pub fn cursor_moved(frames: &[Frame], at: f64, points: i32) -> f64 {
-    let Some(f) = frames.first() else {
-        return (at + points as f64 / 100.0).clamp(0.0, 1.0);
-    };
+/// The x of the first curve's points as fractions of the x range, in increasing order.
+fn point_fractions(f: &Frame) -> Vec<f64> {
     let [lo, hi] = f.x;
     let mut xs: Vec<f64> = f
         .plot
@@ -124,6 +124,16 @@ pub fn cursor_moved(frames: &[Frame], at: f64, points: i32) -> f64 {
         .map(|p| (p.0 - lo) / (hi - lo))
         .collect();
     xs.sort_by(f64::total_cmp);
+    xs
+}
+
+/// The cursor `points` data points of the first curve away from `at` (a fraction of the x
+/// range), or `points` hundredths of the range where there is no curve.
+pub fn cursor_moved(frames: &[Frame], at: f64, points: i32) -> f64 {
+    let Some(f) = frames.first() else {
+        return (at + points as f64 / 100.0).clamp(0.0, 1.0);
+    };
+    let xs = point_fractions(f);
     if xs.is_empty() {
         return (at + points as f64 / 100.0).clamp(0.0, 1.0);
     }
