@@ -179,7 +179,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     if inputs.shape.is_sharp() {
         return Err(SolveError::InvalidInput(
             "the narrow (Winkler) model needs a rounded edge (edge_radius > 0): on sharp corners \
-             its pressure jumps; the wide model solves the flat punch with sharp corners"
+             its pressure jumps, and wearlab does not solve the flat punch with sharp corners"
                 .into(),
         ));
     }

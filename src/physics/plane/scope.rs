@@ -8,6 +8,14 @@ use crate::physics::plane::{Model, PlaneInputs};
 
 /// Ok when `model` solves `inputs`, else why not (exit 2 on the command line).
 pub fn check(inputs: &PlaneInputs, model: Model) -> Result<(), SolveError> {
+    if inputs.shape.is_sharp() {
+        return Err(SolveError::InvalidInput(format!(
+            "the {} model does not solve a flat punch with sharp corners (edge_radius = 0), nor \
+             does any other model of wearlab: round its edges (edge_radius > 0) and use the \
+             narrow model",
+            model.name()
+        )));
+    }
     if inputs.is_classical() || model == Model::Narrow {
         return Ok(());
     }
@@ -40,6 +48,32 @@ mod tests {
     use super::*;
     use crate::physics::plane::{Shape, WearLaw};
     use crate::physics::{Friction, Material};
+
+    #[test]
+    fn sharp_corners_are_refused_by_every_model_with_the_way_out() {
+        let mut inputs = PlaneInputs::parabolic(
+            Material {
+                youngs_modulus: 1e9,
+                poisson_ratio: 0.3,
+                thickness: 1e-3,
+            },
+            Friction {
+                coefficient: 0.3,
+                adhesion: 0.0,
+            },
+            1e-12,
+            0.05,
+            1e4,
+        );
+        inputs.shape = Shape::Flat {
+            half_width: 1e-3,
+            edge_radius: 0.0,
+        };
+        for model in [Model::Wide, Model::Narrow, Model::Strip] {
+            let err = check(&inputs, model).unwrap_err().to_string();
+            assert!(err.contains("round its edges"), "{err}");
+        }
+    }
 
     #[test]
     fn other_shapes_and_laws_are_refused_by_name() {
