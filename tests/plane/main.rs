@@ -10,6 +10,7 @@ mod limits_strategy;
 mod plane_energy;
 mod plane_fuzz;
 mod plane_general;
+mod plane_general_strip;
 mod plane_narrow;
 mod plane_narrow_general;
 mod plane_strip;

@@ -220,11 +220,19 @@ fn a_table_through_a_parabola_answers_as_the_parabola_and_refuses_a_contact_off_
 }
 
 #[test]
-fn the_wide_and_strip_models_refuse_other_shapes_and_laws_by_name() {
+fn the_wide_and_strip_models_answer_other_shapes_and_laws_or_say_why_not() {
+    // these cases are contacts some 10 to 100 thicknesses wide, outside the wide model's range:
+    // the general solver answers some (answers that passed plane::checks) and says why not for
+    // the rest; the strip model refuses a shear cap by name
     for inp in general() {
         for model in [Model::Wide, Model::Strip] {
-            let err = solve(&inp, model).unwrap_err().to_string();
-            assert!(err.contains("the narrow model solves them"), "{err}");
+            if let Err(e) = solve(&inp, model) {
+                let why = e.to_string();
+                assert!(why.len() > 40 && !why.contains("NaN"), "{why}");
+                if model == Model::Strip && inp.shear_strength.is_finite() {
+                    assert!(why.contains("no shear_strength"), "{why}");
+                }
+            }
         }
     }
 }

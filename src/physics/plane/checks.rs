@@ -55,12 +55,19 @@ pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
             "{what} fails a check: {why}"
         )))
     };
-    let terms = [sol.normal_force, mu * sol.psi, tau0 * sol.delta_g];
-    let balance = terms[0] - terms[1] - terms[2];
+    // phi = integral of q1 g' is mu psi + tau0 Delta_g where no shear cap holds (every law but
+    // the general solver's)
+    let phi = match sol.law {
+        PressureLaw::General { .. } => sol.phi,
+        _ => mu * sol.psi + tau0 * sol.delta_g,
+    };
+    let terms = [sol.normal_force, mu * sol.psi, tau0 * sol.delta_g, phi];
+    let balance = terms[0] - phi;
     let scale = terms.iter().fold(p, |s, t| s.max(t.abs()));
     if (balance - p).abs() > BALANCE_TOLERANCE * scale {
         return fail(format!(
-            "its forces carry P = Q2 - mu psi - tau0 Delta_g = {balance:.4e} N/m, not the load \
+            "its forces carry P = Q2 - phi = {balance:.4e} N/m (phi = integral of q1 g', \
+             mu psi + tau0 Delta_g without a shear cap), not the load \
              P = {p:.4e} N/m (the root search converged on a false root)"
         ));
     }
@@ -115,33 +122,47 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
         }),
         // the shot of the narrow model ends where q2 first returns to zero: positive inside
         PressureLaw::Shooting(_) => None,
-        PressureLaw::Strip(col) => {
-            // phi at the nodes and, by the interpolant the profile draws, half-way between them
-            // (a contact the nodes do not resolve dips there first: found by tests/plane/plane_fuzz.rs
-            // at 20 000 cases, -14 % of the peak between the first two nodes)
-            let nodes = col.nodes();
-            let between = nodes.windows(2).map(|w| 0.5 * (w[0] + w[1]));
-            let samples: Vec<(f64, f64)> = nodes
-                .iter()
-                .copied()
-                .zip(col.phi.iter().copied())
-                .chain(between.map(|t| (t, col.phi_at(t))))
-                .collect();
-            let largest = samples.iter().fold(0.0f64, |m, s| m.max(s.1.abs()));
-            let (t, lowest) = samples
-                .iter()
-                .copied()
-                .fold((0.0, f64::INFINITY), |m, s| if s.1 < m.1 { s } else { m });
-            (lowest < -PRESSURE_ROUND_OFF * largest).then(|| {
-                let u = 0.5 * col.l * (1.0 + t);
-                format!(
-                    "the pressure is negative inside the contact (q2/w = {lowest:.3e} Pa at \
-                     {u:.4e} m from the trailing edge, against a largest {largest:.3e} Pa): the \
-                     collocation does not resolve this contact"
-                )
-            })
-        }
+        PressureLaw::General { pressure, .. } => negative_between_nodes(
+            pressure.nodes(),
+            &pressure.phi,
+            |t| pressure.phi_at(t),
+            pressure.l,
+        ),
+        PressureLaw::Strip(col) => negative_between_nodes(col.nodes(), &col.phi, |t| col.phi_at(t), col.l),
     }
+}
+
+/// Why a collocation's q2/w, given at the nodes and interpolated by `phi_at`, is negative at a
+/// node or half-way between two, if it is; `l` [m] is the contact width.
+fn negative_between_nodes(
+    nodes: &[f64],
+    phi: &[f64],
+    phi_at: impl Fn(f64) -> f64,
+    l: f64,
+) -> Option<String> {
+    // phi at the nodes and, by the interpolant the profile draws, half-way between them (a
+    // contact the nodes do not resolve dips there first: found by tests/plane/plane_fuzz.rs at
+    // 20 000 cases, -14 % of the peak between the first two nodes)
+    let between = nodes.windows(2).map(|w| 0.5 * (w[0] + w[1]));
+    let samples: Vec<(f64, f64)> = nodes
+        .iter()
+        .copied()
+        .zip(phi.iter().copied())
+        .chain(between.map(|t| (t, phi_at(t))))
+        .collect();
+    let largest = samples.iter().fold(0.0f64, |m, s| m.max(s.1.abs()));
+    let (t, lowest) = samples
+        .iter()
+        .copied()
+        .fold((0.0, f64::INFINITY), |m, s| if s.1 < m.1 { s } else { m });
+    (lowest < -PRESSURE_ROUND_OFF * largest).then(|| {
+        let u = 0.5 * l * (1.0 + t);
+        format!(
+            "the pressure is negative inside the contact (q2/w = {lowest:.3e} Pa at {u:.4e} m \
+             from the trailing edge, against a largest {largest:.3e} Pa): the collocation does \
+             not resolve this contact"
+        )
+    })
 }
 
 #[cfg(test)]

@@ -4,14 +4,16 @@
 //! Per unit sliding speed (N/m: power per unit speed), the work of the tangential force T splits
 //! into the friction loss D1/V0 = Q1 + I (2.5) and the wear loss DW/V0 = psi - J (2.7);
 //! T = D1/V0 + DW/V0 exactly when I = J (2.8)-(2.9). The wear loss is also the integral of
-//! q2 F(q2) = k q2^2 (the contact condition, docs/physics/plane.md), which checks the solution
-//! against the contact condition independently of I = J.
+//! q2 F(q2) (k q2^2 for the linear law; the contact condition, docs/physics/plane.md and
+//! docs/physics/plane-general.md section 4), which checks the solution against the contact
+//! condition independently of I = J. The shear is q1 = Pi(q2) = min(mu q2 + tau0, tau_max).
 //!
 //! I = integral of q1 u', J = integral of q2 v' over [-a, b]. The derivatives u', v' come from the
 //! kernel of the model, not from the closed-form identity: for the wide strip (4.1),
 //!   m u' = -pi chi q2 + H[q1] - chi c12 Q2/h,   m v' = -pi chi q1 - H[q2] - chi c12 Q1/h,
 //! with the Hilbert transform H[q](x) = p.v. integral q(s)/(s - x) ds computed by quadrature
-//! (singularity subtraction, tanh–sinh on both sides of x); for the Winkler strip (5.1),
+//! (singularity subtraction, tanh–sinh on both sides of x, each rule split where the general
+//! solver's q2 or q1 has a kink); for the Winkler strip (5.1),
 //! u' = alpha q1', v' = -beta q2' with q2' from (5.3); for the strip of any thickness, (3.7) with
 //! the tabulated kernels.
 
@@ -21,7 +23,7 @@ use crate::physics::elastic::chi_c12;
 use crate::physics::plane::laws::capped_shear_slope;
 use crate::physics::plane::narrow::{winkler_alpha, winkler_beta};
 use crate::physics::plane::strip::kernels_for;
-use crate::physics::plane::{Model, PlaneSolution};
+use crate::physics::plane::{Model, PlaneSolution, PressureLaw};
 use crate::physics::quadrature::{GaussRule, tanh_sinh};
 
 /// The two sides of (2.9) and how well they agree.
@@ -56,27 +58,54 @@ pub struct Energy {
 /// with the last bits of the solution).
 pub const RESIDUAL_ROUND_OFF: f64 = 1e-14;
 
-/// p.v. integral of q(s)/(s - x) over [lo, hi] for lo < x < hi.
-fn hilbert(rule: &GaussRule, lo: f64, hi: f64, x: f64, q: &impl Fn(f64) -> f64) -> f64 {
+/// p.v. integral of q(s)/(s - x) over [lo, hi] for lo < x < hi, the regular part's rule split at
+/// `kinks` (points where q has a kink).
+fn hilbert(
+    rule: &GaussRule,
+    (lo, hi): (f64, f64),
+    x: f64,
+    q: &impl Fn(f64) -> f64,
+    kinks: &[f64],
+) -> f64 {
     let qx = q(x);
     let regular = |s: f64| {
         let ds = s - x;
         if ds == 0.0 { 0.0 } else { (q(s) - qx) / ds }
     };
-    rule.integrate(lo, x, regular)
-        + rule.integrate(x, hi, regular)
+    pieces(lo, x, kinks)
+        .chain(pieces(x, hi, kinks))
+        .map(|(a, b)| rule.integrate(a, b, regular))
+        .sum::<f64>()
         + qx * ((hi - x) / (x - lo)).ln()
+}
+
+/// [lo, hi] cut at the `kinks` inside it (increasing), as consecutive pieces.
+fn pieces(lo: f64, hi: f64, kinks: &[f64]) -> impl Iterator<Item = (f64, f64)> {
+    let mut ends = vec![lo];
+    ends.extend(kinks.iter().copied().filter(|&k| k > lo && k < hi));
+    ends.push(hi);
+    (0..ends.len() - 1).map(move |i| (ends[i], ends[i + 1]))
 }
 
 /// I, J and the residual for a solved operating point. The quadrature runs in u = x + a in
 /// [0, a + b], the distance from the trailing edge, so both edges keep full precision.
 pub fn energy(sol: &PlaneSolution) -> Energy {
-    let rule = tanh_sinh(1.0 / 16.0);
+    // the general solver's polynomial of some 64 nodes needs twice the nodes of the closed forms
+    let rule = tanh_sinh(match sol.law {
+        PressureLaw::General { .. } => 1.0 / 32.0,
+        _ => 1.0 / 16.0,
+    });
     let inputs = &sol.inputs;
     let (mu, tau0) = (inputs.friction.coefficient, inputs.friction.adhesion);
     let l = sol.contact_width();
     let q2 = |u: f64| sol.pressure_from_trailing_edge(u);
     let q1 = |u: f64| inputs.shear_at(q2(u));
+    // where q2 or q1 has kinks: the general solver's (the shape's and the cap's), else the shape's
+    let all_kinks: Vec<f64> = match &sol.law {
+        PressureLaw::General { kinks, .. } => kinks.to_vec(),
+        _ => kinks_within(sol),
+    };
+    let kinks: &[f64] = &all_kinks;
     let derivatives: Box<dyn Fn(f64) -> (f64, f64)> = match sol.model {
         Model::Wide => {
             let mat = &inputs.material;
@@ -91,8 +120,8 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
             let pi_chi = std::f64::consts::PI * chi;
             let rule = &rule;
             Box::new(move |u| {
-                let du = -pi_chi * q2(u) + hilbert(rule, 0.0, l, u, &q1) - c * big_q2;
-                let dv = -pi_chi * q1(u) - hilbert(rule, 0.0, l, u, &q2) - c * big_q1;
+                let du = -pi_chi * q2(u) + hilbert(rule, (0.0, l), u, &q1, kinks) - c * big_q2;
+                let dv = -pi_chi * q1(u) - hilbert(rule, (0.0, l), u, &q2, kinks) - c * big_q1;
                 (du / m, dv / m)
             })
         }
@@ -126,7 +155,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
                     b1 += wq1 * b;
                     b2 += wq2 * b;
                 }
-                let h2 = hilbert(rule, 0.0, l, u, &q2);
+                let h2 = hilbert(rule, (0.0, l), u, &q2, &[]);
                 let h1 = mu * h2 + tau0 * ((l - u) / u).ln();
                 let du = -pi_chi * q2(u) + h1 + (r1 - b2) / h;
                 let dv = -pi_chi * q1(u) - h2 - (r2 + b1) / h;
@@ -158,12 +187,8 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
     let linear = inputs.wear.is_linear();
     let wear_of = |q: f64| if linear { q } else { inputs.wear.rate(q) };
     let (mut i, mut j, mut gross, mut q2_wear) = (0.0, 0.0, 0.0, 0.0);
-    // the rule runs piecewise between the shape's kinks inside the contact, where q2 has kinks
-    let mut ends = vec![0.0];
-    ends.extend(kinks_within(sol));
-    ends.push(l);
-    for piece in ends.windows(2) {
-        let (lo, hi) = (piece[0], piece[1]);
+    // the rule runs piecewise between the kinks inside the contact
+    for (lo, hi) in pieces(0.0, l, kinks) {
         let half = 0.5 * (hi - lo);
         for (t, w) in rule.nodes.iter().zip(&rule.weights) {
             let u = if *t < 0.0 {

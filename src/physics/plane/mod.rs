@@ -182,6 +182,12 @@ pub(crate) enum PressureLaw {
     Strip(std::sync::Arc<strip::Collocation>),
     /// The narrow model's shot for any shape and law: q2 interpolated between its nodes.
     Shooting(std::sync::Arc<narrow_ode::Nodes>),
+    /// The general solver's collocation (`general`), with the distances [m] from the trailing
+    /// edge where q2 or Pi(q2) has a kink (the punch's, the cap's), at which quadratures split.
+    General {
+        pressure: std::sync::Arc<general::pressure::Pressure>,
+        kinks: std::sync::Arc<[f64]>,
+    },
 }
 
 /// The solution of the plane problem at one load. Serialised with the keys of `wearlab solve`'s
@@ -210,10 +216,16 @@ pub struct PlaneSolution {
     /// finite thickness the thickness term moves the balance and the sign of mu* - mu says it.
     /// None for the narrow model.
     pub theta: Option<f64>,
-    /// gamma = pi chi mu / m - k [1/Pa] of (4.3). None for the narrow model.
+    /// gamma = pi chi mu / m - k [1/Pa] of (4.3) (without k for a nonlinear wear law, which does
+    /// not enter the edge exponents: docs/physics/plane-general.md section 3). None for the
+    /// narrow model.
     pub gamma: Option<f64>,
     /// psi = integral of q2 g' [N/m], the deformation component of friction (2.2).
     pub psi: f64,
+    /// phi = integral of q1 g' [N/m] (2.1), the friction's share of the load: P = Q2 - phi;
+    /// mu psi + tau0 Delta_g without a shear cap.
+    #[serde(skip)]
+    pub phi: f64,
     /// Delta_g = g(b) - g(-a) [m] (3.11).
     pub delta_g: f64,
     /// Total friction coefficient mu* (3.13), dimensionless.
@@ -256,6 +268,7 @@ impl PlaneSolution {
             }
             PressureLaw::Strip(col) => col.pressure_from_trailing_edge(u),
             PressureLaw::Shooting(nodes) => nodes.pressure(u - self.a),
+            PressureLaw::General { pressure, .. } => pressure.pressure_from_trailing_edge(u),
         }
     }
 
@@ -280,9 +293,11 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
     inputs.validate()?;
     scope::check(inputs, model)?;
     let sol = match model {
-        Model::Wide => wide::solve(inputs),
+        Model::Wide if inputs.is_classical() => wide::solve(inputs),
+        Model::Wide => general::answer::solve(inputs, model),
         Model::Narrow => solve_narrow(inputs),
-        Model::Strip => strip::solve(inputs),
+        Model::Strip if inputs.is_classical() => strip::solve(inputs),
+        Model::Strip => general::answer::solve(inputs, model),
     }?;
     checks::check(&sol)?;
     Ok(sol)
@@ -357,6 +372,14 @@ impl PlaneSolution {
             gamma: found.gamma,
             psi: found.psi,
             delta_g: found.delta_g,
+            // the shot integrates phi into its load balance: Q2 - P to its root's accuracy
+            phi: match found.friction_force {
+                Some(_) => found.q2 - inputs.load,
+                None => {
+                    inputs.friction.coefficient * found.psi
+                        + inputs.friction.adhesion * found.delta_g
+                }
+            },
             mu_star: match found.friction_force {
                 // (3.13) as T - tau0 L over P, which holds with the cap too
                 Some(q1) => (q1 + found.psi - inputs.friction.adhesion * found.width) / inputs.load,

@@ -1,7 +1,9 @@
 //! Which model answers which inputs: the closed forms (wide, narrow) and the strip collocation
 //! solve the paper's worked example - a parabolic punch, the linear wear law, friction without a
-//! shear cap; the narrow model also solves every other shape and law (`narrow_ode`); the wide
-//! and strip models refuse them by name, never answering with a wrong number.
+//! shear cap; the narrow model also solves every other shape and law (`narrow_ode`), the wide
+//! model every punch with smooth edges and the strip model those without a shear cap (the
+//! general solver, `plane::general`); what is left is refused by name, never answered with a
+//! wrong number.
 
 use crate::physics::SolveError;
 use crate::physics::plane::{Model, PlaneInputs};
@@ -16,13 +18,17 @@ pub fn check(inputs: &PlaneInputs, model: Model) -> Result<(), SolveError> {
             model.name()
         )));
     }
-    if inputs.is_classical() || model == Model::Narrow {
-        return Ok(());
-    }
+    let solves = match model {
+        Model::Narrow | Model::Wide => return Ok(()),
+        Model::Strip if inputs.shear_strength == f64::INFINITY => return Ok(()),
+        _ if inputs.is_classical() => return Ok(()),
+        Model::Strip => {
+            "punches with no shear_strength only (the wide and narrow models take a \
+             shear_strength)"
+        }
+    };
     Err(SolveError::InvalidInput(format!(
-        "the {} model solves a parabolic punch with the linear wear law (wear.exponent = 1) and \
-         no shear_strength only; these inputs have {}: the narrow model solves them (plane.model \
-         = narrow)",
+        "the {} model solves {solves}; these inputs have {}",
         model.name(),
         departures(inputs)
     )))
@@ -101,9 +107,24 @@ mod tests {
             reference_pressure: 1e6,
             ..inputs.wear
         };
+        assert!(check(&inputs, Model::Wide).is_ok());
+        assert!(check(&inputs, Model::Strip).is_ok());
+        assert!(check(&inputs, Model::Narrow).is_ok());
+        inputs.shear_strength = 1e6;
         let err = check(&inputs, Model::Strip).unwrap_err().to_string();
         assert!(
-            err.contains("strip model") && err.contains("a power punch, wear.exponent = 2"),
+            err.contains("strip model")
+                && err.contains("no shear_strength")
+                && err.contains("a power punch, wear.exponent = 2"),
+            "{err}"
+        );
+        inputs.shape = Shape::Flat {
+            half_width: 1e-3,
+            edge_radius: 0.0,
+        };
+        let err = check(&inputs, Model::Wide).unwrap_err().to_string();
+        assert!(
+            err.contains("wide model") && err.contains("a flat punch"),
             "{err}"
         );
     }

@@ -194,22 +194,6 @@ impl Shape {
     }
 }
 
-/// The shape as the general solver of the wide strip reads it.
-impl crate::physics::plane::general::laws::Punch for Shape {
-    fn height(&self, x: f64) -> f64 {
-        self.g(x)
-    }
-    fn slope(&self, x: f64) -> f64 {
-        Shape::slope(self, x)
-    }
-    fn curvature(&self, x: f64, _step: f64) -> f64 {
-        Shape::curvature(self, x)
-    }
-    fn kinks(&self) -> Vec<f64> {
-        Shape::kinks(self)
-    }
-}
-
 /// The shape as the preset gives it (`wearlab solve`'s `shape`): its kind and parameters, SI.
 impl serde::Serialize for Shape {
     fn serialize<S: serde::Serializer>(&self, out: S) -> Result<S::Ok, S::Error> {

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
-use crate::physics::plane::{checks, scope, validity};
+use crate::physics::plane::{checks, general, scope, validity};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -35,20 +35,22 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
         return gather(Vec::new(), &[]);
     }
     let valid = inputs.validate().is_ok() && scope::check(inputs, model).is_ok();
-    if model == Model::Strip {
+    let closed = inputs.is_classical();
+    if model == Model::Strip && closed {
         return by_contact_width(inputs, loads, valid);
     }
     let load = loads.values();
-    let wide = (valid && model == Model::Wide).then(|| WideConstants::new(inputs));
+    let wide = (valid && closed && model == Model::Wide).then(|| WideConstants::new(inputs));
     let solutions: Vec<_> = load
         .iter()
         .map(|&p| {
             let at = inputs.with_load(p);
             match model {
                 _ if !valid => None,
-                Model::Wide => wide::solve_with(wide.as_ref()?, &at).ok(),
+                Model::Wide if closed => wide::solve_with(wide.as_ref()?, &at).ok(),
+                Model::Wide => general::answer::solve(&at, model).ok(),
                 Model::Narrow => solve_narrow(&at).ok(),
-                Model::Strip => unreachable!("the strip sweep runs by contact width"),
+                Model::Strip => general::answer::solve(&at, model).ok(),
             }
             .filter(|sol| checks::check(sol).is_ok())
         })

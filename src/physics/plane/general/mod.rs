@@ -8,6 +8,7 @@
 //! fixes the width: P = Q2 - phi, phi = integral of Pi(q2) g' (2.1). For each width the
 //! collocation is solved by Newton (`system`), then the width by Brent's method on P (`width`).
 
+pub mod answer;
 pub mod laws;
 pub mod pressure;
 pub mod system;
@@ -16,9 +17,11 @@ pub mod width;
 use nalgebra::DVector;
 
 use crate::physics::elastic::chi_c12;
-use crate::physics::plane::general::laws::{FrictionLaw, Punch, WearLaw};
+use crate::physics::plane::WearLaw;
+use crate::physics::plane::general::laws::{FrictionLaw, Punch};
 use crate::physics::plane::general::pressure::Pressure;
 use crate::physics::plane::general::system::Discretisation;
+use crate::physics::plane::strip::{self, Kernels};
 use crate::physics::{Material, SolveError};
 
 /// The node count of an operating point.
@@ -38,6 +41,9 @@ pub struct Problem<'a> {
     pub wear: WearLaw,
     /// g(x).
     pub shape: &'a dyn Punch,
+    /// The exact strip's kernels (the strip of any thickness), or None for the wide strip
+    /// (thickness correction c12) and the half-plane.
+    pub strip: Option<&'a dyn Kernels>,
     /// Normal load per unit length P [N/m], > 0.
     pub load: f64,
 }
@@ -48,23 +54,36 @@ impl Problem<'_> {
         self.material.plane_modulus()
     }
 
-    /// chi c12/h [1/m] of the wide strip's thickness correction; 0 on the half-plane.
+    /// chi c12/h [1/m] of the wide strip's thickness correction; 0 on the half-plane and on the
+    /// strip of any thickness, whose kernels hold it.
     pub fn c12_over_h(&self) -> f64 {
-        if self.material.is_half_space() {
+        if self.material.is_half_space() || self.strip.is_some() {
             0.0
         } else {
             chi_c12(self.material.poisson_ratio) / self.material.thickness
         }
     }
 
-    /// The edge exponents' theta = arctan(m gamma0/pi)/pi, gamma0 = pi chi mu/m - k [n = 1]
-    /// (docs/physics/plane-general.md section 3: for n > 1 the wear does not shift them).
+    /// gamma0 = pi chi mu/m - k [n = 1] [1/Pa], the coefficient of q2 in the dominant part of (E).
+    pub fn gamma(&self) -> f64 {
+        std::f64::consts::PI * self.material.chi() * self.friction.coefficient() / self.m()
+            - self.linear_wear()
+    }
+
+    /// The edge exponents' theta = arctan(m gamma0/pi)/pi (docs/physics/plane-general.md
+    /// section 3: for n > 1 the wear does not shift them).
     pub fn theta(&self) -> f64 {
         use std::f64::consts::PI;
-        let m = self.m();
-        let gamma0 =
-            PI * self.material.chi() * self.friction.coefficient / m - self.wear.linear_part();
-        (m * gamma0 / PI).atan() / PI
+        (self.m() * self.gamma() / PI).atan() / PI
+    }
+
+    /// The linear part k [1/Pa] of the wear law that the edge exponents carry: k for n = 1, else 0.
+    pub fn linear_wear(&self) -> f64 {
+        if self.wear.is_linear() {
+            self.wear.coefficient
+        } else {
+            0.0
+        }
     }
 
     /// Whether the shear cap can be reached (tau_max finite).
@@ -76,7 +95,7 @@ impl Problem<'_> {
     /// starts to hold.
     pub fn splits(&self, p: &Pressure) -> Vec<f64> {
         let f = &self.friction;
-        let crosses = |q: f64| f.coefficient * q + f.adhesion - f.shear_strength;
+        let crosses = |q: f64| f.coefficient() * q + f.adhesion() - f.shear_strength;
         let crosses: Option<&dyn Fn(f64) -> f64> = self.capped().then_some(&crosses);
         p.splits(&self.shape.kinks(), crosses)
     }
@@ -84,7 +103,7 @@ impl Problem<'_> {
     /// Q1 = integral of Pi(q2) [N/m] = mu Q2 + tau0 L minus what the cap takes off.
     pub fn friction_force(&self, p: &Pressure) -> f64 {
         let f = &self.friction;
-        let coulomb = f.coefficient * p.normal_force() + f.adhesion * p.l;
+        let coulomb = f.coefficient() * p.normal_force() + f.adhesion() * p.l;
         if !self.capped() {
             return coulomb;
         }
@@ -94,7 +113,7 @@ impl Problem<'_> {
 
     /// dQ1/dy_i with y_i = W_i phi_i/m (`system`).
     pub fn friction_force_gradient(&self, p: &Pressure, d: &Discretisation) -> DVector<f64> {
-        let (m, half, mu) = (self.m(), 0.5 * p.l, self.friction.coefficient);
+        let (m, half, mu) = (self.m(), 0.5 * p.l, self.friction.coefficient());
         let mut g = DVector::from_element(d.len(), mu * half * m);
         if !self.capped() {
             return g;
@@ -149,18 +168,68 @@ pub struct Solution {
 }
 
 /// Solves the problem at its load with `nodes` collocation nodes: the width first with
-/// `COARSE_NODES` nodes, then refined with `nodes`.
+/// `COARSE_NODES` nodes, then refined with `nodes`, or on the strip of any thickness with the
+/// strip solver's count if that is more (`strip::nodes_for`: the kernels vary on the scale h).
 pub fn solve(problem: &Problem, nodes: usize) -> Result<Solution, SolveError> {
     let theta = problem.theta();
-    let near = if nodes > COARSE_NODES {
-        let coarse = Discretisation::new(theta, COARSE_NODES);
-        Some(width::solve(problem, &coarse, None)?.0)
-    } else {
-        None
+    let (near, nodes) = match problem.strip {
+        None => {
+            let coarse = Discretisation::new(theta, COARSE_NODES);
+            (width::solve(problem, &coarse, None)?.0, nodes)
+        }
+        Some(_) => {
+            let near = strip_width(problem, theta)?;
+            let h = problem.material.thickness;
+            let wanted = strip::nodes_for(near / h).div_ceil(16) * 16;
+            if wanted > strip::MAX_NODES {
+                return Err(SolveError::NoSolution(format!(
+                    "the contact is {:.0} strip thicknesses wide: beyond the {} nodes the strip \
+                     model resolves",
+                    near / h,
+                    strip::MAX_NODES
+                )));
+            }
+            (near, wanted.max(nodes))
+        }
     };
     let d = Discretisation::new(theta, nodes);
-    let (l, unknowns) = width::solve(problem, &d, near)?;
+    let (l, unknowns) = width::solve(problem, &d, Some(near))?;
     Ok(assemble(problem, unknowns.pressure(&d, problem, l)))
+}
+
+/// The strip's coarse width [m]: the node count doubled from one that resolves the first guess
+/// (16 + 2 L/h, the strip solver's coarse count, at the half-plane-like guess of `width`, which a
+/// strip's width does not exceed) until the width changes by less than 1 % and the nodes resolve
+/// it; a count that does not converge is passed over. At most `strip::MAX_NODES / 2` nodes.
+/// (With too few nodes for L/h the discrete P(L) has roots of its own, at L/h near 6 N.)
+fn strip_width(problem: &Problem, theta: f64) -> Result<f64, SolveError> {
+    let h = problem.material.thickness;
+    let guess = width::first_guess(problem)?;
+    let first =
+        ((16.0 + 2.0 * guess / h).min(strip::MAX_NODES as f64 / 2.0) as usize).div_ceil(16) * 16;
+    let (mut n, mut last, mut why) = (first.max(COARSE_NODES), None::<f64>, None);
+    while n <= strip::MAX_NODES / 2 {
+        match width::solve(problem, &Discretisation::new(theta, n), last) {
+            Ok((l, _)) => {
+                let settled = last.is_some_and(|p| (l - p).abs() < 1e-2 * l);
+                if settled && n as f64 >= 16.0 + 2.0 * l / h {
+                    return Ok(l);
+                }
+                last = Some(l);
+            }
+            Err(e) => {
+                last = None;
+                why = Some(e);
+            }
+        }
+        n *= 2;
+    }
+    Err(why.unwrap_or_else(|| {
+        SolveError::NoSolution(format!(
+            "the general solver's contact width on the strip did not settle with up to {} nodes",
+            strip::MAX_NODES / 2
+        ))
+    }))
 }
 
 /// The forces and mu* of the pressure `p`.
@@ -182,7 +251,7 @@ fn assemble(problem: &Problem, p: Pressure) -> Solution {
         phi,
         delta_g: shape.height(b) - shape.height(-a),
         tangential_force,
-        mu_star: (tangential_force - f.adhesion * (a + b)) / problem.load,
+        mu_star: (tangential_force - f.adhesion() * (a + b)) / problem.load,
         theta: p.theta,
         pressure: p,
     }

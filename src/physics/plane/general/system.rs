@@ -106,12 +106,49 @@ impl Unknowns {
     }
 }
 
+/// The parts of (E) that are linear in y at one width: the Cauchy matrix plus, on the strip of
+/// any thickness, (L/(2h)) (R2 + mu chi B12)(z_ik), z_ik = (L/2)(t_i - xi_k)/h; and the constant
+/// of each row: pi chi tau0/m plus, on the strip, (tau0/m) [chi l12((b-x)/h) + chi l12((a+x)/h)]
+/// (docs/physics/plane.md section 6).
+struct AtWidth {
+    linear: DMatrix<f64>,
+    constant: DVector<f64>,
+}
+
+impl AtWidth {
+    fn new(d: &Discretisation, problem: &Problem, l: f64) -> AtWidth {
+        let (n, m, half) = (d.len(), problem.m(), 0.5 * l);
+        let tau0 = problem.friction.adhesion();
+        let pi_chi_tau0 = std::f64::consts::PI * problem.material.chi() * tau0 / m;
+        let mut linear = d.cauchy.clone();
+        let mut constant = DVector::from_element(n + 1, pi_chi_tau0);
+        if let Some(kernels) = problem.strip {
+            let h = problem.material.thickness;
+            let mu = problem.friction.coefficient();
+            let (nodes, points) = (d.rules.nodes(), d.rules.points());
+            for k in 0..=n {
+                for i in 0..n {
+                    linear[(k, i)] +=
+                        half / h * kernels.regular(half * (nodes[i] - points[k]) / h, mu);
+                }
+                if tau0 != 0.0 {
+                    let xi = points[k];
+                    constant[k] += tau0 / m
+                        * (kernels.chi_l12(half * (1.0 - xi) / h)
+                            + kernels.chi_l12(half * (1.0 + xi) / h));
+                }
+            }
+        }
+        AtWidth { linear, constant }
+    }
+}
+
 /// The residual of (E) at the collocation points and, when `jacobian` is given, its Jacobian in
 /// (y, s).
 fn residual(
     d: &Discretisation,
     problem: &Problem,
-    l: f64,
+    (l, at): (f64, &AtWidth),
     u: &Unknowns,
     jacobian: Option<&mut DMatrix<f64>>,
 ) -> DVector<f64> {
@@ -125,25 +162,27 @@ fn residual(
     let c12 = problem.c12_over_h();
     let pressure = (c12 != 0.0).then(|| u.pressure(d, problem, l));
     let q1 = pressure.as_ref().map_or(0.0, |p| problem.friction_force(p));
-    let constant = c12 * q1 / m + pi_chi * friction.adhesion / m;
-    let k1 = wear.linear_part();
+    let constant = c12 * q1 / m;
+    let (k1, mu, tau0) = (
+        problem.linear_wear(),
+        friction.coefficient(),
+        friction.adhesion(),
+    );
     let points = d.rules.points();
-    let mut r = &d.cauchy * &u.y;
+    let mut r = &at.linear * &u.y + &at.constant;
     for k in 0..=n {
         let x = (u.s + points[k]) * half;
-        let nl = pi_chi / m
-            * (friction.shear(q[k]) - friction.coefficient * q[k] - friction.adhesion)
-            - (wear.rate(q[k]) - k1 * q[k]);
+        let nl =
+            pi_chi / m * (friction.shear(q[k]) - mu * q[k] - tau0) - (wear.rate(q[k]) - k1 * q[k]);
         r[k] += nl + constant + problem.shape.slope(x);
     }
     if let Some(jac) = jacobian {
-        jac.view_mut((0, 0), (n + 1, n)).copy_from(&d.cauchy);
+        jac.view_mut((0, 0), (n + 1, n)).copy_from(&at.linear);
         let dq1 = pressure
             .as_ref()
             .map(|p| problem.friction_force_gradient(p, d));
         for k in 0..=n {
-            let dnl = pi_chi / m * (friction.shear_derivative(q[k]) - friction.coefficient)
-                - (wear.rate_derivative(q[k]) - k1);
+            let dnl = pi_chi / m * (friction.shear_slope(q[k]) - mu) - (wear.rate_slope(q[k]) - k1);
             for i in 0..n {
                 let mut entry = jac[(k, i)] + dnl * d.to_points[(k, i)] * m / weights[i];
                 if let Some(g) = &dq1 {
@@ -169,7 +208,8 @@ pub fn solve_at(
     let n = d.len();
     let mut u = start.clone();
     let mut jac = DMatrix::zeros(n + 1, n + 1);
-    let mut r = residual(d, problem, l, &u, Some(&mut jac));
+    let at = AtWidth::new(d, problem, l);
+    let mut r = residual(d, problem, (l, &at), &u, Some(&mut jac));
     for _ in 0..NEWTON_STEPS {
         let mut rhs = -&r;
         for k in 0..=n {
@@ -198,7 +238,7 @@ pub fn solve_at(
                 y: &u.y + factor * step.rows(0, n),
                 s: u.s + factor * step[n],
             };
-            let r_trial = residual(d, problem, l, &trial, Some(&mut jac));
+            let r_trial = residual(d, problem, (l, &at), &trial, Some(&mut jac));
             if r_trial.iter().all(|v| v.is_finite()) && r_trial.norm() < norm {
                 next = Some((trial, r_trial));
                 break;

@@ -23,14 +23,18 @@ const BRACKET_UP: (f64, usize) = (1.25, 80);
 /// Bracket steps from a coarser solution's width, which is close.
 const NEAR_DOWN: (f64, usize) = (0.99, 400);
 const NEAR_UP: (f64, usize) = (1.01, 400);
-/// Relative accuracy of the width.
-const WIDTH_TOLERANCE: f64 = 1e-15;
+/// Relative accuracy of the width: P(L) carries the Newton solves' round-off (some 1e-14 of P,
+/// depending on the start), which near the root can flip its sign and stall Brent's method at
+/// tighter tolerances.
+const WIDTH_TOLERANCE: f64 = 1e-13;
 
 /// The solutions at the widths tried, for warm starts.
 struct Tried<'a> {
     problem: &'a Problem<'a>,
     d: &'a Discretisation,
     solved: RefCell<Vec<(f64, Unknowns)>>,
+    /// P(L) - P at each width tried.
+    values: RefCell<Vec<(f64, f64)>>,
 }
 
 impl Tried<'_> {
@@ -54,12 +58,19 @@ impl Tried<'_> {
         Some(u)
     }
 
-    /// P(L) - P [N/m], NaN where the collocation does not converge.
+    /// P(L) - P [N/m], NaN where the collocation does not converge. Each width is solved once
+    /// and its value kept: solved again from another start, P(L) would differ in its last
+    /// digits, and a root finder that sees two signs at one point stalls.
     fn excess_load(&self, l: f64) -> f64 {
-        self.at(l).map_or(f64::NAN, |u| {
+        if let Some(&(_, v)) = self.values.borrow().iter().find(|(x, _)| *x == l) {
+            return v;
+        }
+        let v = self.at(l).map_or(f64::NAN, |u| {
             let p = u.pressure(self.d, self.problem, l);
             carried_load(self.problem, &p) - self.problem.load
-        })
+        });
+        self.values.borrow_mut().push((l, v));
+        v
     }
 }
 
@@ -71,7 +82,7 @@ pub fn carried_load(problem: &Problem, p: &Pressure) -> f64 {
 }
 
 /// The first guess of the width [m] (module note).
-fn first_guess(problem: &Problem) -> Result<f64, SolveError> {
+pub fn first_guess(problem: &Problem) -> Result<f64, SolveError> {
     let (m, p, shape) = (problem.m(), problem.load, problem.shape);
     let f = |l: f64| m * l * (shape.slope(0.5 * l) - shape.slope(-0.5 * l)) / 8.0 - p;
     march_up(GUESS_FROM, 2.0, GUESS_TO, f)
@@ -97,6 +108,7 @@ pub fn solve(
         problem,
         d,
         solved: RefCell::new(Vec::new()),
+        values: RefCell::new(Vec::new()),
     };
     let f = |l: f64| tried.excess_load(l);
     let (start, down, up) = match near {

@@ -1,0 +1,76 @@
+//! The general plane solver (docs/physics/plane-general.md): one operating point of the wide model
+//! for a power punch (n = 3) with the wear law n = 2 and a shear cap, on the half-plane and on a
+//! 1 mm strip, and one with the linear laws on a flat punch with rounded edges. Case: E = 1e10 Pa,
+//! nu = 0.3, R = 0.05 m, mu = 0.3, tau0 = 1e5 Pa, k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m.
+//! Measured in CPU time (see benches/strip.rs).
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw, solve};
+use wearlab::physics::{Friction, Material};
+
+mod common;
+use common::cpu_time::CpuTime;
+
+fn inputs(thickness: f64, shape: Shape, wear_exponent: f64, shear_strength: f64) -> PlaneInputs {
+    let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);
+    PlaneInputs {
+        material: Material {
+            youngs_modulus: 1e10,
+            poisson_ratio: 0.3,
+            thickness,
+        },
+        friction: Friction {
+            coefficient: 0.3,
+            adhesion: 1e5,
+        },
+        shear_strength,
+        wear: WearLaw {
+            coefficient: 0.5 / m,
+            exponent: wear_exponent,
+            reference_pressure: 1e8,
+        },
+        shape,
+        load: 1e4,
+    }
+}
+
+fn operating_points(c: &mut Criterion<CpuTime>) {
+    let power = Shape::Power {
+        radius: 0.05,
+        exponent: 3.0,
+    };
+    let flat = Shape::Flat {
+        half_width: 1e-4,
+        edge_radius: 0.05,
+    };
+    let cases = [
+        (
+            "power_capped_half_plane",
+            inputs(f64::INFINITY, power.clone(), 2.0, 2e6),
+        ),
+        ("power_capped_1mm", inputs(1e-3, power, 2.0, 2e6)),
+        (
+            "rounded_flat_half_plane",
+            inputs(f64::INFINITY, flat, 1.0, f64::INFINITY),
+        ),
+    ];
+    for (name, at) in cases {
+        c.bench_function(&format!("general_point/{name}"), |b| {
+            b.iter(|| solve(black_box(&at), Model::Wide).unwrap())
+        });
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default()
+        .with_measurement(CpuTime)
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3));
+    targets = operating_points
+}
+criterion_main!(benches);

@@ -1,0 +1,57 @@
+//! The general solver as `plane::solve` calls it for the wide model (half-plane and wide strip)
+//! and the strip of any thickness (without a shear cap) when the inputs are not the closed
+//! form's or the strip solver's (a parabola, the linear wear law, no shear cap):
+//! the inputs turned into a `Problem`, the solution into a `PlaneSolution` whose pressure law
+//! (`PressureLaw::General`) the profiles, the energy identity and the charts evaluate.
+
+use std::sync::Arc;
+
+use crate::physics::SolveError;
+use crate::physics::plane::general::laws::FrictionLaw;
+use crate::physics::plane::general::{NODES, Problem, solve as solve_general};
+use crate::physics::plane::strip::{Kernels, kernels_for};
+use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw};
+
+/// The wide or strip model's solution of smooth, non-classical inputs; an error when the
+/// general solver does not converge or the contact runs off a measured profile.
+pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
+    let kernels = (model == Model::Strip).then(|| kernels_for(inputs.material.poisson_ratio));
+    let problem = Problem {
+        material: inputs.material,
+        friction: FrictionLaw {
+            coulomb: inputs.friction,
+            shear_strength: inputs.shear_strength,
+        },
+        wear: inputs.wear,
+        shape: &inputs.shape,
+        load: inputs.load,
+        strip: kernels.as_deref().map(|k| k as &dyn Kernels),
+    };
+    let sol = solve_general(&problem, NODES)?;
+    inputs.shape.covers(sol.a, sol.b)?;
+    let p = &sol.pressure;
+    let kinks: Arc<[f64]> = problem
+        .splits(p)
+        .iter()
+        .map(|t| 0.5 * p.l * (1.0 + t))
+        .collect();
+    Ok(PlaneSolution {
+        model,
+        inputs: inputs.clone(),
+        normal_force: sol.normal_force,
+        friction_force: sol.friction_force,
+        tangential_force: sol.tangential_force,
+        a: sol.a,
+        b: sol.b,
+        theta: Some(sol.theta),
+        gamma: Some(problem.gamma()),
+        psi: sol.psi,
+        phi: sol.phi,
+        delta_g: sol.delta_g,
+        mu_star: sol.mu_star,
+        law: PressureLaw::General {
+            pressure: Arc::new(sol.pressure),
+            kinks,
+        },
+    })
+}
