@@ -14,3 +14,4 @@ mod spatial_partial_sie;
 mod spatial_props;
 mod spatial_running_in;
 mod spatial_time_steps;
+mod surface;

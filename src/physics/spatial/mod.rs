@@ -18,6 +18,7 @@ mod product;
 pub mod result;
 mod separable;
 pub mod state;
+pub mod surface;
 
 use std::f64::consts::PI;
 
