@@ -122,6 +122,8 @@ fn shown(p: &Param, preset: &Preset) -> bool {
     match p.key {
         "wear.exponent" | "wear.reference_pressure" => preset.wear_exponent != 1.0,
         "friction.shear_strength" => preset.shear_strength.is_finite(),
+        // the parabola's radius: no input of another shape
+        "plane.radius" => preset.plane.shape.is_none(),
         _ => true,
     }
 }
@@ -265,6 +267,13 @@ impl Preset {
         }
         if key.harmonic.is_some() {
             self.harmonic_of(key)?;
+        }
+        if let (Some(shape), "plane.radius") = (&self.plane.shape, key.param().key) {
+            return Err(format!(
+                "plane.radius is the parabola's radius; this preset's punch is a {} shape \
+                 (plane.shape in the file), which plane.radius does not change",
+                shape.kind()
+            ));
         }
         Ok(key)
     }

@@ -128,3 +128,22 @@ fn hostile_profiles_and_laws_are_refused_in_words() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("no steady solution"), "{err}");
 }
+
+#[test]
+fn the_parabolas_radius_is_no_input_of_another_shape() {
+    // setting it would change nothing: refused with the reason, not ignored
+    let (code, _, err) = solve(PRESET, &parabola_csv(), &["--set", "plane.radius=0.1"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("plane.radius is the parabola's radius; this preset's punch is a table shape"),
+        "{err}"
+    );
+    // and the explorer's form has no R row for it
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("worn.csv"), parabola_csv()).unwrap();
+    let path = dir.path().join("p.toml");
+    std::fs::write(&path, PRESET).unwrap();
+    let preset = wearlab::preset::load(&path).unwrap();
+    let keys = wearlab::preset::Key::all(&preset);
+    assert!(keys.iter().all(|k| k.param().key != "plane.radius"));
+}
