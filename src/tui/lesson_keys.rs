@@ -10,7 +10,7 @@ use crate::units::format_si;
 use crate::tui::app::{App, Command, Mode};
 use crate::tui::form;
 use crate::tui::lesson_state::{Mark, Quiz};
-use crate::tui::prompt_keys::{Prompt, PromptAction, prompt_action};
+use crate::tui::prompt_keys::{Prompt, PromptAction, cursor_step, prompt_action};
 use crate::tui::text_field::TextField;
 
 /// True when the preset's lesson locks this key.
@@ -90,10 +90,12 @@ pub fn key(app: &mut App, key: KeyEvent, mut quiz: Quiz) -> Vec<Command> {
             quiz.typed = TextField::default();
         }
         Some(PromptAction::Backspace) => quiz.typed.backspace(),
-        Some(PromptAction::Left) => quiz.typed.move_cursor(-1),
-        Some(PromptAction::Right) => quiz.typed.move_cursor(1),
-        Some(PromptAction::First) => quiz.typed.move_cursor(isize::MIN),
-        Some(PromptAction::Last) => quiz.typed.move_cursor(isize::MAX),
+        Some(
+            action @ (PromptAction::Left
+            | PromptAction::Right
+            | PromptAction::First
+            | PromptAction::Last),
+        ) => quiz.typed.move_cursor(cursor_step(action)),
         Some(PromptAction::Accept) => check(app, &mut quiz),
         _ => {
             if let KeyCode::Char(c) = key.code {

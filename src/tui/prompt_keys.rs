@@ -149,3 +149,15 @@ pub fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
         _ => None,
     }
 }
+
+/// How far a key moves the cursor in typed text (`TextField::move_cursor`): ←→ one character,
+/// Home End to either end; 0 for any other action.
+pub fn cursor_step(action: PromptAction) -> isize {
+    match action {
+        PromptAction::Left => -1,
+        PromptAction::Right => 1,
+        PromptAction::First => isize::MIN,
+        PromptAction::Last => isize::MAX,
+        _ => 0,
+    }
+}

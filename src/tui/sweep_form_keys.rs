@@ -64,20 +64,15 @@ pub fn key(app: &mut App, mut form: SweepForm, key: KeyEvent) -> Vec<Command> {
         }
         Some(PromptAction::Up) => form.row = form.row.checked_sub(1).unwrap_or(rows - 1),
         Some(PromptAction::Down) => form.row = (form.row + 1) % rows,
-        Some(action @ (PromptAction::Left | PromptAction::Right))
-            if text_of(&mut form).is_some() =>
-        {
+        // on a typed row ←→ Home End edit the text; on a choice row ←→ choose
+        Some(
+            action @ (PromptAction::Left
+            | PromptAction::Right
+            | PromptAction::First
+            | PromptAction::Last),
+        ) if text_of(&mut form).is_some() => {
             if let Some(text) = text_of(&mut form) {
-                text.move_cursor(if action == PromptAction::Left { -1 } else { 1 });
-            }
-        }
-        Some(action @ (PromptAction::First | PromptAction::Last)) => {
-            if let Some(text) = text_of(&mut form) {
-                text.move_cursor(if action == PromptAction::First {
-                    isize::MIN
-                } else {
-                    isize::MAX
-                });
+                text.move_cursor(prompt_keys::cursor_step(action));
             }
         }
         Some(action @ (PromptAction::Left | PromptAction::Right)) => {

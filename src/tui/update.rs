@@ -284,12 +284,7 @@ fn text_key(
             | PromptAction::First
             | PromptAction::Last),
         ) => {
-            buffer.move_cursor(match action {
-                PromptAction::Left => -1,
-                PromptAction::Right => 1,
-                PromptAction::First => isize::MIN,
-                _ => isize::MAX,
-            });
+            buffer.move_cursor(prompt_keys::cursor_step(action));
             app.ui.mode = mode(buffer);
             Vec::new()
         }
