@@ -133,25 +133,21 @@ pub enum Links {
 
 /// The file a save to `path` writes: `path` itself, or with `Links::Follow` the target its
 /// symbolic links lead to (a relative link is relative to the link's folder) when the user may
-/// replace it (`kept_by_save`).
-fn save_target(path: &Path, links: Links) -> io::Result<PathBuf> {
-    if links == Links::Replace {
-        return Ok(path.to_path_buf());
+/// replace it; and the file a link led to that the save leaves as it was (the link replaced by
+/// the saved file), if any.
+fn save_target(path: &Path, links: Links) -> io::Result<(PathBuf, Option<PathBuf>)> {
+    let target = match links {
+        Links::Follow => link_target(path)?,
+        Links::Replace => match link_target(path) {
+            Ok(target) => target,
+            Err(_) => return Ok((path.to_path_buf(), None)),
+        },
+    };
+    if target == path || (links == Links::Follow && writable(&target)) {
+        return Ok((target, None));
     }
-    let target = link_target(path)?;
-    Ok(if target == path || writable(&target) {
-        target
-    } else {
-        path.to_path_buf()
-    })
-}
-
-/// The file that `path`, a symbolic link, leads to, and that a save to `path` with `links`
-/// leaves as it was (the link is replaced by the saved file); None when `path` is no such link.
-pub fn kept_by_save(path: &Path, links: Links) -> Option<PathBuf> {
-    let target = link_target(path).ok()?;
-    let kept = links == Links::Replace || !writable(&target);
-    (target != path && target.exists() && kept).then_some(target)
+    let kept = target.exists().then_some(target);
+    Ok((path.to_path_buf(), kept))
 }
 
 /// Whether `path` is a symbolic link (possibly through others) to a file in one of `folders`.
@@ -256,14 +252,15 @@ fn same_owner(a: &fs::Metadata, b: &fs::Metadata) -> bool {
 }
 
 /// Writes `path` atomically: the bytes go to a temporary file in the folder of the file that is
-/// replaced (the target of `path`'s links), which gets that file's mode, is synced and then
-/// renamed over it. If `write` fails, the old file is untouched and the temporary file removed.
+/// replaced (the target of `path`'s links, as `links` says), which gets that file's mode, is
+/// synced and then renamed over it. If `write` fails, the old file is untouched and the
+/// temporary file removed. Ok holds the file a link led to that the save left as it was.
 pub fn write_atomically(
     path: &Path,
     links: Links,
     write: impl FnOnce(&mut File) -> io::Result<()>,
-) -> io::Result<()> {
-    let target = save_target(path, links)?;
+) -> io::Result<Option<PathBuf>> {
+    let (target, kept) = save_target(path, links)?;
     let dir = match target.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -295,5 +292,5 @@ pub fn write_atomically(
     tmp.as_file_mut().flush()?;
     tmp.as_file().sync_all()?;
     tmp.persist(&target).map_err(|e| e.error)?;
-    Ok(())
+    Ok(kept)
 }

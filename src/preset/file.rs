@@ -314,11 +314,16 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
 
 /// Saves a preset atomically, through a symbolic link to a file the user may replace.
 pub fn save(preset: &Preset, path: &Path) -> std::io::Result<()> {
-    save_with(preset, path, disk::Links::Follow)
+    save_with(preset, path, disk::Links::Follow).map(|_| ())
 }
 
-/// Saves a preset atomically, doing `links` with a symbolic link at `path`.
-pub fn save_with(preset: &Preset, path: &Path, links: disk::Links) -> std::io::Result<()> {
+/// Saves a preset atomically, doing `links` with a symbolic link at `path`; Ok holds the file a
+/// link led to that the save left as it was.
+pub fn save_with(
+    preset: &Preset,
+    path: &Path,
+    links: disk::Links,
+) -> std::io::Result<Option<PathBuf>> {
     let text = to_toml(preset);
     disk::write_atomically(path, links, |f| f.write_all(text.as_bytes()))
 }

@@ -32,7 +32,7 @@ use crate::physics::{Friction, Material, Spacing, SweepRange};
 
 pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
 pub use check::{load, load_with_warnings, parse, parse_with_warnings};
-pub use disk::{Links, MAX_PRESET_BYTES, kept_by_save, leads_into, write_atomically};
+pub use disk::{Links, MAX_PRESET_BYTES, leads_into, write_atomically};
 pub use explore_section::Explore;
 pub use file::{SaveTarget, resolve_save_path, save, save_with, to_toml};
 pub use key::Key;

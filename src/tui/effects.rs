@@ -115,14 +115,13 @@ pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool, shared: &[
         } else {
             Links::Follow
         };
-        let kept = preset::kept_by_save(path, links);
         std::fs::create_dir_all(&folder)
             .map_err(|e| format!("cannot create {}: {e}", folder.display()))
             .and_then(|()| {
                 preset::save_with(&preset, path, links)
                     .map_err(|e| format!("{}: {e}", path.display()))
             })
-            .map(|()| match kept {
+            .map(|kept| match kept {
                 Some(original) => format!(
                     "saved {} as your own copy: it was a link to {}, which stays as it was",
                     path.display(),
@@ -140,7 +139,7 @@ pub fn export(path: PathBuf, text: String, overwrite: bool) -> Msg {
         return Msg::ExportExists(path, text);
     }
     let written = preset::write_atomically(&path, Links::Follow, |f| f.write_all(text.as_bytes()));
-    let result = written.map_err(|e| e.to_string());
+    let result = written.map(|_| ()).map_err(|e| e.to_string());
     Msg::Exported(path, result)
 }
 
