@@ -55,9 +55,9 @@ mod tests {
     use crate::physics::plane::{Shape, WearLaw};
     use crate::physics::{Friction, Material};
 
-    #[test]
-    fn sharp_corners_are_refused_by_every_model_with_the_way_out() {
-        let mut inputs = PlaneInputs::parabolic(
+    /// A parabolic punch (R = 50 mm, P = 10 kN/m) on a 1 mm polymer coating, linear wear.
+    fn polymer_coating() -> PlaneInputs {
+        PlaneInputs::parabolic(
             Material {
                 youngs_modulus: 1e9,
                 poisson_ratio: 0.3,
@@ -70,7 +70,12 @@ mod tests {
             1e-12,
             0.05,
             1e4,
-        );
+        )
+    }
+
+    #[test]
+    fn sharp_corners_are_refused_by_every_model_with_the_way_out() {
+        let mut inputs = polymer_coating();
         inputs.shape = Shape::Flat {
             half_width: 1e-3,
             edge_radius: 0.0,
@@ -83,20 +88,7 @@ mod tests {
 
     #[test]
     fn other_shapes_and_laws_are_refused_by_name() {
-        let mut inputs = PlaneInputs::parabolic(
-            Material {
-                youngs_modulus: 1e9,
-                poisson_ratio: 0.3,
-                thickness: 1e-3,
-            },
-            Friction {
-                coefficient: 0.3,
-                adhesion: 0.0,
-            },
-            1e-12,
-            0.05,
-            1e4,
-        );
+        let mut inputs = polymer_coating();
         assert!(check(&inputs, Model::Wide).is_ok());
         inputs.shape = Shape::Power {
             radius: 0.05,
