@@ -5,6 +5,7 @@
 
 pub mod engine;
 pub mod finite;
+pub mod phrase;
 pub mod physics;
 pub mod preset;
 pub mod report;

@@ -6,6 +6,7 @@
 
 use serde::Serialize;
 
+use crate::phrase::Phrase;
 use crate::physics::plane::criteria::{
     self, MU_STAR_FLOOR, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
 };
@@ -76,8 +77,8 @@ pub enum Aspect {
 pub struct Reason {
     /// What the criterion judges.
     pub aspect: Aspect,
-    /// "Winkler needs (a+b)/h > 312 here, not 8.3".
-    pub text: String,
+    /// "Winkler needs (a+b)/h > 312 here, not 8.3", its values kept whole.
+    pub text: Phrase,
 }
 
 impl Reason {
@@ -111,7 +112,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         .unzip();
     let mut warnings = failed_criteria.clone();
     let mut reasons = reasons;
-    let mut assumption = |long: String, short: String| {
+    let mut assumption = |long: String, short: Phrase| {
         warnings.push(long);
         reasons.push(Reason {
             aspect: Aspect::Assumption,
@@ -127,7 +128,9 @@ pub fn check(sol: &PlaneSolution) -> Validity {
                 "theta = {theta:.3} is close to +-1/2: the pressure is nearly singular at the \
                  {edge} edge"
             ),
-            format!("theta = {theta:.3} near +-1/2: pressure nearly singular at the {edge} edge"),
+            Phrase::whole(format!("theta = {theta:.3}")).then_words(&format!(
+                "near +-1/2: pressure nearly singular at the {edge} edge"
+            )),
         );
     }
     let l_over_r = l / inputs.radius();
@@ -138,7 +141,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
             format!(
                 "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
             ),
-            format!("(a+b)/R = {l_over_r:.3} > 0.1: slopes not small"),
+            Phrase::whole(format!("(a+b)/R = {l_over_r:.3} > 0.1:")).then_words("slopes not small"),
         );
     } else if inputs.shape.parabola_radius().is_none() && slope > 0.05 {
         assumption(
@@ -146,7 +149,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
                 "the punch slope |g'| = {slope:.3} at a contact end > 0.05: the punch slopes are \
                  not small"
             ),
-            format!("|g'| = {slope:.3} > 0.05: slopes not small"),
+            Phrase::whole(format!("|g'| = {slope:.3} > 0.05:")).then_words("slopes not small"),
         );
     }
     Validity {
@@ -161,7 +164,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
 
 /// The estimated deviation of a wide or narrow solution on a finite strip, and the criteria it
 /// fails: what each is about, in a few words and at length.
-fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, String, String)>) {
+fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phrase, String)>) {
     let inputs = &sol.inputs;
     let nu = inputs.material.poisson_ratio;
     let mu = inputs.friction.coefficient;
@@ -178,7 +181,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
         let kind = inputs.shape.kind();
         failed.push((
             Aspect::Unstudied,
-            format!("not judged for this punch and laws ({kind})"),
+            Phrase::words(&format!("not judged for this punch and laws ({kind})")),
             format!(
                 "{name} is judged against the strip model only for the parabolic punch with the \
                  linear wear law and no shear cap (the validity study); its error for a {kind} \
@@ -203,7 +206,14 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
     if !outside.is_empty() {
         failed.push((
             Aspect::Unstudied,
-            format!("not judged at {}: use the strip model", outside.join(", ")),
+            outside
+                .iter()
+                .enumerate()
+                .fold(Phrase::words("not judged at"), |p, (i, what)| {
+                    let end = if i + 1 == outside.len() { ":" } else { "," };
+                    p.then(format!("{what}{end}"))
+                })
+                .then_words("use the strip model"),
             format!(
                 "{name} is judged against the strip model only where that was studied (nu <= \
                  0.499, mu <= 1, k m <= 3, no adhesion); here {}: use the strip model",
@@ -221,7 +231,9 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
         if lambda > limit {
             failed.push((
                 Aspect::Both,
-                format!("wide needs (a+b)/h < {limit:.2} here, not {lambda:.3}"),
+                Phrase::words("wide needs")
+                    .then(format!("(a+b)/h < {limit:.2}"))
+                    .then_words(&format!("here, not {lambda:.3}")),
                 format!(
                     "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width \
                      within 2 %, mu* - mu within 5 % of the exact strip solution); here (a+b)/h = \
@@ -247,7 +259,9 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
         if error.contact_width > WIDTH_TOLERANCE {
             failed.push((
                 Aspect::ContactWidth,
-                format!("Winkler needs (a+b)/h > {needed:.0} here, not {lambda:.1}"),
+                Phrase::words("Winkler needs")
+                    .then(format!("(a+b)/h > {needed:.0}"))
+                    .then_words(&format!("here, not {lambda:.1}")),
                 format!(
                     "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} \
                      for its contact width within 2 % of the exact strip solution; here (a+b)/h = \
@@ -260,8 +274,8 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
             failed.push(if km == 0.0 {
                 (
                     Aspect::MuStarMinusMu,
-                    "Winkler lacks the friction part of mu* - mu (mu* = mu without wear)"
-                        .to_string(),
+                    Phrase::words("Winkler lacks the friction part of mu* - mu")
+                        .then("(mu* = mu without wear)"),
                     "without wear the Winkler model gives mu* = mu exactly, while friction alone \
                      makes the strip's mu* - mu nonzero: use the strip model"
                         .to_string(),
@@ -270,10 +284,9 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
                 let part = 100.0 * error.mu_star_minus_mu;
                 (
                     Aspect::MuStarMinusMu,
-                    format!(
-                        "Winkler lacks the friction part of mu* - mu, estimated up to {part:.0} % \
-                         of it"
-                    ),
+                    Phrase::words("Winkler lacks the friction part of mu* - mu, estimated up to")
+                        .then(format!("{part:.0} %"))
+                        .then_words("of it"),
                     format!(
                         "the Winkler model lacks the friction-induced part of mu* - mu, estimated \
                          {part:.0} % of what it gives (at most 5 %: wear must dominate): use the \
@@ -288,12 +301,11 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Str
 }
 
 /// "1.2 % in contact width, 3.4 % in mu* - mu".
-fn percentages(d: &Deviation) -> String {
-    format!(
-        "{:.1} % in contact width, {:.1} % in mu* - mu",
-        100.0 * d.contact_width,
-        100.0 * d.mu_star_minus_mu
-    )
+fn percentages(d: &Deviation) -> Phrase {
+    Phrase::whole(format!("{:.1} %", 100.0 * d.contact_width))
+        .then_words("in contact width,")
+        .then(format!("{:.1} %", 100.0 * d.mu_star_minus_mu))
+        .then_words("in mu* - mu")
 }
 
 /// The largest (a+b)/h at which `against_strip` runs the strip model (about 400 nodes, a few
@@ -369,29 +381,32 @@ fn within(x: f64) -> String {
 impl StripCheck {
     /// One line for the status: "wide: contact width within 0.1 %, mu* - mu within 0.4 % of the
     /// exact strip solution"; "off by" where a deviation is outside the tolerances.
-    pub fn describe(&self, model: Model) -> String {
-        let name = model.name();
+    pub fn describe(&self, model: Model) -> Phrase {
+        let name = format!("{}:", model.name());
+        let lead = Phrase::whole(name);
         match self {
-            StripCheck::Exact => format!("{name}: the exact model of the bonded strip"),
-            StripCheck::HalfPlane => format!("{name}: exact on a half-plane"),
-            StripCheck::Measured(d) if d.within_tolerance() => format!(
-                "{name}: contact width within {}, mu* - mu within {} of the exact strip solution",
-                within(d.contact_width),
-                within(d.mu_star_minus_mu)
-            ),
-            StripCheck::Measured(d) => {
-                format!("{name}: off the exact strip solution by {}", percentages(d))
-            }
-            StripCheck::Estimated { why, estimate } => {
-                format!("{name}: estimated off by {} ({why})", percentages(estimate))
-            }
+            StripCheck::Exact => lead.then_words("the exact model of the bonded strip"),
+            StripCheck::HalfPlane => lead.then_words("exact on a half-plane"),
+            StripCheck::Measured(d) if d.within_tolerance() => lead
+                .then_words("contact width within")
+                .then(format!("{},", within(d.contact_width)))
+                .then_words("mu* - mu within")
+                .then(within(d.mu_star_minus_mu))
+                .then_words("of the exact strip solution"),
+            StripCheck::Measured(d) => lead
+                .then_words("off the exact strip solution by")
+                .then_phrase(percentages(d)),
+            StripCheck::Estimated { why, estimate } => lead
+                .then_words("estimated off by")
+                .then_phrase(percentages(estimate))
+                .then_words(&format!("({why})")),
         }
     }
 
     /// The same in at most 46 columns where a deviation is outside the tolerances, for a status
     /// too small for the long line and the reasons: "off exact strip: width 227 %, mu*-mu 12 %"
     /// ("est. off ..." for an estimate). None where `describe` is the only form.
-    pub fn describe_short(&self) -> Option<String> {
+    pub fn describe_short(&self) -> Option<Phrase> {
         let short = |x: f64| {
             let percent = 100.0 * x;
             if percent >= 10.0 {
@@ -405,10 +420,11 @@ impl StripCheck {
             StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),
             _ => return None,
         };
-        Some(format!(
-            "{lead}: width {}, mu*-mu {}",
-            short(d.contact_width),
-            short(d.mu_star_minus_mu)
-        ))
+        Some(
+            Phrase::words(&format!("{lead}: width"))
+                .then(format!("{},", short(d.contact_width)))
+                .then("mu*-mu")
+                .then(short(d.mu_star_minus_mu)),
+        )
     }
 }

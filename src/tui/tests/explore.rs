@@ -263,7 +263,9 @@ fn the_map_cursor_reads_mu_star_with_six_decimals() {
     settle(&mut app, cmds.clone());
     explored(&mut app, &cmds);
     press(&mut app, KeyCode::Char('x'));
-    let items = crate::tui::view::sweep::readout(&app).unwrap();
+    let items: Vec<String> = (crate::tui::view::sweep::readout(&app).unwrap().iter())
+        .map(ToString::to_string)
+        .collect();
     let read = items.iter().find(|i| i.starts_with("mu* = ")).unwrap();
     let decimals = read.trim_start_matches("mu* = ").split('.').nth(1).unwrap();
     assert_eq!(decimals.len(), 6, "{items:?}");

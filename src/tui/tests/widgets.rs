@@ -1,5 +1,6 @@
 //! The ranges charts are drawn over, the status panel's packing and scrolling, and wrapping.
 
+use crate::phrase::Phrase;
 use crate::tui::charts::range::{bounds, frames};
 use crate::tui::charts::{Axis, Plot, Scale, Series};
 use crate::tui::view::status_values::visible;
@@ -195,7 +196,7 @@ fn wrapping_keeps_a_number_with_its_unit_and_a_key_pair_whole() {
         ["complete after", "t = 62.6 s", "(simulated),", "then:"]
     );
     assert_eq!(
-        wrap("I-J residual < 1e-14", 14),
+        wrap("I-J residual < 1e-14", 16),
         ["I-J", "residual < 1e-14"]
     );
     // a name of two symbols stays whole (the picker read "wear (k" / "m = 0.11)")
@@ -213,9 +214,11 @@ fn wrapping_keeps_a_group_name_and_a_short_parenthesis_whole() {
         wrap(cursor, 48),
         ["cursor P/(m R) = 1.159e-3", "(narrow: P = 10.0 kN/m):"]
     );
-    // in the status, the item too long for a line is wrapped so, the rest packed after it
+    // in the status, the item too long for a line is wrapped between its pieces (as the sweep's
+    // readout writes it), the rest packed after it
+    let cursor = Phrase::whole("cursor P/(m R) = 1.159e-3").then("(narrow: P = 10.0 kN/m):");
     assert_eq!(
-        pack(&items(&[cursor, "mu* narrow = 0.303962"]), 48, "  "),
+        pack(&[cursor, Phrase::from("mu* narrow = 0.303962")], 48, "  "),
         [
             "cursor P/(m R) = 1.159e-3",
             "  (narrow: P = 10.0 kN/m):",
@@ -246,23 +249,42 @@ fn a_parenthesis_of_prose_wraps_as_prose() {
 #[test]
 fn a_text_longer_than_its_rows_ends_after_a_whole_clause_or_word() {
     use super::{ASCII, PLAIN};
+    use crate::physics::plane::Model;
+    use crate::physics::plane::validity::{Deviation, StripCheck};
     use crate::tui::view::wrap_within;
+    use crate::tui::view::wrapping::lines_of;
     // polymer-coating's status in groups at 80x24 ended "..., mu* - mu" (its value cut away)
-    let check =
-        "wide: contact width within 0.1 %, mu* - mu within 0.1 % of the exact strip solution";
+    let measured = Deviation {
+        contact_width: 9e-4,
+        mu_star_minus_mu: 9e-4,
+    };
+    let check = StripCheck::Measured(measured).describe(Model::Wide);
     assert_eq!(
-        wrap_within(check, 48, 1, PLAIN),
+        check.to_string(),
+        "wide: contact width within 0.1 %, mu* - mu within 0.1 % of the exact strip solution"
+    );
+    assert_eq!(
+        wrap_within(&check, 48, 1, PLAIN),
         ["wide: contact width within 0.1 %, …"]
     );
     assert_eq!(
-        wrap_within(check, 48, 1, ASCII),
+        wrap_within(&check, 48, 1, ASCII),
         ["wide: contact width within 0.1 %, ..."]
     );
-    assert_eq!(wrap_within(check, 48, 2, PLAIN), wrap(check, 48));
-    assert!(wrap_within(check, 48, 0, PLAIN).is_empty());
+    assert_eq!(wrap_within(&check, 48, 2, PLAIN), lines_of(&check, 48));
+    assert!(wrap_within(&check, 48, 0, PLAIN).is_empty());
     // no clause in the second half of the line: after the last whole word
     assert_eq!(
-        wrap_within("one, two three four five six", 20, 1, PLAIN),
+        wrap_within(&Phrase::words("one, two three four five six"), 20, 1, PLAIN),
         ["one, two three …"]
+    );
+    // a value is never cut from its unit: "0.1 %," is one piece
+    assert_eq!(
+        lines_of(&check, 31),
+        [
+            "wide: contact width within",
+            "0.1 %, mu* - mu within 0.1 % of",
+            "the exact strip solution"
+        ]
     );
 }

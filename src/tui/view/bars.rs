@@ -6,6 +6,7 @@ use ratatui::style::Style;
 use ratatui::text::Line;
 use ratatui::widgets::Paragraph;
 
+use crate::phrase::Phrase;
 use crate::preset::resolve_save_path;
 use crate::tui::app::{App, Mode};
 use crate::tui::keys;
@@ -91,7 +92,7 @@ fn refusal(app: &App) -> Option<&str> {
 /// The reason's lines above the save prompt, `width` wide.
 fn reason_lines(app: &App, style: RenderOptions, width: usize) -> Vec<String> {
     refusal(app).map_or_else(Vec::new, |why| {
-        wrap_within(&style.text(why), width, REASON_ROWS, style)
+        wrap_within(&Phrase::words(&style.text(why)), width, REASON_ROWS, style)
     })
 }
 
@@ -115,7 +116,7 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
     let width = area.width as usize;
     let reason = reason_lines(app, style, width);
     let rows = (area.height as usize).saturating_sub(reason.len()).max(1);
-    let lines = wrap_within(&text, width, rows, style);
+    let lines = wrap_within(&Phrase::words(&text), width, rows, style);
     let lines: Vec<Line> = (reason.into_iter())
         .map(|l| Line::styled(l, style.error()))
         .chain(lines.into_iter().map(|l| Line::styled(l, st)))

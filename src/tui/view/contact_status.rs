@@ -3,6 +3,7 @@
 //! (stepping, with the simulated time reached, or the simulated time to complete contact).
 
 use crate::engine::{CellOutput, Progress};
+use crate::phrase::Phrase;
 use crate::physics::spatial::SpatialSolution;
 use crate::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
 use crate::units::format_si;
@@ -11,7 +12,7 @@ use ratatui::text::Line;
 use crate::tui::view::status_values::mu_star;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
-use crate::tui::view::wrapping::pack;
+use crate::tui::view::wrapping::{lines_of, pack};
 
 /// The contact fraction as a whole percentage, never rounded up to 100 % nor down to 0 %.
 pub fn percent(fraction: f64) -> String {
@@ -75,18 +76,15 @@ pub fn head(
         Progress::Running {
             reached,
             towards: Some(t),
-        } => format!(
-            "running in: t = {} of {}",
-            format_si(reached, "s"),
-            format_si(t, "s")
-        ),
+        } => Phrase::words("running in:")
+            .then(format!("t = {}", format_si(reached, "s")))
+            .then("of")
+            .then(format_si(t, "s")),
         Progress::Running {
             reached,
             towards: None,
-        } => format!(
-            "running in to complete contact: t = {}",
-            format_si(reached, "s")
-        ),
+        } => Phrase::words("running in to complete contact:")
+            .then(format!("t = {}", format_si(reached, "s"))),
         Progress::Done { reached } => done(c, closed, reached, true),
     };
     let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
@@ -96,14 +94,14 @@ pub fn head(
     };
     let said = then && !o.complete && done_at.is_some() && complete_at.is_some();
     let then = if said { ", then:" } else { "" };
-    let mut running = format!("{running}{then}");
+    let mut running = running.ending(then);
     // the time-step error only where the line keeps to one row (the harmonics' rows under it
     // need the room)
-    if let Some(reached) = done_at.filter(|_| running.chars().count() > width) {
-        running = format!("{}{then}", done(c, closed, reached, false));
+    if let Some(reached) = done_at.filter(|_| running.to_string().chars().count() > width) {
+        running = done(c, closed, reached, false).ending(then);
     }
     lines.extend(
-        wrap(&running, width)
+        lines_of(&running, width)
             .into_iter()
             .map(|l| Line::styled(l, style.heading())),
     );
@@ -113,24 +111,35 @@ pub fn head(
 /// The end of the running-in (its last stepped state at `reached` [s]), in words, with the
 /// estimate of its time-stepping error when `error` (relative: the values shown are that close
 /// to the exact running-in on this grid).
-fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64, error: bool) -> String {
+fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64, error: bool) -> Phrase {
     let history = c.history.as_deref().ok();
     let complete_at = history.and_then(|h| h.time_to_complete);
-    let error = history
-        .and_then(|h| h.time_error)
-        .filter(|_| error)
-        .map_or(String::new(), |e| format!(", time-step error < {e:.1e}"));
+    let error = history.and_then(|h| h.time_error).filter(|_| error);
+    // "(simulated" or "steps" closed by ")", or followed by the error estimate
+    let closing = |p: Phrase| match error {
+        Some(e) => p
+            .ending(",")
+            .then_words("time-step")
+            .then(format!("error < {e:.1e})")),
+        None => p.ending(")"),
+    };
     match complete_at {
-        Some(t) => format!(
-            "complete after t = {} (simulated{error})",
-            format_si(t, "s")
+        Some(t) => closing(
+            Phrase::words("complete after")
+                .then(format!("t = {}", format_si(t, "s")))
+                .then("(simulated"),
         ),
-        None if closed.inputs.wear_rate() == 0.0 => "no wear: the contact stays as it is".into(),
-        None => format!(
-            "still partial at t = {}: complete contact not reached within the running-in's bound \
-             ({HORIZON_DECAY_TIMES} decay times 1/beta of the slowest harmonic, at most {MAX_STEPS} \
-             steps{error})",
-            format_si(reached, "s")
+        None if closed.inputs.wear_rate() == 0.0 => {
+            Phrase::words("no wear: the contact stays as it is")
+        }
+        None => closing(
+            Phrase::words("still partial at")
+                .then(format!("t = {}:", format_si(reached, "s")))
+                .then_words(&format!(
+                    "complete contact not reached within the running-in's bound \
+                     ({HORIZON_DECAY_TIMES} decay times 1/beta of the slowest harmonic, at most \
+                     {MAX_STEPS} steps"
+                )),
         ),
     }
 }

@@ -3,6 +3,7 @@
 //! title says "groups". `?` defines each group.
 
 use crate::engine::{Output, SpatialOutput};
+use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::validity::StripCheck;
 use crate::sweeps::groups::{self, Group};
@@ -93,7 +94,7 @@ fn spatial(
             style.error(),
         ),
     };
-    lines.extend(prose(verdict, width, look));
+    lines.extend(prose(&Phrase::words(verdict), width, look));
     let rows: Vec<Vec<Group>> = s.harmonics.iter().map(|h| groups::harmonic(s, h)).collect();
     let Some(first) = rows.first() else {
         return lines;

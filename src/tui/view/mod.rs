@@ -17,6 +17,7 @@ mod long_words;
 pub mod map_readout;
 pub mod picker;
 pub mod popups;
+pub mod prose;
 pub mod raster;
 pub mod regime;
 pub mod status;

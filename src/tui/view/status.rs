@@ -3,6 +3,7 @@
 //! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
 
 use crate::engine::{Answer, SpatialOutput};
+use crate::phrase::Phrase;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
 use crate::physics::plane::validity::StripCheck;
 use crate::physics::plane::{OperatingPoint, Shape};
@@ -59,7 +60,10 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
     let (readout, room) = match app.explore.view {
         Some(_) => (crate::tui::view::sweep::readout(app), rows),
         None => (
-            cursor_readout(app, answer).or_else(|| crate::tui::view::map_readout::status(app)),
+            cursor_readout(app, answer).or_else(|| {
+                crate::tui::view::map_readout::status(app)
+                    .map(|items| items.into_iter().map(Phrase::from).collect())
+            }),
             rows.saturating_sub(main(0).len() + 1),
         ),
     };
@@ -77,7 +81,7 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
 }
 
 /// The cursor readout of the visible chart, when the cursor is on and the chart has curves.
-fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
+fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<Phrase>> {
     let cursor = app.ui.cursor?;
     let chart = app.ui.chart;
     let Ok(Figure::Plots(plots)) = chart.build(answer) else {
@@ -88,7 +92,7 @@ fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<String>> {
     let frames = frames(&plots, &pinned, app.ui.log_y.contains(&chart));
     let mut items = readout(&frames, cursor);
     items[0] = format!("cursor {}:", items[0]);
-    Some(items)
+    Some(items.into_iter().map(Phrase::from).collect())
 }
 
 fn plane(

@@ -2,13 +2,14 @@
 //! dimensionless numbers, a sentence wrapped to the panel, and which harmonics fit.
 
 use crate::engine::{Output, SpatialOutput};
+use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::validity::StripCheck;
 use crate::units::format_si;
 use ratatui::text::Line;
 
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::wrap;
+use crate::tui::view::wrapping::lines_of;
 
 /// The status lines of an output: a failed solve in words, else the lines `plane` or `spatial`
 /// make of it (the dimensional status and the dimensionless view differ only there).
@@ -45,9 +46,9 @@ pub fn number(name: &str, value: f64) -> String {
     }
 }
 
-/// A sentence wrapped to the panel, in one style.
-pub fn prose(text: &str, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
-    wrap(text, width)
+/// A sentence wrapped to the panel between its pieces, in one style.
+pub fn prose(text: &Phrase, width: usize, style: ratatui::style::Style) -> Vec<Line<'static>> {
+    lines_of(text, width)
         .into_iter()
         .map(|l| Line::styled(l, style))
         .collect()

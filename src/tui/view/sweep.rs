@@ -6,6 +6,7 @@
 //! here too.
 
 use crate::engine::sweep_worker::SweepResult;
+use crate::phrase::Phrase;
 use crate::sweeps::groups::of_input;
 use crate::sweeps::{Opening, opening};
 use crate::tui::text_field::TextField;
@@ -200,24 +201,27 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
 }
 
 /// The status's first lines in the sweep or map view: the cursor's readout.
-pub fn readout(app: &App) -> Option<Vec<String>> {
+pub fn readout(app: &App) -> Option<Vec<Phrase>> {
     match app.explore.view? {
         View::Sweep => {
             let cursor = app.ui.cursor?;
             let plots = sweep_plots(app)?;
             let frames = frames(&plots, &[], false);
-            let mut items = read(&frames, cursor);
+            let mut items = read(&frames, cursor).into_iter();
             // the swept input beside the group, on the first line: the status folds to four
             // lines below 32 rows, and at 80 columns each curve takes a line of its own
             let input = app
                 .explore
                 .dimensionless
                 .then(|| input_at(app, &frames, cursor))
-                .flatten()
-                .map(|v| format!(" {v}"))
-                .unwrap_or_default();
-            items[0] = format!("cursor {}{input}:", items[0]);
-            Some(items)
+                .flatten();
+            let first = Phrase::whole(format!("cursor {}", items.next()?));
+            let first = input.map_or(first.clone(), |v| first.then(v)).ending(":");
+            Some(
+                std::iter::once(first)
+                    .chain(items.map(Phrase::from))
+                    .collect(),
+            )
         }
         View::Map => {
             let (answer, _) = shown(app)?;
@@ -227,6 +231,7 @@ pub fn readout(app: &App) -> Option<Vec<String>> {
                 return None;
             };
             regime::readout(spec, map, app.explore.cell?)
+                .map(|items| items.into_iter().map(Phrase::from).collect())
         }
     }
 }

@@ -3,6 +3,7 @@
 //! after the operating point (`plane::validity::StripCheck`). Every word and number comes from
 //! the library; this module only lays them out.
 
+use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::validity::StripCheck;
 use ratatui::text::Line;
@@ -31,12 +32,12 @@ pub fn lines(
         let where_ = if p.solution.inputs.material.thickness.is_finite() {
             let ratio = v.contact_width_over_thickness;
             let ratio = number("validity.contact_width_over_thickness", ratio);
-            format!("(a+b)/h = {ratio}")
+            Phrase::words("valid:").then(format!("(a+b)/h = {ratio};"))
         } else {
-            "half-plane, h = inf".to_string()
+            Phrase::words("valid: half-plane,").then("h = inf;")
         };
         head.push((
-            format!("valid: {where_}; {} model holds", model.name()),
+            where_.then_words(&format!("{} model holds", model.name())),
             style.ok(),
         ));
     }
@@ -49,7 +50,13 @@ pub fn lines(
         .reasons
         .iter()
         .filter(|r| !measured.is_some_and(|d| r.refuted_by(d)))
-        .map(|r| prose(&format!("! {}", r.text), width, style.error()))
+        .map(|r| {
+            prose(
+                &Phrase::words("!").then_phrase(r.text.clone()),
+                width,
+                style.error(),
+            )
+        })
         .collect();
     let total: usize = warnings.iter().map(Vec::len).sum();
     // how far off, then why: every warning in a few words; the short form of how far off when
@@ -92,7 +99,7 @@ pub fn lines(
     let more = warnings.len() - shown;
     lines.extend(warnings.into_iter().take(shown).flatten());
     lines.extend(prose(
-        &format!("! +{more} more (a taller window shows them)"),
+        &Phrase::words(&format!("! +{more} more (a taller window shows them)")),
         width,
         style.error(),
     ));
