@@ -25,7 +25,7 @@ use crate::physics::spatial::history::{Dispersion, History, dispersion, history}
 use crate::physics::spatial::partial::history::History as RunHistory;
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::LoadCurve;
-use crate::physics::spatial::{self, SpatialInputs, SpatialState, StateAt, state_at};
+use crate::physics::spatial::{self, SpatialInputs, SpatialState, StateAt, pipeline, state_at};
 use crate::physics::{Friction, Material, SolveError, SweepRange};
 use crate::preset::{Preset, Problem};
 use cache::Cache;
@@ -80,6 +80,21 @@ pub struct SpatialOutput {
     /// The contact solved on the period cell (partial contact, the running-in); Err: why it is
     /// not (no period cell, a grid too coarse), and the closed form alone is known.
     pub cell: Result<CellOutput, SolveError>,
+    /// Without a period cell, whether the harmonics as given are in complete contact at t = 0
+    /// (`pipeline::contact_at_start`); None where the cell is solved (it says so itself).
+    pub complete_at_start: Option<bool>,
+}
+
+impl SpatialOutput {
+    /// True when the closed form of the harmonics holds at t (`pipeline::closed_form_holds`):
+    /// the contact complete from t = 0 on and at t. Every chart and status asks this.
+    pub fn closed_form_holds(&self) -> bool {
+        let from_start = match (&self.cell, self.complete_at_start) {
+            (Ok(c), _) => c.complete_from_start,
+            (Err(_), at_start) => at_start.unwrap_or(false),
+        };
+        pipeline::closed_form_holds(from_start, self.state.contact.complete)
+    }
 }
 
 /// The engine's answer to one request, at one stage.
@@ -340,10 +355,15 @@ impl Engine {
             duration,
             curve: request.overlays.then_some((sweep, pressures.as_slice())),
         };
+        let cell = self.cell_now(&ask);
+        let complete_at_start = cell
+            .is_err()
+            .then(|| pipeline::contact_at_start(&inputs, &responses.0, &state).complete);
         let mut out = SpatialOutput {
             history: self.histories.get(&(inputs.clone(), duration)),
             dispersion: Arc::clone(&responses.1),
-            cell: self.cell_now(&ask),
+            cell,
+            complete_at_start,
             state,
         };
         let cell_done = |out: &SpatialOutput| {

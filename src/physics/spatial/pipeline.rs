@@ -10,6 +10,7 @@
 use std::ops::ControlFlow;
 
 use crate::physics::spatial::contact::{self, Contact};
+use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::running_in::{MAX_STEPS, run_in};
 use crate::physics::spatial::partial::state::State;
@@ -31,6 +32,16 @@ pub fn complete_from_start(complete_from: Option<f64>) -> bool {
 /// and the closed form's contact is complete at t.
 pub fn closed_form_holds(complete_from_start: bool, complete_at_t: bool) -> bool {
     complete_from_start && complete_at_t
+}
+
+/// The complete-contact check of the harmonics as given, at t = 0, on the cell of `closed` (the
+/// state at t): without a period cell the closed form holds at t only where both are complete.
+pub fn contact_at_start(
+    inputs: &SpatialInputs,
+    evolutions: &[Evolution],
+    closed: &SpatialState,
+) -> Contact {
+    contact::check(&solve_with(inputs, evolutions, 0.0), &closed.cell)
 }
 
 /// The spatial problem at `at.time` with the fields at `probes` [m], and mu* against pbar over
@@ -59,7 +70,7 @@ pub fn solve(
     match setup {
         Ok(setup) => on_the_cell(&setup, &closed, at, probes, pressures),
         Err(why) => {
-            let initial = contact::check(&solve_with(inputs, &evolutions, 0.0), &closed.cell);
+            let initial = contact_at_start(inputs, &evolutions, &closed);
             if closed_form_holds(initial.complete, closed.contact.complete) {
                 return Ok(closed_form(inputs, closed, probes, sweep));
             }

@@ -1,14 +1,12 @@
 //! The spatial charts drawn from the contact solved on the period cell: the nodal
 //! pressure with the zones out of contact, the running-in in time, mu* against the mean pressure
 //! over the whole range. `fields` says, for every chart, whether the closed form of the
-//! harmonics holds at t (`spatial::pipeline::closed_form_holds`) or the nodes of the cell are
-//! drawn.
+//! harmonics holds at t (`SpatialOutput::closed_form_holds`) or the nodes of the cell are drawn.
 
 use crate::engine::{CellOutput, SpatialOutput};
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::LoadCurve;
-use crate::physics::spatial::pipeline::closed_form_holds;
 use crate::preset::Preset;
 use crate::units::format_si;
 
@@ -25,11 +23,19 @@ pub enum Fields<'a> {
 
 /// Where the fields at t come from, or why there are none.
 pub fn fields(out: &SpatialOutput) -> Result<Fields<'_>, NoFigure> {
-    let complete = out.state.contact.complete;
+    if out.closed_form_holds() {
+        return Ok(Fields::Closed);
+    }
     match &out.cell {
-        Ok(c) if closed_form_holds(c.complete_from_start, complete) => Ok(Fields::Closed),
         Ok(c) => c.state.as_deref().map(Fields::Nodes).map_err(error),
-        Err(_) if complete => Ok(Fields::Closed),
+        // complete at t but not at t = 0: the closed form at t is not what the wear made of a
+        // partial contact
+        Err(why) if out.state.contact.complete => Err(NoFigure::Error(format!(
+            "Complete contact is lost at t = 0: the harmonics as given would need a negative \
+             pressure, so the closed form at t = {} does not hold, and partial contact is solved \
+             only on a period cell: {why}",
+            format_si(out.state.solution.time, "s"),
+        ))),
         Err(why) => Err(NoFigure::Error(format!(
             "Complete contact is lost at t = {}: the complete-contact solution would need a \
              negative pressure (p_min = {}), and partial contact is solved only on a period cell: \

@@ -7,7 +7,7 @@ use ratatui::crossterm::event::KeyCode;
 use ratatui::style::Color;
 
 use super::*;
-use crate::tui::charts::{Chart, Figure, SpatialChart};
+use crate::tui::charts::{Chart, Figure, NoFigure, SpatialChart};
 use crate::tui::view::popups::help_lines;
 
 fn on(app: &App, chart: SpatialChart) -> App {
@@ -233,4 +233,45 @@ fn the_time_of_complete_contact_heads_the_rates_only_above_them() {
             }
         }
     }
+}
+
+#[test]
+fn without_a_period_cell_the_closed_form_holds_only_for_a_contact_complete_from_the_start() {
+    // rubber-running-in (partial at t = 0, complete after 4.31 ks of running-in) with a second,
+    // tiny harmonic of wavenumber sqrt(2) times the first: no common period, no cell
+    let mut preset = bundled("rubber-running-in.toml");
+    let mut second = preset.spatial.harmonics[0];
+    second.amplitude = 1e-9;
+    second.wavenumber_x *= std::f64::consts::SQRT_2;
+    preset.spatial.harmonics.push(second);
+    preset.spatial.time = 6000.0;
+    let mut app = App::new(preset.clone(), None, Places::default());
+    let cmds = app.start();
+    let answer = answers(&mut Engine::new(), &cmds).pop().unwrap();
+    let Output::Spatial(Ok(out)) = &answer.output else {
+        panic!("no spatial output: {:?}", answer.output)
+    };
+    // the closed form at t is complete, the harmonics as given are not: neither the explorer
+    // nor `wearlab solve` (the pipeline) answers with the closed form
+    assert!(out.cell.is_err() && out.state.contact.complete);
+    assert_eq!(out.complete_at_start, Some(false));
+    assert!(!out.closed_form_holds());
+    let Err(NoFigure::Error(why)) = crate::tui::charts::contact::fields(out) else {
+        panic!("the closed form is drawn")
+    };
+    assert!(
+        why.starts_with("Complete contact is lost at t = 0"),
+        "{why}"
+    );
+    let at = preset.spatial_state_at();
+    let inputs = preset.spatial_inputs();
+    assert!(crate::physics::spatial::pipeline::solve(&inputs, &at, &[], false).is_err());
+    update(&mut app, Msg::Answer(Box::new(answer)));
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("Complete contact is lost at t = 0"), "{s}");
+    assert!(
+        s.contains("contact lost at t = 0: the closed form at t"),
+        "{s}"
+    );
+    assert!(!s.contains("complete contact"), "{s}");
 }

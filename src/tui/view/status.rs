@@ -257,10 +257,14 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
         && bound != format_si(c.min_pressure, "Pa")
         && !(c.complete && c.lower_bound <= 0.0))
         .then(|| format!("lower bound {bound}"));
-    let (items, verdict) = if c.complete {
+    let (items, verdict) = if c.complete && out.closed_form_holds() {
         let mut items = vec![format!("complete contact, {p_min}")];
         items.extend(bound);
         (items, style.ok())
+    } else if c.complete {
+        // complete at t by the closed form, but not at t = 0: not what the wear made of it
+        let lost = "contact lost at t = 0: the closed form at t does not hold";
+        (vec![lost.to_string()], style.error())
     } else {
         let mut items = vec![format!("contact lost: {p_min}")];
         items.extend(bound);
@@ -276,7 +280,7 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
             .into_iter()
             .map(|l| Line::styled(l, verdict)),
     );
-    if let (Err(why), false) = (&out.cell, c.complete) {
+    if let (Err(why), false) = (&out.cell, out.closed_form_holds()) {
         let why = format!("partial contact is not solved: {why}");
         lines.extend(
             wrap(&why, width)
