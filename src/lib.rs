@@ -3,8 +3,10 @@
 //! outside `tui` uses terminal code: without the feature the library builds without ratatui and
 //! crossterm.
 
+pub mod data;
 pub mod engine;
 pub mod finite;
+pub mod fit;
 pub mod phrase;
 pub mod physics;
 pub mod preset;

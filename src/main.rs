@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 
 mod cli;
 
-use cli::{Format, check, explorer, solve, sweep};
+use cli::{Format, check, explorer, fit, solve, sweep};
 use wearlab::tui;
 
 #[derive(Parser)]
@@ -82,6 +82,27 @@ enum Command {
         #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
         max_seconds: Option<f64>,
     },
+    /// Fit preset values to a data file (weighted least squares) and print estimates, 95 %
+    /// intervals and whether the data determine each, as JSON.
+    Fit {
+        /// The preset file (TOML, schema 1): the model and the starting values.
+        preset: PathBuf,
+        /// The data file: CSV with a header `quantity [unit],...`, the x axis first.
+        #[arg(long, value_name = "FILE")]
+        data: PathBuf,
+        /// The preset keys to fit, comma-separated, e.g. friction.coefficient,wear.coefficient.
+        #[arg(long, value_name = "KEY[,KEY...]")]
+        free: String,
+        /// Set a preset value first, e.g. plane.model=strip (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
+        settings: Vec<String>,
+        /// Save the fitted preset to this file (atomically).
+        #[arg(long, value_name = "OUT.toml")]
+        write: Option<PathBuf>,
+        /// Stop after S seconds of wall-clock time with exit code 3.
+        #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
+        max_seconds: Option<f64>,
+    },
     /// Print the answer key of a preset's lesson: each question with the program's answer.
     Check {
         /// The preset file (TOML, schema 1) with a [lesson] section.
@@ -129,6 +150,21 @@ fn main() -> ExitCode {
             settings: &settings,
             output: output.as_deref(),
             format,
+            max_seconds,
+        }),
+        Some(Command::Fit {
+            preset,
+            data,
+            free,
+            settings,
+            write,
+            max_seconds,
+        }) => fit::run(&fit::Request {
+            path: &preset,
+            data: &data,
+            free: &free,
+            settings: &settings,
+            write: write.as_deref(),
             max_seconds,
         }),
         Some(Command::Check { preset, format }) => check::run(&preset, format),

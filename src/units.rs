@@ -160,6 +160,11 @@ pub fn prefixable(unit: &str) -> bool {
     !unit.is_empty() && !unit.starts_with("1/") && !unit.starts_with("rad")
 }
 
+/// Whether `text` is an SI prefix alone ("k", "u"), without a unit.
+pub fn is_prefix(text: &str) -> bool {
+    PREFIXES.iter().any(|(p, _)| !p.is_empty() && *p == text)
+}
+
 /// The SI prefix of a power of ten that is a multiple of 3 from -15 to 12 ("u" for micro).
 pub fn prefix(exp: i32) -> Option<&'static str> {
     PREFIXES.iter().find(|(_, e)| *e == exp).map(|(p, _)| *p)

@@ -13,6 +13,7 @@ use wearlab::preset::{self, Preset};
 
 pub mod check;
 pub mod explorer;
+pub mod fit;
 pub mod solve;
 pub mod solve_output;
 pub mod stdout_at_start;

@@ -1,4 +1,4 @@
-//! `wearlab solve`, `wearlab sweep` and `wearlab check` as a script sees them: the JSON and CSV contract of
+//! `wearlab solve`, `wearlab sweep`, `wearlab check` and `wearlab fit` as a script sees them: the JSON and CSV contract of
 //! `docs/cli.md`, `--set`, exit codes and messages, hostile command lines.
 
 mod check;
@@ -8,6 +8,7 @@ mod cli_sweep;
 mod closed_stdout;
 #[path = "../common/mod.rs"]
 mod common;
+mod fit_cli;
 mod hostile_cli;
 mod quantities;
 mod shapes_cli;

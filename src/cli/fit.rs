@@ -1,0 +1,145 @@
+//! `wearlab fit PRESET --data FILE --free KEY[,KEY...] [--set ...] [--write OUT.toml]`: the
+//! library's fit (`wearlab::fit`) of the free parameters to a data file (`wearlab::data`), as JSON
+//! on stdout: estimates, 95 % intervals, whether each is determined and why not, the residuals;
+//! `--write` saves the fitted preset atomically.
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use serde_json::{Map, Value, json};
+
+use wearlab::data::{self, DataSet};
+use wearlab::fit::{self, Fit, FitError};
+use wearlab::preset::{self, Key, Preset};
+use wearlab::{finite, units};
+
+use super::{EXIT_INVALID, EXIT_OUTPUT, EXIT_UNSOLVABLE, finished, load_with, print, say, within};
+
+/// What `wearlab fit` was asked.
+pub struct Request<'a> {
+    /// The preset file.
+    pub path: &'a Path,
+    /// `--data`.
+    pub data: &'a Path,
+    /// `--free`, a comma-separated list of preset keys.
+    pub free: &'a str,
+    /// `--set`, in order.
+    pub settings: &'a [String],
+    /// `--write`: where to save the fitted preset.
+    pub write: Option<&'a Path>,
+    /// `--max-seconds`: the bound on the fit's wall-clock time [s].
+    pub max_seconds: Option<f64>,
+}
+
+fn invalid(why: &str) -> ExitCode {
+    say(&format!("error: {why}"));
+    ExitCode::from(EXIT_INVALID)
+}
+
+fn keys(preset: &Preset, list: &str) -> Result<Vec<Key>, String> {
+    list.split(',')
+        .filter(|k| !k.trim().is_empty())
+        .map(|k| preset.key(k).map_err(|why| format!("--free {why}")))
+        .collect()
+}
+
+/// Runs `wearlab fit`.
+pub fn run(request: &Request) -> ExitCode {
+    let preset = match load_with(request.path, request.settings) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let data = match data::read(request.data, &preset) {
+        Ok(d) => d,
+        Err(e) => return invalid(&e.to_string()),
+    };
+    let keys = match keys(&preset, request.free) {
+        Ok(k) => k,
+        Err(why) => return invalid(&why),
+    };
+    let write = request.write.map(Path::to_path_buf);
+    let bounded = within(
+        request.max_seconds,
+        move || answer(&preset, &data, &keys, write.as_deref()),
+        &|| {},
+    );
+    finished(bounded, &|| "the fit was not finished".into())
+}
+
+fn answer(preset: &Preset, data: &DataSet, keys: &[Key], write: Option<&Path>) -> ExitCode {
+    let fitted = match fit::fit(preset, data, keys) {
+        Ok(f) => f,
+        Err(FitError::Invalid(why)) => return invalid(&why),
+        Err(FitError::NoFit(why)) => {
+            say(&format!("error: {why}"));
+            return ExitCode::from(EXIT_UNSOLVABLE);
+        }
+    };
+    let report = json(data, &fitted, write);
+    if let Some(out) = write
+        && let Err(e) = preset::save(&fitted.preset, out)
+    {
+        say(&format!("error: cannot write {}: {e}", out.display()));
+        return ExitCode::from(EXIT_OUTPUT);
+    }
+    let text = serde_json::to_string_pretty(&report).unwrap_or_default() + "\n";
+    print(&text, finite::check(&report))
+}
+
+/// The JSON report of a fit (keys of docs/cli.md).
+fn json(data: &DataSet, f: &Fit, write: Option<&Path>) -> Value {
+    let mut estimates = Map::new();
+    let mut intervals = Map::new();
+    let mut profiles = Map::new();
+    let mut determined = Map::new();
+    let mut reasons = Map::new();
+    let mut units_of = Map::new();
+    for e in &f.estimates {
+        let key = e.key.to_string();
+        estimates.insert(key.clone(), json!(e.value));
+        intervals.insert(key.clone(), json!(e.interval));
+        profiles.insert(key.clone(), json!(e.profile));
+        determined.insert(key.clone(), json!(e.determined));
+        units_of.insert(key.clone(), json!(e.key.param().unit));
+        if let Some(why) = &e.reason {
+            reasons.insert(key, json!(why));
+        }
+    }
+    let summary: Vec<String> = f
+        .estimates
+        .iter()
+        .map(|e| {
+            let unit = e.key.param().unit;
+            format!(
+                "{} = {} (95 %: {} .. {}){}",
+                e.key,
+                units::format_si(e.value, unit),
+                units::format_si(e.interval[0], unit),
+                units::format_si(e.interval[1], unit),
+                if e.determined { "" } else { ", not determined" }
+            )
+        })
+        .collect();
+    json!({
+        "data": data.path,
+        "x": data.x.key.to_string(),
+        "measured": data.measured.iter().map(|m| m.quantity.to_string()).collect::<Vec<_>>(),
+        "points": data.len(),
+        "notes": data.notes,
+        "estimates": estimates,
+        "intervals": intervals,
+        "profile_ranges": profiles,
+        "determined": determined,
+        "reasons": reasons,
+        "units": units_of,
+        "summary": summary,
+        "residuals": f.residuals,
+        "sum_of_squares": f.sum_of_squares,
+        "weighted": f.weighted,
+        "residual_sd": (!f.weighted).then(|| f.residual_variance.sqrt()),
+        "reduced_chi_square": f.sum_of_squares / f.degrees_of_freedom as f64,
+        "degrees_of_freedom": f.degrees_of_freedom,
+        "iterations": f.iterations,
+        "written": write.map(|p| p.display().to_string()),
+    })
+}
