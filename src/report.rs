@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::physics::SolveError;
-use crate::physics::plane::energy::Energy;
+use crate::physics::plane::energy::{Energy, Undefined, serialize_balance};
 use crate::physics::plane::operating_point;
 use crate::physics::plane::profile::Profile;
 use crate::physics::plane::sweep::{Sweep, sweep};
@@ -22,8 +22,9 @@ pub struct PlaneReport {
     pub solution: PlaneSolution,
     /// The punch's shape as the preset gives it.
     pub shape: Shape,
-    /// I, J of (2.9).
-    pub energy: Energy,
+    /// I, J of (2.9) and the losses; null with a note where they have no number.
+    #[serde(serialize_with = "serialize_balance")]
+    pub energy: Result<Energy, Undefined>,
     /// Validity flags.
     pub validity: Validity,
     /// Profiles on [-a, b].

@@ -11,7 +11,7 @@
 use std::cell::OnceCell;
 
 use crate::physics::SolveError;
-use crate::physics::plane::energy::{Energy, energy};
+use crate::physics::plane::energy::{Energy, Undefined, energy};
 use crate::physics::plane::validity::{Validity, check};
 use crate::physics::plane::{self, PlaneSolution};
 use crate::physics::quadrature::tanh_sinh;
@@ -27,7 +27,7 @@ pub struct PlanePoint {
     pub solution: PlaneSolution,
     /// The model's validity verdict at this point.
     pub validity: Validity,
-    energy: OnceCell<Energy>,
+    energy: OnceCell<Result<Energy, Undefined>>,
 }
 
 /// A solved spatial point.
@@ -69,8 +69,8 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
 
 impl PlanePoint {
     /// The two sides of the energy identity (2.9), computed on first use.
-    pub fn energy(&self) -> &Energy {
-        self.energy.get_or_init(|| energy(&self.solution))
+    pub fn energy(&self) -> Result<Energy, Undefined> {
+        *self.energy.get_or_init(|| energy(&self.solution))
     }
 
     /// The largest contact pressure max q2 [Pa]: a scan of 64 intervals of [-a, b], then a golden

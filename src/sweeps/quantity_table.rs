@@ -3,6 +3,7 @@
 //! solution the solvers return, never recomputed here.
 
 use crate::physics::plane::Model;
+use crate::physics::plane::energy::Energy;
 use crate::physics::plane::groups as plane_groups;
 use crate::physics::spatial::groups as spatial_groups;
 use crate::physics::spatial::result::HarmonicResult;
@@ -171,6 +172,11 @@ fn exponent(value: Option<f64>) -> Result<f64, String> {
     value.ok_or_else(|| "the narrow model has no theta".into())
 }
 
+/// A quantity of the energy identity, or why it has no number (sharp corners).
+fn balance(p: &PlanePoint, of: fn(&Energy) -> f64) -> Result<f64, String> {
+    p.energy().map(|e| of(&e)).map_err(|u| u.note.to_string())
+}
+
 fn yes(flag: bool) -> Result<f64, String> {
     Ok(if flag { 1.0 } else { 0.0 })
 }
@@ -192,13 +198,13 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("psi", "psi", "N/m", "deformation component of friction, the integral of q2 g' (2.2)", |p| Ok(p.solution.psi)),
     plane("delta_g", "Delta_g", "m", "g(b) - g(-a) (3.11)", |p| Ok(p.solution.delta_g)),
     plane("mu_star", "mu*", "", "total friction coefficient (3.13)", |p| Ok(p.solution.mu_star)),
-    plane("energy.I", "I", "N/m", "integral of q1 u', one side of the energy identity (2.9)", |p| Ok(p.energy().i)),
-    plane("energy.J", "J", "N/m", "integral of q2 v', the other side of (2.9)", |p| Ok(p.energy().j)),
-    plane("energy.residual", "I-J residual", "", "|I - J| relative to the gross work: how well (2.9) holds", |p| Ok(p.energy().residual)),
-    plane("energy.friction_loss", "friction loss", "N/m", "power dissipated by friction per unit sliding speed, Q1 + I (2.5)", |p| Ok(p.energy().friction_loss)),
-    plane("energy.wear_loss", "wear loss", "N/m", "power spent on wear per unit sliding speed, psi - J (2.7)", |p| Ok(p.energy().wear_loss)),
-    plane("energy.external", "T", "N/m", "work of the tangential force per unit sliding distance: friction loss + wear loss when I = J (2.8)-(2.9)", |p| Ok(p.energy().external)),
-    plane("energy.contact_residual", "contact residual", "", "|psi - J - k int q2^2| relative to T: how well the solution meets the contact condition", |p| Ok(p.energy().contact_residual)),
+    plane("energy.I", "I", "N/m", "integral of q1 u', one side of the energy identity (2.9)", |p| balance(p, |e| e.i)),
+    plane("energy.J", "J", "N/m", "integral of q2 v', the other side of (2.9)", |p| balance(p, |e| e.j)),
+    plane("energy.residual", "I-J residual", "", "|I - J| relative to the gross work: how well (2.9) holds", |p| balance(p, |e| e.residual)),
+    plane("energy.friction_loss", "friction loss", "N/m", "power dissipated by friction per unit sliding speed, Q1 + I (2.5)", |p| balance(p, |e| e.friction_loss)),
+    plane("energy.wear_loss", "wear loss", "N/m", "power spent on wear per unit sliding speed, psi - J (2.7)", |p| p.energy().map_or_else(|u| u.wear_loss.ok_or_else(|| u.note.to_string()), |e| Ok(e.wear_loss))),
+    plane("energy.external", "T", "N/m", "work of the tangential force per unit sliding distance: friction loss + wear loss when I = J (2.8)-(2.9)", |p| Ok(p.energy().map_or_else(|u| u.external, |e| e.external))),
+    plane("energy.contact_residual", "contact residual", "", "|psi - J - k int q2^2| relative to T: how well the solution meets the contact condition", |p| balance(p, |e| e.contact_residual)),
     plane("validity.ok", "valid", "", "whether the model's validity check passes at this point (1 yes, 0 no)", |p| yes(p.validity.ok)).flag(),
     plane("validity.contact_width_over_thickness", "(a+b)/h", "", "contact width over the thickness, 0 for the half-plane: the wide model is the limit of small values, the narrow (Winkler) model of large ones", |p| Ok(p.validity.contact_width_over_thickness)).group(),
     plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 when wear dominates, < 0 when friction does", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),

@@ -147,3 +147,35 @@ fn the_parabolas_radius_is_no_input_of_another_shape() {
     let keys = wearlab::preset::Key::all(&preset);
     assert!(keys.iter().all(|k| k.param().key != "plane.radius"));
 }
+
+#[test]
+fn sharp_corners_are_answered_with_null_energies_and_the_reason() {
+    let sharp = PRESET.replace(
+        "shape = { kind = \"table\", file = \"worn.csv\" }",
+        "shape = { kind = \"flat\", half_width = 1e-3, edge_radius = 0.0 }",
+    );
+    for (model, thickness) in [("wide", "inf"), ("narrow", "2.0e-5")] {
+        let preset = sharp
+            .replace("model = \"narrow\"", &format!("model = \"{model}\""))
+            .replace("thickness = 2.0e-5", &format!("thickness = {thickness}"));
+        let (code, out, err) = solve(&preset, "", &["--points", "5"]);
+        assert_eq!(code, Some(0), "{model}: {err}");
+        let v: Value = serde_json::from_str(&out).unwrap();
+        let energy = &v["energy"];
+        assert!(energy["I"].is_null() && energy["J"].is_null(), "{energy}");
+        assert!(energy["friction_loss"].is_null(), "{energy}");
+        assert!(
+            energy["note"].as_str().unwrap().contains("sharp corners"),
+            "{energy}"
+        );
+        // mu* = mu and psi = 0 on a flat face; T = Q1 = mu P + 2 c tau0 (tau0 = 0 here)
+        assert_eq!(v["mu_star"].as_f64(), Some(0.2));
+        assert_eq!(v["psi"].as_f64(), Some(0.0));
+        assert_eq!(energy["external"].as_f64(), Some(0.2 * 1e4));
+        // the Winkler strip's pressure is bounded: its wear loss k int q2^2 has a number
+        assert_eq!(energy["wear_loss"].is_null(), model == "wide", "{energy}");
+    }
+    let (code, _, err) = solve(&sharp.replace("\"narrow\"", "\"strip\""), "", &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("singular at both corners"), "{err}");
+}

@@ -337,7 +337,7 @@ fn the_wide_model_answers_every_smooth_shape_and_law_with_the_energy_identity() 
         for (name, shape, law, identity, contact) in cases.clone() {
             let inputs = plane_inputs(shape, thickness, law, 1e4);
             let sol = wearlab::physics::plane::solve(&inputs, Model::Wide).unwrap();
-            let e = energy(&sol);
+            let e = energy(&sol).unwrap();
             println!(
                 "{name}, h = {thickness}: a {:.6e} b {:.6e} mu* {:.6e} T {:.6e} friction loss {:.6e} wear loss {:.6e} residual {:.2e} contact residual {:.2e}",
                 sol.a,

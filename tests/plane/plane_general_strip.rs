@@ -104,7 +104,7 @@ fn on_the_strip_other_shapes_and_laws_keep_the_energy_identity_and_converge() {
             load,
         );
         let sol = wearlab::physics::plane::solve(&inputs, Model::Strip).unwrap();
-        let e = energy(&sol);
+        let e = energy(&sol).unwrap();
         let kernels = wearlab::physics::plane::strip::kernels_for(0.3);
         let law = laws(0.3, 1e5, f64::INFINITY, k, 2.0);
         let fine = on_strip(&power(0.05, 3.0), kernels.as_ref(), h, law, load, 128);

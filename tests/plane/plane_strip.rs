@@ -257,7 +257,7 @@ fn energy_identity_with_the_exact_kernels() {
         Model::Strip,
     )
     .unwrap();
-    let en = energy(&sol);
+    let en = energy(&sol).unwrap();
     assert!(rel(en.i, en.j) < 1e-6, "{en:?}");
 }
 

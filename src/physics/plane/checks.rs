@@ -111,7 +111,8 @@ pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
 /// Why the pressure law is negative somewhere, if it is. The wide law c u^(1/2-theta)
 /// (L-u)^(1/2+theta) is positive when c > 0 and |theta| < 1/2; the Winkler law (5.7) is positive
 /// for beta > 0 and lambda >= 0 (expm1 is convex); the collocation is checked at its nodes and
-/// half-way between them; the narrow model's shot is positive by construction.
+/// half-way between them; the narrow model's shot is positive by construction; the sharp flat's
+/// laws are positive where their linear or constant factor is.
 fn negative_pressure(law: &PressureLaw) -> Option<String> {
     match law {
         &PressureLaw::Wide { c, theta } => (!(c > 0.0 && theta.abs() < 0.5)).then(|| {
@@ -122,6 +123,23 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
         }),
         // the shot of the narrow model ends where q2 first returns to zero: positive inside
         PressureLaw::Shooting(_) => None,
+        // Z > 0, so q2 = Z (A + B u) is positive on the face when A + B u is at both corners
+        &PressureLaw::Corners {
+            constant,
+            slope,
+            width,
+            ..
+        } => (!(constant > 0.0 && constant + slope * width > 0.0)).then(|| {
+            let corner = if constant > 0.0 { "leading" } else { "trailing" };
+            format!(
+                "the pressure of the sharp flat is negative at its {corner} corner (the adhesion \
+                 and the thickness term pull that corner off the strip at this load): the face \
+                 does not stay in contact, a case wearlab does not solve"
+            )
+        }),
+        &PressureLaw::Face { leading, .. } => (leading <= 0.0 || !leading.is_finite()).then(|| {
+            format!("the Winkler pressure at the leading corner is {leading:e} Pa (needs > 0)")
+        }),
         PressureLaw::General { pressure, .. } => negative_between_nodes(
             pressure.nodes(),
             &pressure.phi,

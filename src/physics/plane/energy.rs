@@ -52,6 +52,57 @@ pub struct Energy {
     pub contact_residual: f64,
 }
 
+/// What is left of the energy balance where I and J have no number (a punch with sharp corners):
+/// written as the `Energy` keys with null for those, and `note` saying why.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Undefined {
+    /// External work T [N/m] (3.11), finite.
+    pub external: f64,
+    /// Wear loss [N/m] where it is finite (the Winkler strip's k int q2^2), else None.
+    pub wear_loss: Option<f64>,
+    /// Why I, J and the losses have no number.
+    pub note: &'static str,
+}
+
+/// Why I, J and the losses have no number on the half-plane and the wide strip under sharp
+/// corners (docs/physics/plane-general.md section 4).
+pub const CORNERS_NOTE: &str = "the pressure is singular at the sharp corners (q2 ~ \
+    r^(-1/2-theta) at the trailing corner, r^(-1/2+theta) at the leading one, r the distance to \
+    the corner): q1 u' and q2 v' grow like 1/r or faster there, so I, J, the friction loss and \
+    the wear loss diverge; T = Q1 and the wear per pass k P stay finite";
+
+/// Why I, J and the friction loss have no number on the Winkler strip under sharp corners.
+pub const FACE_NOTE: &str = "the Winkler pressure is bounded but steps from 0 at the sharp \
+    corners, and the surface displacements (u' = alpha q1', v' = -beta q2') step with it: I and \
+    J would be the work of a stress on a displacement step, which the model leaves undefined, \
+    and so is the friction loss Q1 + I; the wear loss is k times the integral of q2^2";
+
+impl Serialize for Undefined {
+    fn serialize<S: serde::Serializer>(&self, out: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut map = out.serialize_struct("Energy", 8)?;
+        for key in ["I", "J", "residual", "friction_loss"] {
+            map.serialize_field(key, &None::<f64>)?;
+        }
+        map.serialize_field("wear_loss", &self.wear_loss)?;
+        map.serialize_field("external", &self.external)?;
+        map.serialize_field("contact_residual", &None::<f64>)?;
+        map.serialize_field("note", self.note)?;
+        map.end()
+    }
+}
+
+/// `energy`'s answer as `wearlab solve` writes it: the `Energy` keys, null where `Undefined`.
+pub fn serialize_balance<S: serde::Serializer>(
+    balance: &Result<Energy, Undefined>,
+    out: S,
+) -> Result<S::Ok, S::Error> {
+    match balance {
+        Ok(energy) => energy.serialize(out),
+        Err(undefined) => undefined.serialize(out),
+    }
+}
+
 /// The residual's round-off floor (dimensionless): I and J are sums of some hundreds of
 /// quadrature terms, each exact to about 1.1e-16 (f64's unit round-off), so a residual below this
 /// says I = J to the precision of the arithmetic and its digits carry no information (they move
@@ -88,8 +139,29 @@ fn pieces(lo: f64, hi: f64, kinks: &[f64]) -> impl Iterator<Item = (f64, f64)> {
 }
 
 /// I, J and the residual for a solved operating point. The quadrature runs in u = x + a in
-/// [0, a + b], the distance from the trailing edge, so both edges keep full precision.
-pub fn energy(sol: &PlaneSolution) -> Energy {
+/// [0, a + b], the distance from the trailing edge, so both edges keep full precision. Undefined
+/// for a punch with sharp corners, where I and J have no number.
+pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
+    let undefined = |wear_loss, note| Undefined {
+        external: sol.tangential_force,
+        wear_loss,
+        note,
+    };
+    match sol.law {
+        PressureLaw::Corners { .. } => return Err(undefined(None, CORNERS_NOTE)),
+        PressureLaw::Face { leading, lambda } => {
+            // k times the integral over the face of (q_b e^(-lambda (L - u)))^2
+            let l = sol.contact_width();
+            let squared = if lambda > 0.0 {
+                -(-2.0 * lambda * l).exp_m1() / (2.0 * lambda)
+            } else {
+                l
+            };
+            let wear_loss = sol.inputs.wear.coefficient * leading * leading * squared;
+            return Err(undefined(Some(wear_loss), FACE_NOTE));
+        }
+        _ => {}
+    }
     // the general solver's polynomial of some 64 nodes needs twice the nodes of the closed forms
     let rule = tanh_sinh(match sol.law {
         PressureLaw::General { .. } => 1.0 / 32.0,
@@ -212,7 +284,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         q2_wear
     };
     let contact_scale = sol.tangential_force.abs().max(gross).max(f64::MIN_POSITIVE);
-    Energy {
+    Ok(Energy {
         i,
         j,
         residual: (i - j).abs() / scale,
@@ -220,7 +292,7 @@ pub fn energy(sol: &PlaneSolution) -> Energy {
         wear_loss,
         external: sol.tangential_force,
         contact_residual: (wear_loss - direct_wear_loss).abs() / contact_scale,
-    }
+    })
 }
 
 /// The shape's kinks strictly inside the contact, as distances u from the trailing edge,

@@ -9,6 +9,7 @@
 pub mod checks;
 pub mod criteria;
 pub mod energy;
+mod found;
 pub mod general;
 pub mod groups;
 pub mod laws;
@@ -18,6 +19,7 @@ pub mod operating_point;
 pub mod profile;
 pub mod scope;
 pub mod shape;
+pub mod sharp;
 pub mod spline;
 pub mod strip;
 pub mod sweep;
@@ -28,6 +30,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
+pub(crate) use found::Found;
 pub use laws::WearLaw;
 pub use operating_point::{OperatingPoint, operating_point};
 pub use shape::Shape;
@@ -188,6 +191,17 @@ pub(crate) enum PressureLaw {
         pressure: std::sync::Arc<general::pressure::Pressure>,
         kinks: std::sync::Arc<[f64]>,
     },
+    /// Sharp corners on the half-plane or wide strip: q2 = Z (A + B u), u = x + a,
+    /// Z = u^(-1/2-theta) (L-u)^(-1/2+theta) (`sharp`); A [Pa m], B [Pa], L [m].
+    Corners {
+        theta: f64,
+        constant: f64,
+        slope: f64,
+        width: f64,
+    },
+    /// Sharp corners on the Winkler strip: q2 = q_b e^(-lambda (b - x)), q_b [Pa] at the leading
+    /// corner, lambda = k/beta [1/m] (`sharp`).
+    Face { leading: f64, lambda: f64 },
 }
 
 /// The solution of the plane problem at one load. Serialised with the keys of `wearlab solve`'s
@@ -269,6 +283,13 @@ impl PlaneSolution {
             PressureLaw::Strip(col) => col.pressure_from_trailing_edge(u),
             PressureLaw::Shooting(nodes) => nodes.pressure(u - self.a),
             PressureLaw::General { pressure, .. } => pressure.pressure_from_trailing_edge(u),
+            &PressureLaw::Corners {
+                theta,
+                constant,
+                slope,
+                width,
+            } => sharp::corners_pressure(theta, constant, slope, width, u),
+            &PressureLaw::Face { leading, lambda } => sharp::face_pressure(leading, lambda, l - u),
         }
     }
 
@@ -292,12 +313,13 @@ impl PlaneSolution {
 pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
     inputs.validate()?;
     scope::check(inputs, model)?;
-    let sol = match model {
-        Model::Wide if inputs.is_classical() => wide::solve(inputs),
-        Model::Wide => general::answer::solve(inputs, model),
-        Model::Narrow => solve_narrow(inputs),
-        Model::Strip if inputs.is_classical() => strip::solve(inputs),
-        Model::Strip => general::answer::solve(inputs, model),
+    let sol = match (model, inputs.shape.sharp_half_width()) {
+        (_, Some(c)) => sharp::solve(inputs, model, c),
+        (Model::Wide, _) if inputs.is_classical() => wide::solve(inputs),
+        (Model::Wide, _) => general::answer::solve(inputs, model),
+        (Model::Narrow, _) => solve_narrow(inputs),
+        (Model::Strip, _) if inputs.is_classical() => strip::solve(inputs),
+        (Model::Strip, _) => general::answer::solve(inputs, model),
     }?;
     checks::check(&sol)?;
     Ok(sol)
@@ -324,74 +346,4 @@ pub(crate) fn exponent(inputs: &PlaneInputs) -> (f64, f64, f64) {
         gamma,
         (m * gamma / std::f64::consts::PI).atan() / std::f64::consts::PI,
     )
-}
-
-/// What each model's solver finds; `PlaneSolution::assemble` derives the forces and mu* from it
-/// the same way for every model.
-pub(crate) struct Found {
-    /// Trailing and leading half-widths a, b [m].
-    pub a: f64,
-    pub b: f64,
-    /// The contact width L [m] the solver's root search settled on (a + b up to round-off).
-    pub width: f64,
-    /// Q2 [N/m].
-    pub q2: f64,
-    /// psi [N/m].
-    pub psi: f64,
-    /// Delta_g [m].
-    pub delta_g: f64,
-    /// theta and gamma of the wide and strip models; None for the narrow model.
-    pub theta: Option<f64>,
-    pub gamma: Option<f64>,
-    /// Q1 = int Pi(q2) dx [N/m] where the solver integrates it (a capped friction law); None:
-    /// mu Q2 + tau0 L.
-    pub friction_force: Option<f64>,
-}
-
-impl PlaneSolution {
-    /// The solution from what a model's solver found: Q1 = mu Q2 + tau0 L, T = Q1 + psi (3.11)
-    /// and mu* (3.13).
-    pub(crate) fn assemble(
-        model: Model,
-        inputs: &PlaneInputs,
-        found: Found,
-        law: PressureLaw,
-    ) -> PlaneSolution {
-        let friction_force = found.friction_force.unwrap_or(
-            inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width,
-        );
-        PlaneSolution {
-            model,
-            inputs: inputs.clone(),
-            normal_force: found.q2,
-            friction_force,
-            tangential_force: friction_force + found.psi,
-            a: found.a,
-            b: found.b,
-            theta: found.theta,
-            gamma: found.gamma,
-            psi: found.psi,
-            delta_g: found.delta_g,
-            // the shot integrates phi into its load balance: Q2 - P to its root's accuracy
-            phi: match found.friction_force {
-                Some(_) => found.q2 - inputs.load,
-                None => {
-                    inputs.friction.coefficient * found.psi
-                        + inputs.friction.adhesion * found.delta_g
-                }
-            },
-            mu_star: match found.friction_force {
-                // (3.13) as T - tau0 L over P, which holds with the cap too
-                Some(q1) => (q1 + found.psi - inputs.friction.adhesion * found.width) / inputs.load,
-                None => total_friction(&inputs.friction, found.psi, found.delta_g, inputs.load),
-            },
-            law,
-        }
-    }
-}
-
-/// mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P, Soldatenkov (2007) eq. (3.13).
-fn total_friction(friction: &Friction, psi: f64, delta_g: f64, load: f64) -> f64 {
-    let mu = friction.coefficient;
-    mu + ((1.0 + mu * mu) * psi + mu * delta_g * friction.adhesion) / load
 }

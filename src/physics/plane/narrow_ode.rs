@@ -178,8 +178,8 @@ impl Shooter<'_> {
 pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     if inputs.shape.is_sharp() {
         return Err(SolveError::InvalidInput(
-            "the narrow (Winkler) model needs a rounded edge (edge_radius > 0): on sharp corners \
-             its pressure jumps, and wearlab does not solve the flat punch with sharp corners"
+            "the narrow model's shooting needs a rounded edge (edge_radius > 0): on sharp corners \
+             the contact is the face and its pressure is plane::sharp's"
                 .into(),
         ));
     }

@@ -3,7 +3,7 @@
 //! it and `wearlab solve` reports it, so both go through this one function.
 
 use crate::physics::SolveError;
-use crate::physics::plane::energy::{Energy, energy};
+use crate::physics::plane::energy::{Energy, Undefined, energy};
 use crate::physics::plane::profile::{Profile, profile};
 use crate::physics::plane::validity::{Validity, check};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve};
@@ -15,8 +15,8 @@ pub struct OperatingPoint {
     pub solution: PlaneSolution,
     /// q2, q1, wear rate and wear per pass at evenly spaced points of [-a, b].
     pub profile: Profile,
-    /// The two sides of the energy identity (2.9).
-    pub energy: Energy,
+    /// The two sides of the energy identity (2.9), or why they have no number (sharp corners).
+    pub energy: Result<Energy, Undefined>,
     /// Whether the model holds at this point.
     pub validity: Validity,
 }

@@ -98,7 +98,18 @@ impl Shape {
 
     /// True for the flat punch with sharp corners (edge_radius = 0): its contact is the face.
     pub fn is_sharp(&self) -> bool {
-        matches!(self, Shape::Flat { edge_radius, .. } if *edge_radius == 0.0)
+        self.sharp_half_width().is_some()
+    }
+
+    /// The face's half-width c [m] of a flat punch with sharp corners; None for every other shape.
+    pub fn sharp_half_width(&self) -> Option<f64> {
+        match self {
+            Shape::Flat {
+                half_width,
+                edge_radius,
+            } if *edge_radius == 0.0 => Some(*half_width),
+            _ => None,
+        }
     }
 
     /// The points x [m] where g'' jumps or is infinite (a solution's q2 has kinks there):

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
-use crate::physics::plane::{checks, general, scope, validity};
+use crate::physics::plane::{checks, general, scope, sharp, validity};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -45,12 +45,13 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
         .iter()
         .map(|&p| {
             let at = inputs.with_load(p);
-            match model {
+            match (model, at.shape.sharp_half_width()) {
                 _ if !valid => None,
-                Model::Wide if closed => wide::solve_with(wide.as_ref()?, &at).ok(),
-                Model::Wide => general::answer::solve(&at, model).ok(),
-                Model::Narrow => solve_narrow(&at).ok(),
-                Model::Strip => general::answer::solve(&at, model).ok(),
+                (_, Some(c)) => sharp::solve(&at, model, c).ok(),
+                (Model::Wide, _) if closed => wide::solve_with(wide.as_ref()?, &at).ok(),
+                (Model::Wide, _) => general::answer::solve(&at, model).ok(),
+                (Model::Narrow, _) => solve_narrow(&at).ok(),
+                (Model::Strip, _) => general::answer::solve(&at, model).ok(),
             }
             .filter(|sol| checks::check(sol).is_ok())
         })

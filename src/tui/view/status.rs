@@ -117,7 +117,7 @@ fn plane(
         format!("Q2 = {}", format_si(s.normal_force, "N/m")),
         format!("psi = {}", format_si(s.psi, "N/m")),
         mu_star(s.mu_star, s.inputs.friction.coefficient),
-        residual(p.energy.residual),
+        residual(p.energy.as_ref().ok().map(|e| e.residual)),
     ]);
     with_validity(&items, p, check, style, width, height)
 }
@@ -149,8 +149,12 @@ fn shape_name(shape: &Shape) -> Option<String> {
     }
 }
 
-/// The energy identity's residual, or "< 1e-14" at round-off (whose digits mean nothing).
-fn residual(r: f64) -> String {
+/// The energy identity's residual, or "< 1e-14" at round-off (whose digits mean nothing), or
+/// that I and J have no number (sharp corners).
+fn residual(r: Option<f64>) -> String {
+    let Some(r) = r else {
+        return "I, J undefined at sharp corners".to_string();
+    };
     if r < RESIDUAL_ROUND_OFF {
         format!("I-J residual < {RESIDUAL_ROUND_OFF:.0e}")
     } else {
