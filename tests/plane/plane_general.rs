@@ -4,8 +4,8 @@
 //! c -> 0, the physical sense of the half-plane's shifts, and two node counts.
 
 use wearlab::physics::plane::energy::energy;
-use wearlab::physics::plane::general::laws::FrictionLaw;
 use wearlab::physics::plane::general::{Problem, Solution, solve};
+use wearlab::physics::plane::laws::FrictionLaw;
 use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw, wide};
 use wearlab::physics::{Friction, Material};
 

@@ -3,8 +3,8 @@
 //! energy identity and node counts, and load sweeps through the general solver.
 
 use wearlab::physics::plane::energy::energy;
-use wearlab::physics::plane::general::laws::FrictionLaw;
 use wearlab::physics::plane::general::{Problem, Solution, solve};
+use wearlab::physics::plane::laws::FrictionLaw;
 use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw};
 
 use super::plane_general::{general, laws, material, parabola, plane_inputs, power, rel};

@@ -20,7 +20,6 @@
 use serde::Serialize;
 
 use crate::physics::elastic::chi_c12;
-use crate::physics::plane::laws::capped_shear_slope;
 use crate::physics::plane::narrow::{winkler_alpha, winkler_beta};
 use crate::physics::plane::strip::kernels_for;
 use crate::physics::plane::{Model, PlaneSolution, PressureLaw};
@@ -240,7 +239,7 @@ pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
                 let q = q2(u);
                 // (5.3) with the wear law F and the shape's slope g'
                 let dq2 = (inputs.wear.rate(q) - inputs.shape.slope(u - a)) / beta;
-                let dq1 = capped_shear_slope(&inputs.friction, inputs.shear_strength, q) * dq2;
+                let dq1 = inputs.friction_law().shear_slope(q) * dq2;
                 (alpha * dq1, -beta * dq2)
             })
         }

@@ -75,35 +75,64 @@ impl WearLaw {
     }
 }
 
-/// Pi(q) = min(mu q + tau0, tau_max) [Pa]: the shear stress at the pressure q [Pa], Coulomb
-/// friction with adhesion capped by the shear strength tau_max [Pa] (inf: no cap).
-pub fn capped_shear(friction: &Friction, shear_strength: f64, q: f64) -> f64 {
-    (friction.coefficient * q + friction.adhesion).min(shear_strength)
+/// Friction law q1 = Pi(q2) = min(mu q2 + tau0, tau_max): Coulomb friction with adhesion capped
+/// by a shear strength (the friction law q1 = Pi(q2) of section 5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrictionLaw {
+    /// mu and tau0 [Pa].
+    pub coulomb: Friction,
+    /// tau_max [Pa], > tau0; infinite for plain Coulomb with adhesion.
+    pub shear_strength: f64,
 }
 
-/// dPi/dq: mu below the cap, 0 where the cap holds (dimensionless).
-pub fn capped_shear_slope(friction: &Friction, shear_strength: f64, q: f64) -> f64 {
-    if friction.coefficient * q + friction.adhesion < shear_strength {
-        friction.coefficient
-    } else {
-        0.0
+impl FrictionLaw {
+    /// Pi(q) [Pa]: the shear stress at the pressure q [Pa].
+    pub fn shear(&self, q: f64) -> f64 {
+        (self.coulomb.coefficient * q + self.coulomb.adhesion).min(self.shear_strength)
     }
-}
 
-/// Checks tau_max against its range and against tau0: with tau_max <= tau0 the cap holds at the
-/// contact edges and the shear is tau_max everywhere, which is Coulomb friction with mu = 0.
-pub fn validate_cap(friction: &Friction, shear_strength: f64) -> Result<(), SolveError> {
-    limits::check_all(&[(&limits::SHEAR_STRENGTH, "shear_strength", shear_strength)])
-        .map_err(SolveError::InvalidInput)?;
-    if shear_strength <= friction.adhesion {
-        return Err(SolveError::InvalidInput(format!(
-            "shear_strength = {} Pa does not exceed the adhesion tau0 = {} Pa: the cap would hold \
-             everywhere (that is mu = 0 with tau0 = shear_strength); give shear_strength > tau0",
-            limits::show(shear_strength),
-            limits::show(friction.adhesion)
-        )));
+    /// dPi/dq (dimensionless): mu below the cap, 0 where the cap holds.
+    pub fn shear_slope(&self, q: f64) -> f64 {
+        if self.coulomb.coefficient * q + self.coulomb.adhesion < self.shear_strength {
+            self.coulomb.coefficient
+        } else {
+            0.0
+        }
     }
-    Ok(())
+
+    /// max(0, mu q + tau0 - tau_max) [Pa]: what the cap takes off the Coulomb shear.
+    pub fn excess(&self, q: f64) -> f64 {
+        (self.coulomb.coefficient * q + self.coulomb.adhesion - self.shear_strength).max(0.0)
+    }
+
+    /// mu (dimensionless).
+    pub fn coefficient(&self) -> f64 {
+        self.coulomb.coefficient
+    }
+
+    /// tau0 [Pa].
+    pub fn adhesion(&self) -> f64 {
+        self.coulomb.adhesion
+    }
+
+    /// Checks tau_max against its range and against tau0: with tau_max <= tau0 the cap holds at
+    /// the contact edges and the shear is tau_max everywhere, which is Coulomb friction with
+    /// mu = 0.
+    pub fn validate(&self) -> Result<(), SolveError> {
+        let (friction, shear_strength) = (&self.coulomb, self.shear_strength);
+        limits::check_all(&[(&limits::SHEAR_STRENGTH, "shear_strength", shear_strength)])
+            .map_err(SolveError::InvalidInput)?;
+        if shear_strength <= friction.adhesion {
+            return Err(SolveError::InvalidInput(format!(
+                "shear_strength = {} Pa does not exceed the adhesion tau0 = {} Pa: the cap would \
+                 hold everywhere (that is mu = 0 with tau0 = shear_strength); give shear_strength \
+                 > tau0",
+                limits::show(shear_strength),
+                limits::show(friction.adhesion)
+            )));
+        }
+        Ok(())
+    }
 }
 
 #[cfg(test)]
@@ -130,14 +159,20 @@ mod tests {
             coefficient: 0.5,
             adhesion: 1e5,
         };
-        assert_eq!(capped_shear(&f, f64::INFINITY, 2e6), 0.5 * 2e6 + 1e5);
-        assert_eq!(capped_shear(&f, 5e5, 2e6), 5e5);
-        assert_eq!(capped_shear_slope(&f, 5e5, 2e6), 0.0);
-        assert_eq!(capped_shear_slope(&f, 5e5, 1e5), 0.5);
-        let err = validate_cap(&f, 1e5).unwrap_err().to_string();
+        let law = |shear_strength| FrictionLaw {
+            coulomb: f,
+            shear_strength,
+        };
+        assert_eq!(law(f64::INFINITY).shear(2e6), 0.5 * 2e6 + 1e5);
+        assert_eq!(law(5e5).shear(2e6), 5e5);
+        assert_eq!(law(5e5).shear_slope(2e6), 0.0);
+        assert_eq!(law(5e5).shear_slope(1e5), 0.5);
+        assert_eq!(law(5e5).excess(2e6), 0.5 * 2e6 + 1e5 - 5e5);
+        let err = law(1e5).validate().unwrap_err().to_string();
         assert!(err.contains("does not exceed the adhesion"), "{err}");
         assert!(
-            validate_cap(&f, 0.0)
+            law(0.0)
+                .validate()
                 .unwrap_err()
                 .to_string()
                 .contains("out of range")

@@ -31,7 +31,7 @@ use serde::{Deserialize, Serialize};
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 pub(crate) use found::Found;
-pub use laws::WearLaw;
+pub use laws::{FrictionLaw, WearLaw};
 pub use operating_point::{OperatingPoint, operating_point};
 pub use shape::Shape;
 
@@ -138,9 +138,17 @@ impl PlaneInputs {
             && self.shear_strength == f64::INFINITY
     }
 
-    /// Pi(q) [Pa]: the shear stress at the pressure q [Pa] (`laws::capped_shear`).
+    /// The friction law q1 = min(mu q2 + tau0, tau_max) of these inputs.
+    pub fn friction_law(&self) -> FrictionLaw {
+        FrictionLaw {
+            coulomb: self.friction,
+            shear_strength: self.shear_strength,
+        }
+    }
+
+    /// Pi(q) [Pa]: the shear stress at the pressure q [Pa] (`FrictionLaw::shear`).
     pub fn shear_at(&self, q: f64) -> f64 {
-        laws::capped_shear(&self.friction, self.shear_strength, q)
+        self.friction_law().shear(q)
     }
 
     /// Checks every field against its allowed range (see `physics::limits`) and refuses the
@@ -150,7 +158,7 @@ impl PlaneInputs {
     pub fn validate(&self) -> Result<(), SolveError> {
         validate_common(&self.material, &self.friction, self.wear.coefficient)?;
         self.wear.validate()?;
-        laws::validate_cap(&self.friction, self.shear_strength)?;
+        self.friction_law().validate()?;
         self.shape.validate()?;
         limits::check_all(&[(&limits::LINE_LOAD, "load", self.load)])
             .map_err(SolveError::InvalidInput)?;

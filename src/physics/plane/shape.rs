@@ -233,6 +233,37 @@ impl serde::Serialize for Shape {
     }
 }
 
+/// A smooth punch profile g(x) [m], g(0) = 0, x [m] in the moving frame.
+pub trait Punch {
+    /// g(x) [m], the punch's height above its tip at x.
+    fn height(&self, x: f64) -> f64;
+    /// g'(x), the slope (dimensionless).
+    fn slope(&self, x: f64) -> f64;
+    /// g''(x) [1/m], as Newton's steps need it: a central difference of the slope on the scale
+    /// `step` [m], which stays finite at a power punch's tip (n < 2) and steps over the jumps of
+    /// g'' (the exact g'' there made Newton's steps overshoot).
+    fn curvature(&self, x: f64, step: f64) -> f64 {
+        (self.slope(x + step) - self.slope(x - step)) / (2.0 * step)
+    }
+    /// The points [m] where g'' jumps or is singular (the tip of a power punch, the ends of a
+    /// flat face, the knots of a table): quadratures are split there.
+    fn kinks(&self) -> Vec<f64>;
+}
+
+impl Punch for Shape {
+    fn height(&self, x: f64) -> f64 {
+        self.g(x)
+    }
+
+    fn slope(&self, x: f64) -> f64 {
+        Shape::slope(self, x)
+    }
+
+    fn kinks(&self) -> Vec<f64> {
+        Shape::kinks(self)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

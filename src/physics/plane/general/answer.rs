@@ -7,7 +7,6 @@
 use std::sync::Arc;
 
 use crate::physics::SolveError;
-use crate::physics::plane::general::laws::FrictionLaw;
 use crate::physics::plane::general::{NODES, Problem, solve as solve_general};
 use crate::physics::plane::strip::{Kernels, kernels_for};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw};
@@ -18,10 +17,7 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
     let kernels = (model == Model::Strip).then(|| kernels_for(inputs.material.poisson_ratio));
     let problem = Problem {
         material: inputs.material,
-        friction: FrictionLaw {
-            coulomb: inputs.friction,
-            shear_strength: inputs.shear_strength,
-        },
+        friction: inputs.friction_law(),
         wear: inputs.wear,
         shape: &inputs.shape,
         load: inputs.load,

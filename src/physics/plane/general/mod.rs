@@ -9,7 +9,6 @@
 //! collocation is solved by Newton (`system`), then the width by Brent's method on P (`width`).
 
 pub mod answer;
-pub mod laws;
 pub mod pressure;
 pub mod system;
 pub mod width;
@@ -18,9 +17,10 @@ use nalgebra::DVector;
 
 use crate::physics::elastic::chi_c12;
 use crate::physics::plane::WearLaw;
-use crate::physics::plane::general::laws::{FrictionLaw, Punch};
 use crate::physics::plane::general::pressure::Pressure;
 use crate::physics::plane::general::system::Discretisation;
+use crate::physics::plane::laws::FrictionLaw;
+use crate::physics::plane::shape::Punch;
 use crate::physics::plane::strip::{self, Kernels};
 use crate::physics::{Material, SolveError};
 
