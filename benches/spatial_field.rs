@@ -9,7 +9,7 @@ use std::hint::black_box;
 use wearlab::physics::spatial::contact::check;
 use wearlab::physics::spatial::field::{field, field_into};
 use wearlab::physics::spatial::harmonic::Harmonic;
-use wearlab::physics::spatial::{Cell, SpatialInputs, solve};
+use wearlab::physics::spatial::{Cell, PunchShape, SpatialInputs, solve};
 use wearlab::physics::{Friction, Material};
 
 mod common;
@@ -41,7 +41,7 @@ fn harmonics(count: usize, (d, e): (usize, usize)) -> SpatialInputs {
         wear: 1e-12,
         sliding_speed: 0.1,
         mean_pressure: 2e6,
-        harmonics,
+        shape: PunchShape::Harmonics(harmonics),
     }
 }
 
@@ -54,7 +54,7 @@ fn bench(c: &mut Criterion<CpuTime>) {
     ] {
         let inputs = harmonics(count, spread);
         let sol = solve(&inputs, 10.0).unwrap();
-        let cell = Cell::of(&inputs.harmonics);
+        let cell = Cell::of(inputs.harmonics());
         if name.is_empty() {
             c.bench_function(&format!("spatial_field/{n}x{n}x{count}"), |b| {
                 b.iter(|| black_box(field(black_box(&sol), &cell, n)))
@@ -68,7 +68,7 @@ fn bench(c: &mut Criterion<CpuTime>) {
     }
     let inputs = harmonics(8, (4, 2));
     let sol = solve(&inputs, 10.0).unwrap();
-    let cell = Cell::of(&inputs.harmonics);
+    let cell = Cell::of(inputs.harmonics());
     c.bench_function("spatial_contact/8", |b| {
         b.iter(|| black_box(check(black_box(&sol), &cell)))
     });

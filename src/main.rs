@@ -59,6 +59,10 @@ enum Command {
         /// Stop after S seconds of wall-clock time with exit code 3 (the solve is not finished).
         #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
         max_seconds: Option<f64>,
+        /// Also write the punch surface at t (a spatial.surface preset) to FILE as a height-map
+        /// CSV.
+        #[arg(long, value_name = "FILE", conflicts_with = "output")]
+        write_surface: Option<PathBuf>,
     },
     /// Solve a preset over a range of one parameter (a curve) or two (a grid); rows on stdout.
     Sweep {
@@ -125,6 +129,7 @@ fn main() -> ExitCode {
             settings,
             max_seconds,
             output,
+            write_surface,
         }) => solve::run(
             &preset,
             format,
@@ -135,6 +140,7 @@ fn main() -> ExitCode {
                 settings,
                 max_seconds,
                 output,
+                write_surface,
             },
         ),
         Some(Command::Sweep {

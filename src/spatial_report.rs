@@ -36,3 +36,27 @@ pub fn field_csv(result: &SpatialResult) -> String {
     }
     out
 }
+
+/// The punch surface at t of a height-map punch as a height-map CSV (docs/presets.md, "Rough
+/// surfaces"): `#` lines with the time and the cell, then one row per y grid line of heights [m]
+/// at 17 significant digits (each reads back to the same number). None for harmonics.
+pub fn surface_csv(result: &SpatialResult) -> Option<String> {
+    let surface = result.surface?;
+    let f = &result.field;
+    let [lx, ly] = surface.cell;
+    let mut out = format!(
+        "# wearlab: the punch surface U at t = {:e} s, heights [m] from the punch toward the layer\n\
+         # length_x = {lx:e} m, length_y = {ly:e} m; {} x {} nodes, rms height {:e} m, rms slope {:e}\n",
+        result.time,
+        f.x.len(),
+        f.y.len(),
+        surface.rms_height,
+        surface.rms_slope
+    );
+    for row in f.shape.chunks(f.x.len().max(1)) {
+        let cells: Vec<String> = row.iter().map(|h| format!("{h:.16e}")).collect();
+        out.push_str(&cells.join(","));
+        out.push('\n');
+    }
+    Some(out)
+}

@@ -2,19 +2,21 @@
 //! the library's report of one preset (`report::plane_report`, `spatial_report`) on stdout, or with
 //! `--output KEY[,KEY...]` chosen quantities of it (`solve_output`).
 
-use std::io::{self, IsTerminal};
-use std::path::Path;
+use std::io::{self, IsTerminal, Write};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
 use wearlab::physics::limits::{self, Limit};
-use wearlab::preset::{Preset, Problem};
+use wearlab::physics::spatial::result::SpatialResult;
+use wearlab::preset::{Links, Preset, Problem, write_atomically};
 use wearlab::{finite, report, spatial_report};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::{
-    EXIT_INVALID, Format, finished, load_with, print, say, solve_output, solver_failure, within,
+    EXIT_INVALID, EXIT_OUTPUT, Format, finished, load_with, print, say, solve_output,
+    solver_failure, within,
 };
 
 /// Profile points when `--points` is not given.
@@ -61,6 +63,8 @@ pub struct Overrides {
     pub max_seconds: Option<f64>,
     /// `--output KEY[,KEY...]`: print these quantities instead of the report.
     pub output: Option<String>,
+    /// `--write-surface FILE`: also write the punch surface at t as a height-map CSV.
+    pub write_surface: Option<PathBuf>,
 }
 
 impl Overrides {
@@ -69,6 +73,9 @@ impl Overrides {
     fn check(&self, problem: Problem) -> Result<(), String> {
         let (misplaced, this, other) = match problem {
             Problem::Plane if self.time.is_some() => ("--time", "plane", "spatial"),
+            Problem::Plane if self.write_surface.is_some() => {
+                ("--write-surface", "plane", "spatial")
+            }
             Problem::Plane if !self.probes.is_empty() => ("--probe", "plane", "spatial"),
             Problem::Spatial if self.points.is_some() => ("--points", "spatial", "plane"),
             _ => return Ok(()),
@@ -101,14 +108,31 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         );
         return finished(bounded, &|| "the solve had not finished".into());
     }
+    if options.write_surface.is_some() && preset.spatial.surface.is_none() {
+        say(
+            "error: --write-surface writes a height-map punch (spatial.surface); this preset's \
+             punch is [[spatial.harmonics]]",
+        );
+        return ExitCode::from(EXIT_INVALID);
+    }
     let format = format.unwrap_or(Format::Json);
     let (time, probes) = (options.time, options.probes.clone());
     let points = options.points.unwrap_or(DEFAULT_POINTS);
+    let write_surface = options.write_surface.clone();
     let spinner = ProgressBar::hidden();
     let start = Instant::now();
     let bounded = within(
         options.max_seconds,
-        move || answer(&preset, format, points, time, &probes),
+        move || {
+            let asked = Asked {
+                format,
+                points,
+                time,
+                probes: &probes,
+                write_surface: write_surface.as_deref(),
+            };
+            answer(&preset, &asked)
+        },
         &|| show_after_a_second(&spinner, start),
     );
     spinner.finish_and_clear();
@@ -130,14 +154,18 @@ fn show_after_a_second(spinner: &ProgressBar, start: Instant) {
     spinner.tick();
 }
 
-/// Solves the preset and prints its report.
-fn answer(
-    preset: &Preset,
+/// What a solve prints and writes.
+struct Asked<'a> {
     format: Format,
     points: usize,
     time: Option<f64>,
-    probes: &[[f64; 2]],
-) -> ExitCode {
+    probes: &'a [[f64; 2]],
+    write_surface: Option<&'a Path>,
+}
+
+/// Solves the preset, writes the surface when asked and prints its report.
+fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
+    let (format, points, time, probes) = (asked.format, asked.points, asked.time, asked.probes);
     match preset.problem {
         Problem::Plane => match report::plane_report(preset, points) {
             Ok(r) => match format {
@@ -151,6 +179,13 @@ fn answer(
             Err(e) => solver_failure(e),
         },
         Problem::Spatial => match spatial_report::spatial_report(preset, time, probes) {
+            Ok(r)
+                if asked
+                    .write_surface
+                    .is_some_and(|path| !write_surface(path, &r)) =>
+            {
+                ExitCode::from(EXIT_OUTPUT)
+            }
             Ok(r) => match format {
                 Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
                 Format::Csv => {
@@ -161,5 +196,23 @@ fn answer(
             },
             Err(e) => solver_failure(e),
         },
+    }
+}
+
+/// Writes the surface at t of `result` to `path` atomically (the save of a preset's way); false,
+/// having said why, when it cannot be written.
+fn write_surface(path: &Path, result: &SpatialResult) -> bool {
+    let Some(text) = spatial_report::surface_csv(result) else {
+        return true;
+    };
+    match write_atomically(path, Links::Follow, |f| f.write_all(text.as_bytes())) {
+        Ok(_) => true,
+        Err(e) => {
+            say(&format!(
+                "error: cannot write the surface to {}: {e}",
+                path.display()
+            ));
+            false
+        }
     }
 }

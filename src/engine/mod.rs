@@ -163,7 +163,7 @@ impl ResponseKey {
             friction: inputs.friction,
             wear_rate: inputs.wear_rate(),
             waves: inputs
-                .harmonics
+                .harmonics()
                 .iter()
                 .map(|h| (h.wavenumber_x, h.wavenumber_y))
                 .collect(),
@@ -320,6 +320,17 @@ impl Engine {
         let inputs = preset.spatial_inputs();
         if let Err(e) = inputs.validate() {
             deliver(Output::Spatial(Err(e)), true);
+            return;
+        }
+        if inputs.surface().is_some() {
+            deliver(
+                Output::Spatial(Err(SolveError::NoSolution(
+                    "the explorer does not draw a height-map punch (spatial.surface): \
+                     `wearlab solve` answers it"
+                        .into(),
+                ))),
+                true,
+            );
             return;
         }
         let responses =

@@ -38,6 +38,23 @@ pub const BUNDLED: &[Bundled] = bundled![
     "flat-pin-coating.toml",
 ];
 
+/// The data files that bundled presets name (`spatial.surface.file`), built into the binary
+/// beside them.
+pub const BUNDLED_DATA: &[Bundled] = bundled![];
+
+/// The text of `file` named by the preset at `preset` when that is a bundled preset
+/// (`presets/<file>`, as `Bundled::load` names it) and `file` a bundled data file.
+pub(super) fn bundled_data(preset: &Path, file: &str) -> Option<&'static str> {
+    let bundled = preset.parent() == Some(Path::new("presets"))
+        && BUNDLED
+            .iter()
+            .any(|b| preset.file_name() == Some(b.file.as_ref()));
+    BUNDLED_DATA
+        .iter()
+        .find(|d| bundled && d.file == file)
+        .map(|d| d.text)
+}
+
 impl Bundled {
     /// Parses the bundled text (its path in messages is `presets/<file>`).
     pub fn load(&self) -> Result<Preset, PresetError> {

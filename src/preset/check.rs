@@ -71,7 +71,7 @@ impl Checker<'_> {
         Ok(value)
     }
 
-    fn warn(&self, span: Option<Range<usize>>, reason: String) {
+    pub(super) fn warn(&self, span: Option<Range<usize>>, reason: String) {
         self.warnings.borrow_mut().push(self.error(span, reason));
     }
 }
@@ -290,6 +290,17 @@ impl Checker<'_> {
             "spatial.mean_pressure",
             &limits::MEAN_PRESSURE,
         )?;
+        let surface = match &sp.surface {
+            Some(s) if !sp.harmonics.is_empty() => {
+                return Err(self.error(
+                    Some(s.span()),
+                    "give spatial.surface or [[spatial.harmonics]], not both: the punch is a \
+                     height map or a sum of harmonics",
+                ));
+            }
+            Some(s) => Some(self.surface(s)?),
+            None => None,
+        };
         let mut harmonics = Vec::new();
         for fh in &sp.harmonics {
             let h = fh.get_ref();
@@ -327,7 +338,7 @@ impl Checker<'_> {
                 return Err(self.error(Some(fh.span()), why.trim_start_matches("invalid input: ")));
             }
         }
-        if harmonics.is_empty() {
+        if harmonics.is_empty() && surface.is_none() {
             return Err(self.error(
                 Some(spatial.span()),
                 "[spatial] has no [[spatial.harmonics]]: the punch needs at least one harmonic",
@@ -373,6 +384,7 @@ impl Checker<'_> {
             },
             sweep,
             harmonics,
+            surface,
         };
         Ok((section, sp.duration.is_some()))
     }

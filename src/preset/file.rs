@@ -12,7 +12,9 @@ use crate::physics::plane::{Model, Shape};
 use crate::preset::explore_section::Explore;
 use crate::preset::lesson::{self, FileLesson};
 use crate::preset::written::Written;
-use crate::preset::{Preset, Problem, SCHEMA, SpatialSection, default_spatial_section, disk};
+use crate::preset::{
+    Preset, Problem, SCHEMA, SpatialSection, default_spatial_section, disk, surface_file,
+};
 use crate::sweeps::axis::Axis;
 
 #[derive(Deserialize, Serialize)]
@@ -123,6 +125,8 @@ pub(super) struct FileSpatial {
     pub(super) time_tolerance: Option<Spanned<Written>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) sweep: Option<Spanned<FilePressureSweep>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) surface: Option<Spanned<surface_file::FileSurface>>,
     #[serde(default)]
     pub(super) harmonics: Vec<Spanned<FileHarmonic>>,
 }
@@ -296,6 +300,10 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
             points: plain(sp.sweep.points as i64),
             scale: sp.sweep.spacing,
         })),
+        surface: sp
+            .surface
+            .as_ref()
+            .map(|s| plain(surface_file::to_file(&s.source))),
         harmonics: sp
             .harmonics
             .iter()

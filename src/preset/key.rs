@@ -240,7 +240,12 @@ impl Preset {
             ["spatial.sweep.pressure_min", "spatial.sweep.pressure_max"],
         )?;
         law_rules::check(self)?;
-        validate_harmonics(&self.spatial.harmonics)
+        // a height map (spatial.surface) has no harmonics and solves on its own grid
+        let harmonics = match self.spatial.surface {
+            Some(_) => Ok(()),
+            None => validate_harmonics(&self.spatial.harmonics),
+        };
+        harmonics
             .and_then(|()| validate_grid(&self.spatial.harmonics, self.spatial.grid))
             .map_err(|e| e.to_string().trim_start_matches("invalid input: ").into())
     }

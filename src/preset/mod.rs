@@ -17,20 +17,24 @@ mod params;
 mod plausible;
 mod profile_csv;
 mod shape_check;
+mod surface_file;
+mod surface_key;
 mod wording;
 mod written;
 
 use std::fmt;
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
 use crate::physics::plane::{Model, PlaneInputs, Shape, WearLaw};
 use crate::physics::spatial::harmonic::Harmonic;
-use crate::physics::spatial::{SpatialInputs, StateAt};
+use crate::physics::spatial::surface::SurfaceShape;
+use crate::physics::spatial::{PunchShape, SpatialInputs, StateAt};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 
-pub use bundled::{BUNDLED, Bundled, bundled, default_preset};
+pub use bundled::{BUNDLED, BUNDLED_DATA, Bundled, bundled, default_preset};
 pub use check::{load, load_with_warnings, parse, parse_with_warnings};
 pub use disk::{Links, MAX_PRESET_BYTES, leads_into, write_atomically};
 pub use explore_section::Explore;
@@ -92,8 +96,10 @@ pub struct SpatialSection {
     pub time_tolerance: f64,
     /// The mean pressures of the mu*(pbar) sweep.
     pub sweep: SweepRange,
-    /// The punch harmonics at t = 0.
+    /// The punch harmonics at t = 0 (none when `surface` is given).
     pub harmonics: Vec<Harmonic>,
+    /// The punch as a height map (`spatial.surface`), in place of the harmonics.
+    pub surface: Option<Arc<SurfaceShape>>,
 }
 
 /// A validated preset.
@@ -157,7 +163,10 @@ impl Preset {
             wear: self.wear,
             sliding_speed: self.spatial.sliding_speed,
             mean_pressure: self.spatial.mean_pressure,
-            harmonics: self.spatial.harmonics.clone(),
+            shape: match &self.spatial.surface {
+                Some(surface) => PunchShape::Surface(Arc::clone(surface)),
+                None => PunchShape::Harmonics(self.spatial.harmonics.clone()),
+            },
         }
     }
 
@@ -219,6 +228,7 @@ pub fn default_spatial_section() -> SpatialSection {
             phase_x: 0.0,
             phase_y: std::f64::consts::FRAC_PI_2,
         }],
+        surface: None,
     }
 }
 

@@ -13,3 +13,4 @@ mod hostile_cli;
 mod quantities;
 mod shapes_cli;
 mod solve_output;
+mod surface_cli;

@@ -105,6 +105,6 @@ pub fn spatial(
         wear: k,
         sliding_speed: 1.0,
         mean_pressure: pbar,
-        harmonics,
+        shape: wearlab::physics::spatial::PunchShape::Harmonics(harmonics),
     }
 }

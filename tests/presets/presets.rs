@@ -6,8 +6,8 @@ use std::path::Path;
 
 use wearlab::physics::plane::solve;
 use wearlab::physics::spatial::contact::check;
-use wearlab::physics::spatial::{self, Cell};
-use wearlab::preset::{self, BUNDLED, Problem, parse, write_atomically};
+use wearlab::physics::spatial::{self, Cell, pipeline};
+use wearlab::preset::{self, BUNDLED, BUNDLED_DATA, Problem, parse, write_atomically};
 
 const BASE: &str = include_str!("../../presets/hertz-check.toml");
 
@@ -36,11 +36,17 @@ fn every_bundled_preset_loads_and_solves() {
                     .unwrap_or_else(|e| panic!("{}: {e}", b.file));
                 assert!(sol.mu_star.is_finite());
             }
+            Problem::Spatial if p.spatial.surface.is_some() => {
+                // a height map is solved on its grid (its figures: tests/presets/surfaces.rs)
+                let r = pipeline::solve(&p.spatial_inputs(), &p.spatial_state_at(), &[], false)
+                    .unwrap_or_else(|e| panic!("{}: {e}", b.file));
+                assert!(r.mu_star.is_finite());
+            }
             Problem::Spatial => {
                 let inputs = p.spatial_inputs();
                 let sol = spatial::solve(&inputs, p.spatial.time)
                     .unwrap_or_else(|e| panic!("{}: {e}", b.file));
-                let contact = check(&sol, &Cell::of(&inputs.harmonics));
+                let contact = check(&sol, &Cell::of(inputs.harmonics()));
                 // every spatial preset but the two running-in lessons is in complete contact
                 assert_eq!(
                     contact.complete,
@@ -51,18 +57,22 @@ fn every_bundled_preset_loads_and_solves() {
                 if !contact.complete {
                     let later =
                         spatial::solve(&inputs, contact.complete_after.unwrap() * 1.01).unwrap();
-                    assert!(check(&later, &Cell::of(&inputs.harmonics)).complete);
+                    assert!(check(&later, &Cell::of(inputs.harmonics())).complete);
                 }
             }
         }
     }
-    // every file in presets/ is bundled
+    // every file in presets/ is bundled (a preset, or a data file a preset names)
     let mut on_disk: Vec<String> = std::fs::read_dir("presets")
         .unwrap()
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     on_disk.sort();
-    let mut bundled: Vec<String> = BUNDLED.iter().map(|b| b.file.to_string()).collect();
+    let mut bundled: Vec<String> = BUNDLED
+        .iter()
+        .chain(BUNDLED_DATA)
+        .map(|b| b.file.to_string())
+        .collect();
     bundled.sort();
     assert_eq!(on_disk, bundled);
 }

@@ -28,7 +28,7 @@ fn two_waves(w1: f64, w2: f64, c: f64) -> (f64, wearlab::physics::spatial::conta
         ],
     );
     let sol = solve(&inputs, 0.0).unwrap();
-    (1e7 - 2.0 * c, check(&sol, &Cell::of(&inputs.harmonics)))
+    (1e7 - 2.0 * c, check(&sol, &Cell::of(inputs.harmonics())))
 }
 
 #[test]

@@ -15,3 +15,4 @@ mod spatial_props;
 mod spatial_running_in;
 mod spatial_time_steps;
 mod surface;
+mod surface_solve;

@@ -9,7 +9,7 @@ use wearlab::physics::elastic::{plane_modulus, strip_transfer};
 use wearlab::physics::roots::brent;
 use wearlab::physics::spatial::contact::check;
 use wearlab::physics::spatial::harmonic::{Harmonic, evolution, layer_response};
-use wearlab::physics::spatial::{Cell, SpatialInputs, solve};
+use wearlab::physics::spatial::{Cell, PunchShape, SpatialInputs, solve};
 use wearlab::physics::{Friction, Material};
 use wearlab::preset::bundled;
 
@@ -45,7 +45,7 @@ fn inputs(
         wear: k,
         sliding_speed: 1.0,
         mean_pressure: pbar,
-        harmonics,
+        shape: PunchShape::Harmonics(harmonics),
     }
 }
 
@@ -187,7 +187,7 @@ fn the_sign_change_of_the_coupling_matches_the_reference_x_star() {
 /// the shape through the layer's transfer function mode by mode (a 2-D DFT; p^ = U^/(A - i mu sx B)
 /// for every wave vector, sx = kx/k signed), and compares with the closed-form evolution.
 fn time_step_against_closed_form(inp: &SpatialInputs, t_end: f64, steps: usize) {
-    let cell = Cell::of(&inp.harmonics);
+    let cell = Cell::of(inp.harmonics());
     let n = 16;
     let (lx, ly) = (cell.lx, cell.ly);
     let xs: Vec<f64> = (0..n).map(|i| i as f64 * lx / n as f64).collect();
@@ -272,7 +272,7 @@ fn time_step_against_closed_form(inp: &SpatialInputs, t_end: f64, steps: usize) 
         }
     }
     let closed = solve(inp, t_end).unwrap();
-    let amp0: f64 = inp.harmonics.iter().map(|h| h.amplitude).sum();
+    let amp0: f64 = inp.harmonics().iter().map(|h| h.amplitude).sum();
     let p_scale: f64 = initial
         .harmonics
         .iter()
@@ -311,7 +311,7 @@ fn certified_minimum_agrees_with_a_brute_force_grid() {
         four_directions(),
     ] {
         let sol = solve(&inp, 0.0).unwrap();
-        let cell = Cell::of(&inp.harmonics);
+        let cell = Cell::of(inp.harmonics());
         let c = check(&sol, &cell);
         assert!(c.exact);
         let n = 700;
@@ -367,7 +367,7 @@ fn four_directions() -> SpatialInputs {
 fn the_bound_can_be_negative_while_contact_is_complete() {
     let inp = four_directions();
     let sol = solve(&inp, 0.0).unwrap();
-    let c = check(&sol, &Cell::of(&inp.harmonics));
+    let c = check(&sol, &Cell::of(inp.harmonics()));
     assert!(c.lower_bound < 0.0, "bound {}", c.lower_bound);
     assert!(c.min_pressure > 0.0 && c.complete && c.exact, "{c:?}");
 }
@@ -382,7 +382,7 @@ fn deformation_friction_is_the_cell_average_of_p_g_x() {
         preset("rubber-backward-drift.toml"),
     ] {
         let sol = solve(&inp, 37.0).unwrap();
-        let cell = Cell::of(&inp.harmonics);
+        let cell = Cell::of(inp.harmonics());
         let n = 64;
         let mut d = 0.0;
         for j in 0..n {
@@ -430,11 +430,11 @@ fn bad_input_says_what_is_wrong() {
         solve(&i, 0.0).unwrap_err().to_string()
     };
     assert_eq!(
-        err(&|i| i.harmonics[0].wavenumber_x = 0.0),
+        err(&|i| waves(i)[0].wavenumber_x = 0.0),
         "invalid input: harmonic 1: the wave vector is zero (wavenumber_x = wavenumber_y = 0); a constant belongs in the mean pressure, not in a harmonic"
     );
     assert_eq!(
-        err(&|i| i.harmonics[0].amplitude = -1e-6),
+        err(&|i| waves(i)[0].amplitude = -1e-6),
         "invalid input: harmonic 1: amplitude = -0.000001 is out of range: allowed 0 <= A <= 1 (m)"
     );
     assert_eq!(
@@ -442,11 +442,22 @@ fn bad_input_says_what_is_wrong() {
         "invalid input: thickness = 0 is out of range: allowed 1e-9 <= h <= 1e3 (m) or inf"
     );
     assert_eq!(
-        err(&|i| i.harmonics.clear()),
+        err(&|i| waves(i).clear()),
         "invalid input: the punch has no harmonics: add at least one (amplitude, wavenumbers, phases)"
     );
     assert_eq!(
-        err(&|i| i.harmonics.push(i.harmonics[0])),
+        err(&|i| {
+            let first = i.harmonics()[0];
+            waves(i).push(first)
+        }),
         "invalid input: harmonics 1 and 2 have the same wave vector: give each wave vector once"
     );
+}
+
+/// The harmonics of inputs made of harmonics, to edit.
+fn waves(i: &mut SpatialInputs) -> &mut Vec<Harmonic> {
+    match &mut i.shape {
+        PunchShape::Harmonics(h) => h,
+        PunchShape::Surface(_) => panic!("these inputs are harmonics"),
+    }
 }

@@ -12,7 +12,7 @@ use wearlab::physics::spatial::harmonic::Harmonic;
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::fixed_point;
 use wearlab::physics::spatial::partial::state::State;
-use wearlab::physics::spatial::{SpatialInputs, solve};
+use wearlab::physics::spatial::{PunchShape, SpatialInputs, solve};
 
 fn inputs(material: Material, mu: f64, tau0: f64, pbar: f64, h: Vec<Harmonic>) -> SpatialInputs {
     common::spatial(material, mu, tau0, 0.0, pbar, h)
@@ -198,7 +198,10 @@ fn a_wave_across_the_sliding_line_solves_like_one_along_it_without_friction() {
     let material = layer(1e7, 0.45, 5e-4);
     let along_x = inputs(material, 0.0, 0.0, 1e5, vec![cosine(1e-5, 2e-3)]);
     let mut along_y = along_x.clone();
-    let h = &mut along_y.harmonics[0];
+    let PunchShape::Harmonics(waves) = &mut along_y.shape else {
+        panic!("harmonics")
+    };
+    let h = &mut waves[0];
     (h.wavenumber_x, h.wavenumber_y, h.phase_x) = (0.0, h.wavenumber_x, PI / 2.0);
     let (sx, a) = state(&along_x, 128);
     let (sy, b) = state(&along_y, 128);

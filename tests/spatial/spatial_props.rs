@@ -52,7 +52,7 @@ use limits_strategy::{across, poisson};
 use wearlab::finite;
 use wearlab::physics::limits;
 use wearlab::physics::spatial::history::{dispersion, history};
-use wearlab::physics::spatial::{SpatialInputs, StateAt, evolutions, solve, state_at};
+use wearlab::physics::spatial::{PunchShape, SpatialInputs, StateAt, evolutions, solve, state_at};
 use wearlab::physics::{Spacing, SweepRange};
 
 fn harmonic() -> impl Strategy<Value = Harmonic> {
@@ -125,7 +125,7 @@ fn spatial_inputs() -> impl Strategy<Value = SpatialInputs> {
                 wear: k,
                 sliding_speed: v,
                 mean_pressure: pbar,
-                harmonics,
+                shape: PunchShape::Harmonics(harmonics),
             },
         )
 }

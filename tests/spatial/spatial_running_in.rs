@@ -41,7 +41,7 @@ fn go(setup: &Setup) -> RunningIn {
 }
 
 fn decay_rate(i: &SpatialInputs) -> f64 {
-    evolution(&i.material, &i.friction, i.wear_rate(), &i.harmonics[0]).decay_rate
+    evolution(&i.material, &i.friction, i.wear_rate(), &i.harmonics()[0]).decay_rate
 }
 
 #[test]
@@ -151,7 +151,7 @@ fn stepped_wear_in_complete_contact_follows_the_closed_form() {
             &input.material,
             &input.friction,
             input.wear_rate(),
-            &input.harmonics[0],
+            &input.harmonics()[0],
         );
         assert_eq!(ev.drift_velocity > 0.0, forward);
         let setup = Setup::new(&input, 64).unwrap();

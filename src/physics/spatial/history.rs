@@ -30,7 +30,7 @@ pub fn history(
         .map(|&t| solve_with(inputs, evolutions, t))
         .collect();
     History {
-        amplitudes: (0..inputs.harmonics.len())
+        amplitudes: (0..inputs.harmonics().len())
             .map(|n| {
                 sols.iter()
                     .map(|s| s.harmonics[n].state.amplitude)
@@ -99,7 +99,7 @@ pub struct Dispersion {
 /// harmonics, for wave vectors at 0, 45 and 75 degrees to the sliding line.
 pub fn dispersion(inputs: &SpatialInputs, points: usize) -> Dispersion {
     let h = inputs.material.thickness;
-    let ks = inputs.harmonics.iter().map(Harmonic::wavenumber);
+    let ks = inputs.harmonics().iter().map(Harmonic::wavenumber);
     let (k_lo, k_hi) = ks.fold((f64::INFINITY, 0.0f64), |(a, b), k| (a.min(k), b.max(k)));
     let scaled = h.is_finite();
     let unit = if scaled { h } else { 1.0 };

@@ -21,8 +21,10 @@ pub mod state;
 pub mod surface;
 
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 use crate::physics::spatial::harmonic::{Evolution, Harmonic, HarmonicState, evolution};
+use crate::physics::spatial::surface::{Surface, SurfaceShape};
 use crate::physics::{Friction, Material, SolveError, limits, validate_common};
 
 pub use state::{SpatialState, StateAt, state_at};
@@ -40,8 +42,18 @@ pub struct SpatialInputs {
     pub sliding_speed: f64,
     /// Mean pressure pbar [Pa] (load per unit area), > 0.
     pub mean_pressure: f64,
-    /// The harmonics of the punch shape at t = 0.
-    pub harmonics: Vec<Harmonic>,
+    /// The punch's shape at t = 0.
+    pub shape: PunchShape,
+}
+
+/// The punch's shape at t = 0: harmonics (1.6), or a periodic height map
+/// (docs/physics/spatial-surface.md) solved on its own grid.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PunchShape {
+    /// A sum of harmonics A sin(wx x + rho_x) sin(wy y + rho_y).
+    Harmonics(Vec<Harmonic>),
+    /// A height map and its source (shared: a map is up to 1024 x 1024 heights).
+    Surface(Arc<SurfaceShape>),
 }
 
 impl SpatialInputs {
@@ -50,7 +62,24 @@ impl SpatialInputs {
         self.wear * self.sliding_speed
     }
 
-    /// Checks every field (see `physics::limits`).
+    /// The harmonics of the shape (none for a height map).
+    pub fn harmonics(&self) -> &[Harmonic] {
+        match &self.shape {
+            PunchShape::Harmonics(h) => h,
+            PunchShape::Surface(_) => &[],
+        }
+    }
+
+    /// The height map of the shape (None for harmonics).
+    pub fn surface(&self) -> Option<&Surface> {
+        match &self.shape {
+            PunchShape::Harmonics(_) => None,
+            PunchShape::Surface(s) => Some(&s.surface),
+        }
+    }
+
+    /// Checks every field (see `physics::limits`); a height map was checked when it was made
+    /// (`Surface::new`).
     pub fn validate(&self) -> Result<(), SolveError> {
         validate_common(&self.material, &self.friction, self.wear)?;
         limits::check_all(&[
@@ -58,7 +87,10 @@ impl SpatialInputs {
             (&limits::MEAN_PRESSURE, "mean_pressure", self.mean_pressure),
         ])
         .map_err(SolveError::InvalidInput)?;
-        validate_harmonics(&self.harmonics)
+        match &self.shape {
+            PunchShape::Harmonics(h) => validate_harmonics(h),
+            PunchShape::Surface(_) => Ok(()),
+        }
     }
 }
 
@@ -168,7 +200,7 @@ pub fn deformation_friction(harmonics: &[HarmonicSolution]) -> f64 {
 /// The evolutions of all harmonics (the costly, time-independent stage).
 pub fn evolutions(inputs: &SpatialInputs) -> Vec<Evolution> {
     inputs
-        .harmonics
+        .harmonics()
         .iter()
         .map(|h| evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h))
         .collect()
@@ -177,7 +209,7 @@ pub fn evolutions(inputs: &SpatialInputs) -> Vec<Evolution> {
 /// The solution at time t [s] from precomputed evolutions.
 pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -> SpatialSolution {
     let harmonics: Vec<HarmonicSolution> = inputs
-        .harmonics
+        .harmonics()
         .iter()
         .zip(evolutions)
         .map(|(h, ev)| HarmonicSolution {
@@ -201,10 +233,18 @@ pub fn solve_with(inputs: &SpatialInputs, evolutions: &[Evolution], time: f64) -
     }
 }
 
-/// Validates and solves at time t [s] >= 0; the solution has passed the physical checks
-/// (`spatial::checks`).
+/// Validates and solves at time t [s] >= 0 by the closed form of the harmonics; the solution has
+/// passed the physical checks (`spatial::checks`). A height map is refused: it has no harmonics,
+/// and `pipeline::solve` answers it on its grid.
 pub fn solve(inputs: &SpatialInputs, time: f64) -> Result<SpatialSolution, SolveError> {
     inputs.validate()?;
+    if inputs.surface().is_some() {
+        return Err(SolveError::InvalidInput(
+            "a height-map punch has no closed form of harmonics: pipeline::solve answers it on \
+             its grid"
+                .into(),
+        ));
+    }
     limits::TIME
         .check("time", time)
         .map_err(SolveError::InvalidInput)?;

@@ -16,9 +16,10 @@ use crate::physics::spatial::partial::running_in::{MAX_STEPS, run_in};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::result::{
-    ContactResult, FieldTable, HarmonicResult, Probe, SpatialResult, SweepResult,
+    ContactResult, FieldTable, HarmonicResult, Probe, SpatialResult, SurfaceResult, SweepResult,
 };
 use crate::physics::spatial::state::{SpatialState, StateAt};
+use crate::physics::spatial::surface::{Surface, statistics};
 use crate::physics::spatial::{self, SpatialInputs, SpatialSolution, solve_with, state_at};
 use crate::physics::{SolveError, limits};
 
@@ -53,7 +54,15 @@ pub fn solve(
     sweep: bool,
 ) -> Result<SpatialResult, SolveError> {
     inputs.validate()?;
-    spatial::validate_grid(&inputs.harmonics, at.grid)?;
+    if inputs.surface().is_some() {
+        // a height map is solved on its own grid, every mode by the same operators
+        limits::TIME
+            .check("time", at.time)
+            .map_err(SolveError::InvalidInput)?;
+        let setup = Setup::new(inputs, at.grid)?;
+        return on_the_cell(&setup, None, at, probes, sweep.then(|| sweep_pressures(at)));
+    }
+    spatial::validate_grid(inputs.harmonics(), at.grid)?;
     let evolutions = spatial::evolutions(inputs);
     let setup = Setup::new(inputs, at.grid);
     // with a period cell the fields come from its nodes: the closed-form field is not reported
@@ -68,7 +77,7 @@ pub fn solve(
     )?;
     let pressures = sweep.then(|| sweep_pressures(at));
     match setup {
-        Ok(setup) => on_the_cell(&setup, &closed, at, probes, pressures),
+        Ok(setup) => on_the_cell(&setup, Some(&closed), at, probes, pressures),
         Err(why) => {
             let initial = contact_at_start(inputs, &evolutions, &closed);
             if closed_form_holds(initial.complete, closed.contact.complete) {
@@ -86,10 +95,11 @@ pub fn solve(
     }
 }
 
-/// The result from the running-in on the period cell.
+/// The result from the running-in on the period cell; `closed` is the closed form of the
+/// harmonics (None for a height map: every value from the nodes).
 fn on_the_cell(
     setup: &Setup,
-    closed: &SpatialState,
+    closed: Option<&SpatialState>,
     at: &StateAt,
     probes: &[[f64; 2]],
     pressures: Option<Vec<f64>>,
@@ -106,40 +116,36 @@ fn on_the_cell(
     }
     let state = run.state_at(at.time)?;
     let o = state.outputs;
+    // a height map's state at t, when given, is complete (`RunningIn::state_at`)
     let from_start = closed_form_holds(
         complete_from_start(run.complete_from),
-        closed.contact.complete,
+        closed.is_none_or(|c| c.contact.complete),
     );
+    // the harmonics' closed form when it holds from the start (None for a height map)
+    let exact = closed.filter(|_| from_start);
     // the shape at t is still the harmonics' closed form (t = 0, no wear, or complete from t = 0):
     // the certified minimum of its p_cc holds, not only the nodes'
-    let closed_shape = from_start || at.time == 0.0 || run.stepping.is_none();
+    let closed_contact = closed
+        .filter(|_| from_start || at.time == 0.0 || run.stepping.is_none())
+        .map(|c| &c.contact);
     let friction = setup.inputs.friction;
-    let c = &closed.contact;
     let contact = ContactResult {
         complete: o.complete,
         fraction: o.contact_fraction,
         time_to_complete: run.time_to_complete,
         time_error: run.time_error(at.time),
-        min_pressure: if closed_shape {
-            c.min_pressure
-        } else {
-            o.min_pressure_complete
-        },
-        at: if closed_shape {
-            c.at
-        } else {
-            Some(o.min_pressure_complete_at)
-        },
-        lower_bound: c.lower_bound,
-        exact: closed_shape && c.exact,
-        not_certified: if closed_shape { c.not_certified } else { None },
-        complete_after: c.complete_after,
+        min_pressure: closed_contact.map_or(o.min_pressure_complete, |c| c.min_pressure),
+        at: closed_contact.map_or(Some(o.min_pressure_complete_at), |c| c.at),
+        lower_bound: closed.map_or(o.min_pressure_complete, |c| c.contact.lower_bound),
+        exact: closed_contact.is_some_and(|c| c.exact),
+        not_certified: closed_contact.and_then(|c| c.not_certified),
+        complete_after: closed.and_then(|c| c.contact.complete_after),
     };
     let shear = state.shear(&friction);
     let probes = probes
         .iter()
         .map(|&[x, y]| {
-            if from_start {
+            if let Some(closed) = exact {
                 exact_probe(&closed.solution, x, y)
             } else {
                 let k = state.grid.nearest(x, y);
@@ -154,14 +160,12 @@ fn on_the_cell(
         })
         .collect();
     // complete from the start: the global values of the closed form, exact (psi = 0 for mu = 0)
-    let sol = &closed.solution;
-    let (load, tangential, mu_star, psi) = if from_start {
-        (sol.load, sol.tangential, sol.mu_star, sol.psi)
-    } else {
-        (o.normal_force, o.holding_force, o.mu_star, o.psi)
+    let (load, tangential, mu_star, psi) = match exact.map(|c| &c.solution) {
+        Some(sol) => (sol.load, sol.tangential, sol.mu_star, sol.psi),
+        None => (o.normal_force, o.holding_force, o.mu_star, o.psi),
     };
     let sweep = match pressures {
-        Some(pressures) => Some(cell_sweep(setup, closed, &state, from_start, pressures)?),
+        Some(pressures) => Some(cell_sweep(setup, exact, &state, pressures)?),
         None => None,
     };
     Ok(SpatialResult {
@@ -180,29 +184,48 @@ fn on_the_cell(
         } else {
             "after complete contact"
         },
-        harmonics: harmonics(&closed.solution),
+        harmonics: closed.map_or_else(Vec::new, |c| harmonics(&c.solution)),
         contact,
         probes,
         sweep,
+        surface: setup.inputs.surface().map(|_| surface_at(&state)),
         field: nodal_fields(&state, shear),
     })
 }
 
-/// mu* against pbar for the shape at t on the cell: the closed form's values where it holds at
-/// the same pressure, the nodes' elsewhere.
+/// The statistics of the shape at t on the grid of a height map.
+fn surface_at(state: &State) -> SurfaceResult {
+    let g = state.grid;
+    let ly = if g.ny == 1 { 0.0 } else { g.ly };
+    let s = statistics(&Surface {
+        nx: g.nx,
+        ny: g.ny,
+        lx: g.lx,
+        ly,
+        heights: state.shape.clone(),
+    });
+    SurfaceResult {
+        rms_height: s.rms_height,
+        rms_slope: s.rms_slope,
+        cell: [g.lx, ly],
+    }
+}
+
+/// mu* against pbar for the shape at t on the cell: the closed form's values (`exact`: the
+/// harmonics' closed form when it holds from the start) at the same pressure, the nodes'
+/// elsewhere.
 fn cell_sweep(
     setup: &Setup,
-    closed: &SpatialState,
+    exact: Option<&SpatialState>,
     state: &State,
-    from_start: bool,
     pressures: Vec<f64>,
 ) -> Result<SweepResult, SolveError> {
     let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
         ControlFlow::Continue(())
     })?;
     let closed_sweep = |i: usize| {
-        let s = &closed.sweep;
-        (from_start && s.mean_pressure.get(i) == Some(&pressures[i]))
+        let s = &exact?.sweep;
+        (s.mean_pressure.get(i) == Some(&pressures[i]))
             .then(|| s.mu_star[i].map(|m| (s.load[i], m)))
             .flatten()
     };
@@ -270,6 +293,7 @@ fn closed_form(
             contact_fraction: None,
             complete_mean_pressure: c.exact.then_some(inputs.mean_pressure - c.min_pressure),
         }),
+        surface: None,
         field: FieldTable {
             x: f.x.clone(),
             y: f.y.clone(),

@@ -94,6 +94,18 @@ pub struct SweepResult {
     pub complete_mean_pressure: Option<f64>,
 }
 
+/// The statistics of a height-map punch at time t (docs/physics/spatial-surface.md section 3).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct SurfaceResult {
+    /// rms height of the shape U at t [m].
+    pub rms_height: f64,
+    /// rms slope along x of U at t [-] (spectral, the x-Nyquist line dropped).
+    pub rms_slope: f64,
+    /// The cell lx, ly [m] (ly = 0 for a profile; not in the JSON: the height-map file's).
+    #[serde(skip)]
+    pub cell: [f64; 2],
+}
+
 /// The fields on a grid over the cell, row-major (x fastest).
 #[derive(Clone, Debug, Default)]
 pub struct FieldTable {
@@ -145,6 +157,9 @@ pub struct SpatialResult {
     pub probes: Vec<Probe>,
     /// mu* against pbar (None when not asked for).
     pub sweep: Option<SweepResult>,
+    /// The punch surface at t, for a height-map punch (absent from the JSON for harmonics).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub surface: Option<SurfaceResult>,
     /// The fields over the cell (not in the JSON; the CSV of `wearlab solve`).
     #[serde(skip)]
     pub field: FieldTable,

@@ -42,8 +42,8 @@ pub struct StateAt {
     pub sweep: SweepRange,
 }
 
-/// The state at `at.time` from validated inputs and their evolutions (`spatial::evolutions`); the
-/// solution has passed the physical checks (`spatial::checks`).
+/// The state at `at.time` from validated inputs of harmonics and their evolutions
+/// (`spatial::evolutions`); the solution has passed the physical checks (`spatial::checks`).
 pub fn state_at(
     inputs: &SpatialInputs,
     evolutions: &[Evolution],
@@ -52,9 +52,16 @@ pub fn state_at(
     limits::TIME
         .check("time", at.time)
         .map_err(SolveError::InvalidInput)?;
+    if inputs.surface().is_some() {
+        return Err(SolveError::NoSolution(
+            "a height map has no closed form of harmonics: it is solved on its own grid \
+             (pipeline::solve)"
+                .into(),
+        ));
+    }
     let solution = solve_with(inputs, evolutions, at.time);
     checks::check(&solution)?;
-    let cell = Cell::of(&inputs.harmonics);
+    let cell = Cell::of(inputs.harmonics());
     let contact = contact::check(&solution, &cell);
     let sweep = pressure_sweep(
         inputs,

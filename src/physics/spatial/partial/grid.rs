@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use crate::physics::SolveError;
 use crate::physics::spatial::field::{Term, synthesize};
 use crate::physics::spatial::harmonic::Harmonic;
+use crate::physics::spatial::surface::Surface;
 use crate::physics::spatial::{Cell, Period};
 
 /// Fewest nodes per wavelength of any harmonic, along each axis (section 2: "well below N/2: at
@@ -62,6 +63,21 @@ impl Grid {
             )));
         }
         Ok(grid)
+    }
+
+    /// The grid of a height map: its own nodes over its cell. A profile (ny = 1) has no width;
+    /// its one row gets ly = lx, which only sets y_0 = 0 (no wave varies along y).
+    pub fn of_surface(surface: &Surface) -> Grid {
+        Grid {
+            nx: surface.nx,
+            ny: surface.ny,
+            lx: surface.lx,
+            ly: if surface.is_profile() {
+                surface.lx
+            } else {
+                surface.ly
+            },
+        }
     }
 
     /// Number of nodes nx ny.

@@ -21,10 +21,16 @@ use std::sync::Arc;
 
 use crate::physics::SolveError;
 use crate::physics::spatial::SpatialInputs;
+use crate::physics::spatial::harmonic::{Harmonic, evolution};
 use crate::physics::spatial::partial::active_set::{ContactProblem, solve};
 use crate::physics::spatial::partial::grid::Grid;
 use crate::physics::spatial::partial::operator::{Multipliers, Operator};
 use crate::physics::spatial::partial::state::{State, Work, evaluate};
+use crate::physics::spatial::surface;
+
+/// A height map's Fourier mode counts in the running-in's step sizes when its amplitude exceeds
+/// this fraction of the largest (the rest is the round-off of the transform).
+pub const MODE_THRESHOLD: f64 = 1e-9;
 
 /// The time-independent part of a partial-contact problem: the validated inputs, the grid, the
 /// operators' multipliers and the shape at t = 0.
@@ -46,14 +52,50 @@ impl Setup {
     /// tests go beyond them); callers with user input check `spatial::validate_grid` first.
     pub fn new(inputs: &SpatialInputs, side: usize) -> Result<Setup, SolveError> {
         inputs.validate()?;
-        let grid = Grid::new(&inputs.harmonics, side)?;
+        let (grid, initial_shape) = match inputs.surface() {
+            Some(surface) => (Grid::of_surface(surface), surface.heights.clone()),
+            None => {
+                let grid = Grid::new(inputs.harmonics(), side)?;
+                (grid, grid.sample(inputs.harmonics()))
+            }
+        };
         let multipliers = Multipliers::new(&inputs.material, inputs.friction.coefficient, grid);
         Ok(Setup {
             inputs: inputs.clone(),
             grid,
             multipliers: Arc::new(multipliers),
-            initial_shape: grid.sample(&inputs.harmonics),
+            initial_shape,
         })
+    }
+
+    /// The closed-form decay rates beta [1/s] (docs/physics/spatial.md section 3) of the modes
+    /// the shape holds at t = 0: its harmonics of nonzero amplitude, or the Fourier modes of a
+    /// height map above `MODE_THRESHOLD` of its largest.
+    pub fn decay_rates(&self) -> Vec<f64> {
+        let inputs = &self.inputs;
+        let rate = |h: &Harmonic| {
+            evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h).decay_rate
+        };
+        match inputs.surface() {
+            None => inputs
+                .harmonics()
+                .iter()
+                .filter(|h| h.amplitude > 0.0)
+                .map(rate)
+                .collect(),
+            Some(surface) => surface::mode_wave_vectors(surface, MODE_THRESHOLD)
+                .into_iter()
+                .map(|(qx, qy)| {
+                    rate(&Harmonic {
+                        amplitude: 1.0,
+                        wavenumber_x: qx.abs(),
+                        wavenumber_y: qy.abs(),
+                        phase_x: 0.0,
+                        phase_y: 0.0,
+                    })
+                })
+                .collect(),
+        }
     }
 
     /// A fresh operator (its own FFT buffers) on the shared multipliers.

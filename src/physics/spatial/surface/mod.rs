@@ -5,12 +5,14 @@
 
 mod generate;
 mod read;
+mod source;
 mod spectrum;
 mod statistics;
 
 pub use generate::{Amplitude, SelfAffine, SplitMix64, generate};
-pub use read::{MAX_FILE_BYTES, ReadError, read_csv, read_xyz};
-pub use spectrum::{PsdPoint, radial_psd};
+pub use read::{MAX_FILE_BYTES, ReadError, parse_csv, read_csv, read_xyz};
+pub use source::{SurfaceShape, SurfaceSource};
+pub use spectrum::{PsdPoint, mode_wave_vectors, radial_psd};
 pub use statistics::{Periodicity, Statistics, periodicity, statistics};
 
 /// Largest 2-D grid side (nodes along x or y when ny > 1).

@@ -37,17 +37,29 @@ impl fmt::Display for ReadError {
 
 impl std::error::Error for ReadError {}
 
+/// Where the lines come from: a file on disk, or a text already in memory (a bundled file),
+/// named by `path` in messages.
+#[derive(Clone, Copy)]
+enum Source<'a> {
+    Disk,
+    Text(&'a str),
+}
+
 /// The data lines of a file (1-based number, text), comments and blank lines skipped, each
 /// handed to `take` until it fails.
 fn each_line(
     path: &Path,
-    mut take: impl FnMut(usize, &str) -> Result<(), String>,
+    source: Source,
+    take: impl FnMut(usize, &str) -> Result<(), String>,
 ) -> Result<usize, ReadError> {
     let error = |line: usize, reason: String| ReadError {
         path: path.display().to_string(),
         line,
         reason,
     };
+    if let Source::Text(text) = source {
+        return lines_of(text.as_bytes(), path, take);
+    }
     let file = File::open(path).map_err(|e| error(0, format!("cannot be read: {e}")))?;
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     if size > MAX_FILE_BYTES {
@@ -59,7 +71,20 @@ fn each_line(
             ),
         ));
     }
-    let mut reader = BufReader::new(file.take(MAX_FILE_BYTES));
+    lines_of(BufReader::new(file.take(MAX_FILE_BYTES)), path, take)
+}
+
+/// The data lines of `reader`, as [`each_line`].
+fn lines_of(
+    mut reader: impl BufRead,
+    path: &Path,
+    mut take: impl FnMut(usize, &str) -> Result<(), String>,
+) -> Result<usize, ReadError> {
+    let error = |line: usize, reason: String| ReadError {
+        path: path.display().to_string(),
+        line,
+        reason,
+    };
     let mut text = String::new();
     let mut number = 0;
     loop {
@@ -93,9 +118,18 @@ fn number(cell: &str, height: bool) -> Result<f64, String> {
 
 /// The surface of a CSV grid over an lx x ly cell [m] (ly unused for a single row).
 pub fn read_csv(path: &Path, lx: f64, ly: f64) -> Result<Surface, ReadError> {
+    csv(path, Source::Disk, lx, ly)
+}
+
+/// As [`read_csv`], from the file's text in memory (`path` names it in messages).
+pub fn parse_csv(text: &str, path: &Path, lx: f64, ly: f64) -> Result<Surface, ReadError> {
+    csv(path, Source::Text(text), lx, ly)
+}
+
+fn csv(path: &Path, source: Source, lx: f64, ly: f64) -> Result<Surface, ReadError> {
     let mut heights = Vec::new();
     let (mut nx, mut ny) = (0, 0);
-    let last = each_line(path, |_, line| {
+    let last = each_line(path, source, |_, line| {
         let start = heights.len();
         for cell in line.split(',') {
             heights.push(number(cell, true)?);
@@ -136,7 +170,7 @@ pub fn read_csv(path: &Path, lx: f64, ly: f64) -> Result<Surface, ReadError> {
 pub fn read_xyz(path: &Path) -> Result<Surface, ReadError> {
     let mut points: Vec<[f64; 3]> = Vec::new();
     let limit = MAX_SIDE_2D * MAX_SIDE_2D;
-    let last = each_line(path, |_, line| {
+    let last = each_line(path, Source::Disk, |_, line| {
         let cells: Vec<&str> = line
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|c| !c.is_empty())

@@ -68,6 +68,24 @@ pub(crate) fn wave_vector(surface: &Surface, kx: usize, ky: usize) -> (f64, f64)
     (qx, qy)
 }
 
+/// The wave vectors (qx, qy) [rad/m] of the modes of `surface` whose amplitude |H_k| exceeds
+/// `relative` times the largest, one of each conjugate pair (qx > 0, or qx = 0 and qy >= 0).
+pub fn mode_wave_vectors(surface: &Surface, relative: f64) -> Vec<(f64, f64)> {
+    let h = spectrum(surface);
+    let largest = h.iter().map(|c| c.norm()).fold(0.0, f64::max);
+    let mut modes = Vec::new();
+    for ky in 0..surface.ny {
+        for kx in 0..surface.nx {
+            let (qx, qy) = wave_vector(surface, kx, ky);
+            let half = qx > 0.0 || (qx == 0.0 && qy > 0.0);
+            if half && h[ky * surface.nx + kx].norm() > relative * largest {
+                modes.push((qx, qy));
+            }
+        }
+    }
+    modes
+}
+
 /// One point of the radially averaged PSD.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PsdPoint {

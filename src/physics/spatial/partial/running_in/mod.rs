@@ -18,7 +18,6 @@ use serde::Serialize;
 use thiserror::Error;
 
 use crate::physics::SolveError;
-use crate::physics::spatial::harmonic::evolution;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::state::{Outputs, State};
 
@@ -76,17 +75,10 @@ pub struct Stepping {
 
 impl Stepping {
     /// The stepping of `setup` with `tolerance`, from the closed-form decay rates beta of the
-    /// harmonics of nonzero amplitude: a first step of `tolerance`/beta_max, over at most
+    /// shape's modes ([`Setup::decay_rates`]): a first step of `tolerance`/beta_max, over at most
     /// 100/beta_min and `MAX_STEPS` steps; None without wear.
     pub fn of(setup: &Setup, tolerance: f64) -> Option<Stepping> {
-        let inputs = &setup.inputs;
-        let rates: Vec<f64> = inputs
-            .harmonics
-            .iter()
-            .filter(|h| h.amplitude > 0.0)
-            .map(|h| evolution(&inputs.material, &inputs.friction, inputs.wear_rate(), h))
-            .map(|ev| ev.decay_rate)
-            .collect();
+        let rates = setup.decay_rates();
         let fastest = rates.iter().copied().fold(0.0, f64::max);
         let slowest = rates.iter().copied().fold(f64::INFINITY, f64::min);
         if rates.is_empty() || slowest <= 0.0 || !fastest.is_finite() {
