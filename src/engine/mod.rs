@@ -1,5 +1,5 @@
 //! The incremental engine behind the explorer: the library's pipeline stages
-//! (`plane::operating_point`, `validity::strip_check`, `sweep`, `spatial::evolutions`,
+//! (`plane::operating_point`, `strip_check::strip_check`, `sweep`, `spatial::evolutions`,
 //! `spatial::state_at`, `history`, `dispersion`, and on the period cell the running-in and
 //! mu*(pbar) of `spatial::partial`), each cached by the typed inputs it depends on, so an edit
 //! recomputes only what it touches; and two background workers on the newest request
@@ -17,8 +17,8 @@ mod validity;
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::sweep::{Sweep, sweep};
-use crate::physics::plane::validity::StripCheck;
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History, dispersion, history};

@@ -1,9 +1,9 @@
 //! The plane stage after the operating point: the shown model against the exact strip model
-//! (`plane::validity::strip_check`, a strip solve of a few milliseconds when the contact is at
+//! (`plane::strip_check::strip_check`, a strip solve of a few milliseconds when the contact is at
 //! most `CHEAP_STRIP_WIDTH` thicknesses wide), cached by the inputs and model like the point.
 
 use crate::engine::Engine;
-use crate::physics::plane::validity::{StripCheck, strip_check};
+use crate::physics::plane::strip_check::{StripCheck, strip_check};
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs};
 
 impl Engine {

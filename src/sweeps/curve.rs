@@ -3,7 +3,7 @@
 //! model's verdict at every point and the parameter values where it changes, located by
 //! bisection. Points run in parallel; a cancel flag is checked before each solve.
 //!
-//! The verdict is the library's own: `validity::check`'s `ok` for a plane model, the contact's
+//! The verdict is the library's own: `strip_check::verdict`'s `ok` for a plane model, the contact's
 //! `complete` for the spatial problem (where it is not, the contact is partial and solved through
 //! the running-in).
 
@@ -106,10 +106,11 @@ pub struct Curve {
     pub group: Option<QuantityKey>,
 }
 
-/// The verdict at a point: the model holds (plane), the contact is complete (spatial).
+/// The verdict at a point: the model holds (plane: `PlanePoint::verdict`, as `wearlab solve`
+/// gives it), the contact is complete (spatial).
 pub fn holds(point: &Point) -> bool {
     match point {
-        Point::Plane(p) => p.validity.ok,
+        Point::Plane(p) => p.verdict().ok,
         Point::Spatial(s) => s.result.contact.complete,
     }
 }

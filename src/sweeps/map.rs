@@ -3,12 +3,13 @@
 //! - theta = 0, between friction-dominated (theta > 0) and wear-dominated (theta < 0) contacts:
 //!   the sign of the wide model's theta (4.5) at the point (the preset model's when the wide model
 //!   has no solution there);
-//! - the validity boundaries of the wide and the narrow models: `validity::check`'s `ok` of each
-//!   model solved at the point (whatever the preset's model);
+//! - the validity boundaries of the wide and the narrow models: `strip_check::verdict`'s `ok` of
+//!   each model solved at the point (whatever the preset's model);
 //! - complete contact (spatial): the report's `contact.complete`.
 //!
 //! Each crossing between two computed points is located on its edge: in the final pass by
-//! bisection on the verdict for the plane lines (each step a wide or narrow solve, cheap), by
+//! bisection on the verdict for the plane lines (each step a wide or narrow solve, and a strip
+//! solve where the study's estimate doubts the model), by
 //! linear interpolation of the smallest complete-contact pressure (0 on the line) for the spatial
 //! one; in the coarse passes at the middle of the edge (plane) or by the same interpolation.
 //!

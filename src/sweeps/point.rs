@@ -2,9 +2,9 @@
 //! functions `wearlab solve` reports from, so that every number is bit for bit the one
 //! `wearlab solve --set` prints at the same inputs.
 //!
-//! - plane: `plane::solve` and `validity::check`, the stages of `plane::operating_point`; the
-//!   energy identity (its costly quadrature), the largest pressure and the wear at the tip are
-//!   computed only when a quantity asks for them.
+//! - plane: `plane::solve` and `validity::estimate`, the stages of `plane::operating_point`; the
+//!   verdict measured against the strip model, the energy identity (its costly quadrature), the
+//!   largest pressure and the wear at the tip are computed only when a quantity asks for them.
 //! - spatial: `spatial::pipeline::solve` (complete contact in closed form, partial contact
 //!   through the running-in), without the mean-pressure sweep, which no quantity reads.
 
@@ -12,7 +12,8 @@ use std::cell::OnceCell;
 
 use crate::physics::SolveError;
 use crate::physics::plane::energy::{Energy, Undefined, energy};
-use crate::physics::plane::validity::{Validity, check};
+use crate::physics::plane::strip_check::verdict;
+use crate::physics::plane::validity::{Validity, estimate};
 use crate::physics::plane::{self, PlaneSolution};
 use crate::physics::quadrature::tanh_sinh;
 use crate::physics::spatial::SpatialInputs;
@@ -25,8 +26,10 @@ use crate::preset::{Preset, Problem};
 pub struct PlanePoint {
     /// The solution.
     pub solution: PlaneSolution,
-    /// The model's validity verdict at this point.
+    /// The study's estimate of the model's validity at this point (`validity::estimate`); the
+    /// verdict is `verdict`.
     pub validity: Validity,
+    verdict: OnceCell<Validity>,
     energy: OnceCell<Result<Energy, Undefined>>,
 }
 
@@ -54,8 +57,9 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
         Problem::Plane => {
             let solution = plane::solve(&preset.plane_inputs(), preset.plane.model)?;
             Ok(Point::Plane(Box::new(PlanePoint {
-                validity: check(&solution),
+                validity: estimate(&solution),
                 solution,
+                verdict: OnceCell::new(),
                 energy: OnceCell::new(),
             })))
         }
@@ -68,6 +72,12 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
 }
 
 impl PlanePoint {
+    /// The verdict `wearlab solve` reports (`strip_check::verdict`: measured against the strip
+    /// model where the estimate doubts the model), computed on first use.
+    pub fn verdict(&self) -> &Validity {
+        self.verdict.get_or_init(|| verdict(&self.solution))
+    }
+
     /// The two sides of the energy identity (2.9), computed on first use.
     pub fn energy(&self) -> Result<Energy, Undefined> {
         *self.energy.get_or_init(|| energy(&self.solution))

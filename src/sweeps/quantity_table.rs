@@ -205,7 +205,7 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("energy.wear_loss", "wear loss", "N/m", "power spent on wear per unit sliding speed, psi - J (2.7)", |p| p.energy().map_or_else(|u| u.wear_loss.ok_or_else(|| u.note.to_string()), |e| Ok(e.wear_loss))),
     plane("energy.external", "T", "N/m", "work of the tangential force per unit sliding distance: friction loss + wear loss when I = J (2.8)-(2.9)", |p| Ok(p.energy().map_or_else(|u| u.external, |e| e.external))),
     plane("energy.contact_residual", "contact residual", "", "|psi - J - k int q2^2| relative to T: how well the solution meets the contact condition", |p| balance(p, |e| e.contact_residual)),
-    plane("validity.ok", "valid", "", "whether the model's validity check passes at this point (1 yes, 0 no)", |p| yes(p.validity.ok)).flag(),
+    plane("validity.ok", "valid", "", "whether the model holds at this point (1 yes, 0 no): measured against the strip model where the study's estimate doubts it, as wearlab solve reports it", |p| yes(p.verdict().ok)).flag(),
     plane("validity.contact_width_over_thickness", "(a+b)/h", "", "contact width over the thickness, 0 for the half-plane: the wide model is the limit of small values, the narrow (Winkler) model of large ones", |p| Ok(p.validity.contact_width_over_thickness)).group(),
     plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 when wear dominates, < 0 when friction does", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),
     plane("contact_width", "a+b", "m", "contact width", |p| Ok(p.solution.contact_width())).derived(),

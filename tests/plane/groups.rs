@@ -6,7 +6,7 @@ use crate::common;
 use std::f64::consts::PI;
 
 use common::{cosine, layer, plane, rel, spatial};
-use wearlab::physics::plane::validity::check;
+use wearlab::physics::plane::validity::estimate;
 use wearlab::physics::plane::{Model, solve};
 use wearlab::sweeps::groups::{self, Group};
 
@@ -24,7 +24,7 @@ fn hertz_width_and_load_groups() {
         Model::Wide,
     )
     .unwrap();
-    let g = groups::plane(&sol, &check(&sol));
+    let g = groups::plane(&sol, &estimate(&sol));
     let e_star = e / (1.0 - nu * nu);
     let a = (4.0 * r * p / (PI * e_star)).sqrt();
     let load_number = p / (PI * e_star / 2.0 * r);
@@ -65,7 +65,7 @@ fn theta_vanishes_where_friction_and_wear_groups_balance() {
         3.0 * PI * mu * chi / m,
     ] {
         let sol = solve(&plane(e, nu, h, mu, 0.0, k, r, p), Model::Wide).unwrap();
-        let g = groups::plane(&sol, &check(&sol));
+        let g = groups::plane(&sol, &estimate(&sol));
         assert!(rel(value(&g, "wear_number"), k * m) < 1e-14 || k == 0.0);
         assert!(rel(value(&g, "friction_number"), mu * chi) < 1e-14);
         let tan = (PI * value(&g, "theta")).tan();

@@ -15,7 +15,8 @@ use crate::validity_study::{E, H, R, deviation, grid, run, strip_at_width};
 use wearlab::physics::elastic::plane_modulus;
 use wearlab::physics::plane::criteria::{MU_STAR_TOLERANCE, WIDTH_TOLERANCE};
 use wearlab::physics::plane::strip::{collocate, kernels_for, nodes_for};
-use wearlab::physics::plane::validity::{against_strip, check};
+use wearlab::physics::plane::strip_check::against_strip;
+use wearlab::physics::plane::validity::estimate;
 use wearlab::physics::plane::{Model, solve};
 
 #[test]
@@ -49,7 +50,7 @@ fn the_estimate_bounds_the_measured_deviation() {
     ] {
         let (inputs, _) = strip_at_width(nu, mu, km, lambda);
         let sol = solve(&inputs, model).unwrap();
-        let (estimate, measured) = (check(&sol).estimated_error, against_strip(&sol).unwrap());
+        let (estimate, measured) = (estimate(&sol).estimated_error, against_strip(&sol).unwrap());
         assert!(
             measured.contact_width <= estimate.contact_width
                 && measured.mu_star_minus_mu <= estimate.mu_star_minus_mu,
@@ -64,7 +65,7 @@ fn the_reason_is_given_in_words() {
     // 47 = D/0.02 with D = 0.94 from the study's table, criteria::NARROW_OFFSET)
     let (inputs, strip) = strip_at_width(0.49, 0.0, 0.5, 10.0);
     let sol = solve(&inputs, Model::Narrow).unwrap();
-    let v = check(&sol);
+    let v = estimate(&sol);
     assert!(!v.ok && deviation(&sol, &strip).contact_width > WIDTH_TOLERANCE);
     assert!(
         v.failed_criteria[0]
@@ -74,7 +75,7 @@ fn the_reason_is_given_in_words() {
     );
     // without wear the Winkler model has no deformation friction at all
     let (inputs, _) = strip_at_width(0.3, 0.3, 0.0, 100.0);
-    let v = check(&solve(&inputs, Model::Narrow).unwrap());
+    let v = estimate(&solve(&inputs, Model::Narrow).unwrap());
     assert!(
         v.failed_criteria
             .iter()
@@ -82,7 +83,7 @@ fn the_reason_is_given_in_words() {
     );
     // and the wide model past its width
     let (inputs, _) = strip_at_width(0.3, 0.3, 0.5, 0.6);
-    let v = check(&solve(&inputs, Model::Wide).unwrap());
+    let v = estimate(&solve(&inputs, Model::Wide).unwrap());
     assert!(
         v.failed_criteria[0].starts_with("the wide model needs (a+b)/h < 0.36 at nu = 0.3"),
         "{:?}",

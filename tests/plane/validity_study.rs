@@ -9,7 +9,7 @@ use common::plane;
 use wearlab::physics::elastic::plane_modulus;
 use wearlab::physics::plane::criteria::MU_STAR_FLOOR;
 use wearlab::physics::plane::strip::{collocate, kernels_for, nodes_for, solution};
-use wearlab::physics::plane::validity::{Deviation, check};
+use wearlab::physics::plane::validity::{Deviation, estimate};
 use wearlab::physics::plane::{Model, PlaneInputs, PlaneSolution, solve};
 
 pub const E: f64 = 1e10;
@@ -47,7 +47,7 @@ pub fn run(cases: &[(f64, f64, f64, f64)], model: Model) -> (usize, (f64, String
         let Ok(sol) = solve(&inputs, model) else {
             continue;
         };
-        let validity = check(&sol);
+        let validity = estimate(&sol);
         if !validity.failed_criteria.is_empty() {
             continue;
         }

@@ -259,11 +259,37 @@ fn the_flat_pin_preset_shows_what_its_description_says() {
     let per_decade = excess(1e4) / excess(1e3);
     assert!((8.0..12.0).contains(&per_decade), "{per_decade}");
     // "some 50 coating thicknesses wide"; "the study behind the verdicts covers the parabola only"
-    let v = wearlab::physics::plane::validity::check(&sol);
+    let v = wearlab::physics::plane::validity::estimate(&sol);
     assert!((45.0..55.0).contains(&v.contact_width_over_thickness));
     assert!(
         v.warnings
             .iter()
             .any(|w| w.contains("only for the parabolic punch"))
     );
+}
+
+#[test]
+fn the_polymer_coating_preset_turns_to_a_warning_where_its_description_says() {
+    use wearlab::physics::plane::strip_check::{judged, strip_check, verdict};
+    use wearlab::physics::plane::validity::estimate;
+    let p = preset::bundled("polymer-coating.toml").unwrap().unwrap();
+    let model = p.plane.model;
+    let at = |load: f64| {
+        let sol = solve(&p.plane_inputs().with_load(load), model).unwrap();
+        let estimated = estimate(&sol);
+        let verdict = judged(&estimated, &strip_check(&sol), model);
+        (estimated, verdict)
+    };
+    // "turns to a warning once the contact is wider than about 0.4 coating thicknesses (P above
+    // ~2.1e5 N/m: ... mu* - mu is then more than 5 % off the exact strip solution, measured)"
+    let (_, below) = at(2.0e5);
+    let (_, above) = at(2.2e5);
+    assert!(below.ok && !above.ok, "{below:?} {above:?}");
+    let measured = above.measured_error.unwrap();
+    assert!(measured.mu_star_minus_mu > 0.05 && measured.contact_width < 0.02);
+    assert!((0.38..0.42).contains(&above.contact_width_over_thickness));
+    // "beyond the mu*(P) chart"; the verdict is the one `verdict` gives everywhere
+    assert!(p.plane.sweep.max < 2.0e5);
+    let sol = solve(&p.plane_inputs().with_load(2.2e5), model).unwrap();
+    assert_eq!(verdict(&sol), above);
 }

@@ -22,6 +22,7 @@ pub mod shape;
 pub mod sharp;
 pub mod spline;
 pub mod strip;
+pub mod strip_check;
 pub mod sweep;
 pub mod validity;
 pub mod wide;

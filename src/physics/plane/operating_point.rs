@@ -5,7 +5,8 @@
 use crate::physics::SolveError;
 use crate::physics::plane::energy::{Energy, Undefined, energy};
 use crate::physics::plane::profile::{Profile, profile};
-use crate::physics::plane::validity::{Validity, check};
+use crate::physics::plane::strip_check::verdict;
+use crate::physics::plane::validity::Validity;
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve};
 
 /// A solved operating point with everything derived from it.
@@ -32,7 +33,7 @@ pub fn operating_point(
     Ok(OperatingPoint {
         profile: profile(&solution, profile_points),
         energy: energy(&solution),
-        validity: check(&solution),
+        validity: verdict(&solution),
         solution,
     })
 }

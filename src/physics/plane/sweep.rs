@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
-use crate::physics::plane::{checks, general, scope, sharp, validity};
+use crate::physics::plane::{checks, general, scope, sharp, strip_check};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -20,8 +20,7 @@ pub struct Sweep {
     pub b: Vec<Option<f64>>,
     /// Q2 [N/m].
     pub normal_force: Vec<Option<f64>>,
-    /// Whether the model holds at the point (the verdict of `validity::check`, as at the
-    /// operating point).
+    /// Whether the model holds at the point (`strip_check::verdict`, as at the operating point).
     pub valid: Vec<Option<bool>>,
 }
 
@@ -70,7 +69,7 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
         normal_force: pick(|s| s.normal_force),
         valid: solutions
             .iter()
-            .map(|s| s.as_ref().map(|s| validity::check(s).ok))
+            .map(|s| s.as_ref().map(|s| strip_check::verdict(s).ok))
             .collect(),
         load,
     }

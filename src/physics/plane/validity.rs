@@ -1,16 +1,15 @@
 //! Whether an operating point lies where its model holds, in words (docs/physics/plane.md sections 3,
 //! 4, 6). The wide and narrow models are judged by how far they are from the strip model of any
 //! thickness, with the formulas of `criteria` (derived from a study against the strip model);
-//! `strip_check` measures it exactly when the strip model is cheap (the explorer shows it after
-//! the operating point).
+//! `strip_check` measures it exactly when the strip model is cheap.
 
 use serde::Serialize;
 
 use crate::phrase::Phrase;
 use crate::physics::plane::criteria::{
-    self, MU_STAR_FLOOR, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
+    self, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
 };
-use crate::physics::plane::{Model, PlaneSolution, solve};
+use crate::physics::plane::{Model, PlaneSolution};
 
 /// How far a model is from the strip model of any thickness, relative.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -46,6 +45,9 @@ pub struct Validity {
     /// The shown model's deviation from the strip model, estimated by the formulas of the study
     /// (at most 100 each; 0 for the strip model and for the wide model on a half-plane).
     pub estimated_error: Deviation,
+    /// The deviation measured against the strip model at the same inputs, where it was
+    /// (`strip_check::judged`: then it, not the estimate, decides `ok`); None where not measured.
+    pub measured_error: Option<Deviation>,
     /// The criteria of the study the model fails, in words; empty when it holds.
     pub failed_criteria: Vec<String>,
     /// Every warning in a few words, in the order of `warnings`, for the explorer's status
@@ -81,22 +83,10 @@ pub struct Reason {
     pub text: Phrase,
 }
 
-impl Reason {
-    /// Whether a measurement against the strip model contradicts this estimated reason (the
-    /// measured deviation in its aspect is within tolerance): the status then shows the
-    /// measurement alone.
-    pub fn refuted_by(&self, measured: &Deviation) -> bool {
-        match self.aspect {
-            Aspect::ContactWidth => measured.contact_width <= WIDTH_TOLERANCE,
-            Aspect::MuStarMinusMu => measured.mu_star_minus_mu <= MU_STAR_TOLERANCE,
-            Aspect::Both => measured.within_tolerance(),
-            Aspect::Unstudied | Aspect::Assumption => false,
-        }
-    }
-}
-
-/// Checks the operating point against the model's assumptions and the study's criteria.
-pub fn check(sol: &PlaneSolution) -> Validity {
+/// Checks the operating point against the model's assumptions and the study's criteria: the
+/// study's estimate of its deviation from the strip model, not measured (`strip_check::judged`
+/// measures it where that is cheap).
+pub fn estimate(sol: &PlaneSolution) -> Validity {
     let inputs = &sol.inputs;
     let h = inputs.material.thickness;
     let l = sol.contact_width();
@@ -157,6 +147,7 @@ pub fn check(sol: &PlaneSolution) -> Validity {
         contact_width_over_thickness: l_over_h,
         warnings,
         estimated_error,
+        measured_error: None,
         failed_criteria,
         reasons,
     }
@@ -301,130 +292,9 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phr
 }
 
 /// "1.2 % in contact width, 3.4 % in mu* - mu".
-fn percentages(d: &Deviation) -> Phrase {
+pub(super) fn percentages(d: &Deviation) -> Phrase {
     Phrase::whole(format!("{:.1} %", 100.0 * d.contact_width))
         .then_words("in contact width,")
         .then(format!("{:.1} %", 100.0 * d.mu_star_minus_mu))
         .then_words("in mu* - mu")
-}
-
-/// The largest (a+b)/h at which `against_strip` runs the strip model (about 400 nodes, a few
-/// milliseconds).
-pub const CHEAP_STRIP_WIDTH: f64 = 90.0;
-
-/// The shown model against the exact strip model, for the status.
-#[derive(Clone, Debug, PartialEq)]
-pub enum StripCheck {
-    /// The strip model is shown: it is the exact model, for any (a+b)/h.
-    Exact,
-    /// The wide model on a half-plane, where it is exact.
-    HalfPlane,
-    /// Measured against the strip model at the same inputs.
-    Measured(Deviation),
-    /// Not measured: why, and the deviation the study's formulas estimate (`Validity`).
-    Estimated {
-        /// Why the strip model was not run (too wide to be cheap, or it has no answer).
-        why: String,
-        /// The estimated deviation.
-        estimate: Deviation,
-    },
-}
-
-/// The shown solution against the strip model: measured when the strip model is cheap (a contact
-/// at most CHEAP_STRIP_WIDTH thicknesses wide), else estimated by the study's formulas.
-pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
-    let h = sol.inputs.material.thickness;
-    let lambda = sol.contact_width() / h;
-    let estimated = |why: String| StripCheck::Estimated {
-        why,
-        estimate: check(sol).estimated_error,
-    };
-    if sol.model == Model::Strip {
-        return StripCheck::Exact;
-    }
-    if !h.is_finite() {
-        return StripCheck::HalfPlane;
-    }
-    if lambda > CHEAP_STRIP_WIDTH {
-        return estimated(format!(
-            "the exact strip model is not run beyond (a+b)/h = {CHEAP_STRIP_WIDTH:.0}"
-        ));
-    }
-    let strip = match solve(&sol.inputs, Model::Strip) {
-        Ok(strip) => strip,
-        Err(e) => return estimated(format!("the exact strip model has no answer here: {e}")),
-    };
-    let mu = sol.inputs.friction.coefficient;
-    let floor = MU_STAR_FLOOR * strip.contact_width() / sol.inputs.radius();
-    StripCheck::Measured(Deviation {
-        contact_width: (sol.contact_width() / strip.contact_width() - 1.0).abs(),
-        mu_star_minus_mu: (sol.mu_star - strip.mu_star).abs()
-            / (strip.mu_star - mu).abs().max(floor),
-    })
-}
-
-/// The shown wide or narrow solution against the strip model at the same inputs, measured: None
-/// for the strip model itself, a half-plane, a contact wider than CHEAP_STRIP_WIDTH thicknesses,
-/// or where the strip model has no answer.
-pub fn against_strip(sol: &PlaneSolution) -> Option<Deviation> {
-    match strip_check(sol) {
-        StripCheck::Measured(deviation) => Some(deviation),
-        _ => None,
-    }
-}
-
-/// A relative deviation in percent, rounded up to 0.1 % (so that "within" stays true).
-fn within(x: f64) -> String {
-    format!("{:.1} %", (1000.0 * x).ceil() / 10.0)
-}
-
-impl StripCheck {
-    /// One line for the status: "wide: contact width within 0.1 %, mu* - mu within 0.4 % of the
-    /// exact strip solution"; "off by" where a deviation is outside the tolerances.
-    pub fn describe(&self, model: Model) -> Phrase {
-        let name = format!("{}:", model.name());
-        let lead = Phrase::whole(name);
-        match self {
-            StripCheck::Exact => lead.then_words("the exact model of the bonded strip"),
-            StripCheck::HalfPlane => lead.then_words("exact on a half-plane"),
-            StripCheck::Measured(d) if d.within_tolerance() => lead
-                .then_words("contact width within")
-                .then(format!("{},", within(d.contact_width)))
-                .then_words("mu* - mu within")
-                .then(within(d.mu_star_minus_mu))
-                .then_words("of the exact strip solution"),
-            StripCheck::Measured(d) => lead
-                .then_words("off the exact strip solution by")
-                .then_phrase(percentages(d)),
-            StripCheck::Estimated { why, estimate } => lead
-                .then_words("estimated off by")
-                .then_phrase(percentages(estimate))
-                .then_words(&format!("({why})")),
-        }
-    }
-
-    /// The same in at most 46 columns where a deviation is outside the tolerances, for a status
-    /// too small for the long line and the reasons: "off exact strip: width 227 %, mu*-mu 12 %"
-    /// ("est. off ..." for an estimate). None where `describe` is the only form.
-    pub fn describe_short(&self) -> Option<Phrase> {
-        let short = |x: f64| {
-            let percent = 100.0 * x;
-            if percent >= 10.0 {
-                format!("{percent:.0} %")
-            } else {
-                format!("{percent:.1} %")
-            }
-        };
-        let (lead, d) = match self {
-            StripCheck::Measured(d) if !d.within_tolerance() => ("off exact strip", d),
-            StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),
-            _ => return None,
-        };
-        Some(
-            Phrase::words(&format!("{lead}: width"))
-                .then(format!("{},", short(d.contact_width)))
-                .then("mu*-mu")
-                .then(short(d.mu_star_minus_mu)),
-        )
-    }
 }

@@ -250,7 +250,8 @@ fn a_parenthesis_of_prose_wraps_as_prose() {
 fn a_text_longer_than_its_rows_ends_after_a_whole_clause_or_word() {
     use super::{ASCII, PLAIN};
     use crate::physics::plane::Model;
-    use crate::physics::plane::validity::{Deviation, StripCheck};
+    use crate::physics::plane::strip_check::StripCheck;
+    use crate::physics::plane::validity::Deviation;
     use crate::tui::view::wrap_within;
     use crate::tui::view::wrapping::lines_of;
     // polymer-coating's status in groups at 80x24 ended "..., mu* - mu" (its value cut away)

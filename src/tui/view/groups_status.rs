@@ -5,7 +5,7 @@
 use crate::engine::{Output, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
-use crate::physics::plane::validity::StripCheck;
+use crate::physics::plane::strip_check::StripCheck;
 use crate::sweeps::groups::{self, Group};
 use ratatui::text::Line;
 

@@ -5,7 +5,7 @@
 use crate::engine::{Answer, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
-use crate::physics::plane::validity::StripCheck;
+use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::{OperatingPoint, Shape};
 use crate::units::format_si;
 use ratatui::Frame;

@@ -4,7 +4,7 @@
 use crate::engine::{Output, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
-use crate::physics::plane::validity::StripCheck;
+use crate::physics::plane::strip_check::StripCheck;
 use crate::units::format_si;
 use ratatui::text::Line;
 

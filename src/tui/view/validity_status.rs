@@ -1,11 +1,11 @@
 //! The validity part of the plane status: whether the shown model holds (the reasons in a few
 //! words when it does not), and how far it is from the exact strip model, measured by the engine
-//! after the operating point (`plane::validity::StripCheck`). Every word and number comes from
+//! after the operating point (`plane::strip_check::StripCheck`). Every word and number comes from
 //! the library; this module only lays them out.
 
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
-use crate::physics::plane::validity::StripCheck;
+use crate::physics::plane::strip_check::StripCheck;
 use ratatui::text::Line;
 
 use crate::tui::view::status_values::{number, prose};
@@ -25,8 +25,8 @@ pub fn lines(
     width: usize,
     room: usize,
 ) -> Vec<Line<'static>> {
-    let v = &p.validity;
     let model = p.solution.model;
+    let v = &p.validity;
     let mut head = Vec::new();
     if v.ok {
         let where_ = if p.solution.inputs.material.thickness.is_finite() {
@@ -41,15 +41,9 @@ pub fn lines(
             style.ok(),
         ));
     }
-    // an estimate the measurement refutes is not shown beside it
-    let measured = match check {
-        Some(StripCheck::Measured(d)) => Some(d),
-        _ => None,
-    };
     let warnings: Vec<Vec<Line>> = v
         .reasons
         .iter()
-        .filter(|r| !measured.is_some_and(|d| r.refuted_by(d)))
         .map(|r| {
             prose(
                 &Phrase::words("!").then_phrase(r.text.clone()),
