@@ -131,10 +131,12 @@ impl StripCheck {
 /// The verdict on a solution, the same wherever it is given (`wearlab solve`, its sweep, `wearlab
 /// sweep`, the explorer): the study's estimate where it says the model holds (the study found no
 /// case it passes that the strip model puts outside the tolerances: docs/models.md), else the
-/// measurement against the strip model where that is cheap (`judged`), else the estimate.
+/// measurement against the strip model where that is cheap (`judged`), else the estimate. Only
+/// the parabola with the linear law and no cap is measured: its strip solve takes milliseconds,
+/// the general strip solver's (other shapes and laws) up to seconds.
 pub fn verdict(sol: &PlaneSolution) -> Validity {
     let estimated = estimate(sol);
-    if estimated.ok {
+    if estimated.ok || !sol.inputs.is_classical() {
         return estimated;
     }
     judged(&estimated, &strip_check(sol), sol.model)
