@@ -93,7 +93,8 @@ pub fn read(path: &Path) -> Result<Table, DataError> {
                 format!("the file grows past the {MAX_FILE_BYTES} bytes a data file may have"),
             ));
         }
-        let line = text.trim();
+        // a byte-order mark, as spreadsheets write one, is no part of the first name
+        let line = text.trim().trim_start_matches('\u{feff}');
         if let Some(note) = line.strip_prefix('#') {
             notes.push(note.trim().to_string());
             continue;

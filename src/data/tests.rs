@@ -172,3 +172,9 @@ fn a_missing_file_says_so() {
         "{e}"
     );
 }
+
+#[test]
+fn a_byte_order_mark_is_no_part_of_the_first_name() {
+    let set = read_text("\u{feff}load [N/m],mu [-]\n1e3,0.3\n").unwrap();
+    assert_eq!(set.x.key.to_string(), "plane.load");
+}

@@ -197,6 +197,19 @@ pub fn fit(preset: &Preset, data: &DataSet, keys: &[Key]) -> Result<Fit, FitErro
     })
 }
 
+/// An interval cut to the parameter's allowed values (an interval of mu near 0 stops at 0).
+fn within_limit(key: Key, [low, high]: [f64; 2]) -> [f64; 2] {
+    let Some(limit) = key.param().limit() else {
+        return [low, high];
+    };
+    let floor = if limit.check("", 0.0).is_ok() {
+        limit.min.min(0.0)
+    } else {
+        limit.min
+    };
+    [low.max(floor), high.min(limit.max)]
+}
+
 /// The verdict on one parameter from its estimate (coordinate `c`), standard error, rank and
 /// profile range.
 fn judge(
@@ -247,7 +260,10 @@ fn judge(
         )
     });
     let interval = match (determined, se) {
-        (true, Some(se)) => [fr.value(c - quantile * se), fr.value(c + quantile * se)],
+        (true, Some(se)) => within_limit(
+            key,
+            [fr.value(c - quantile * se), fr.value(c + quantile * se)],
+        ),
         _ => span,
     };
     Estimate {

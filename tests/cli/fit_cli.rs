@@ -187,3 +187,27 @@ fn a_huge_data_file_is_refused_unread() {
     assert!(start.elapsed().as_secs_f64() < 5.0);
     assert!(Path::new(&path).exists());
 }
+
+/// A model without an answer at the data's loads: exit 3, the reason naming the data's line.
+#[test]
+fn a_model_without_answer_exits_3_and_says_where() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lab.csv");
+    std::fs::write(&path, "load [N/m],mu [-]\n1e2,0.3\n1e3,0.3\n1e4,0.3\n").unwrap();
+    let (code, out, err) = run(&[
+        "fit",
+        "presets/flat-pin-coating.toml",
+        "--set",
+        "plane.model=wide",
+        "--data",
+        path.to_str().unwrap(),
+        "--free",
+        "friction.coefficient",
+    ]);
+    assert_eq!(code, 3, "{out}{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.starts_with("error: the fit cannot be done: line 2: "),
+        "{err}"
+    );
+}
