@@ -36,6 +36,7 @@ pub const BUNDLED: &[Bundled] = bundled![
     "coating-thickness-sweep.toml",
     "friction-or-wear-map.toml",
     "flat-pin-coating.toml",
+    "rough-thin-layer.toml",
 ];
 
 /// The data files that bundled presets name (`spatial.surface.file`), built into the binary

@@ -7,3 +7,4 @@ mod params;
 mod preset_fuzz;
 mod preset_multibyte;
 mod presets;
+mod surfaces;

@@ -1,0 +1,50 @@
+//! The bundled height-map presets show what their descriptions say.
+
+use wearlab::physics::spatial::pipeline;
+use wearlab::preset;
+
+/// (a, b) agree to `rel` of b.
+fn near(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs()
+}
+
+#[test]
+fn the_thin_layer_wears_every_mode_at_one_rate_as_its_description_says() {
+    let p = preset::bundled("rough-thin-layer.toml").unwrap().unwrap();
+    let inputs = p.spatial_inputs();
+    let solve = |t: f64| {
+        let mut at = p.spatial_state_at();
+        at.time = t;
+        pipeline::solve(&inputs, &at, &[], false).unwrap()
+    };
+    let start = solve(0.0);
+    assert!(start.contact.complete);
+    assert!(near(start.contact.min_pressure, 22e6, 0.01));
+    assert!(near(start.max_pressure, 109e6, 0.005));
+    // the Winkler limit of docs/physics/spatial.md section 3: beta = k V (lambda + 2G)/h
+    let m = p.material;
+    let g = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
+    let lambda = 2.0 * g * m.poisson_ratio / (1.0 - 2.0 * m.poisson_ratio);
+    let beta = p.wear * p.spatial.sliding_speed * (lambda + 2.0 * g) / m.thickness;
+    assert!(near(beta, 6.73, 0.001));
+    let r = solve(p.spatial.time);
+    let (s0, s) = (start.surface.unwrap(), r.surface.unwrap());
+    println!(
+        "t = {}: rms {:.5e} m (Winkler {:.5e}), slope/rms {:.5e} -> {:.5e} 1/m, p_min {:.4e}",
+        r.time,
+        s.rms_height,
+        s0.rms_height * (-beta * r.time).exp(),
+        s0.rms_slope / s0.rms_height,
+        s.rms_slope / s.rms_height,
+        r.contact.min_pressure
+    );
+    assert!(near(s.rms_height, 5.21e-9, 0.001));
+    assert!(near(
+        s.rms_height,
+        s0.rms_height * (-beta * r.time).exp(),
+        0.001
+    ));
+    let ratio = |s: wearlab::physics::spatial::result::SurfaceResult| s.rms_slope / s.rms_height;
+    assert!(near(ratio(s), 2.56e4, 0.002) && near(ratio(s0), 2.56e4, 0.002));
+    assert!(near(r.contact.min_pressure, 50e6, 0.003));
+}
