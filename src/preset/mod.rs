@@ -4,6 +4,7 @@
 mod bundled;
 mod check;
 mod disk;
+mod explore_check;
 mod explore_section;
 mod file;
 #[cfg(test)]
@@ -16,6 +17,7 @@ mod lesson_tests;
 mod params;
 mod plausible;
 mod profile_csv;
+mod save_path;
 mod shape_check;
 mod surface_file;
 mod surface_key;
@@ -38,10 +40,11 @@ pub use bundled::{BUNDLED, BUNDLED_DATA, Bundled, bundled, default_preset};
 pub use check::{load, load_with_warnings, parse, parse_with_warnings};
 pub use disk::{Links, MAX_PRESET_BYTES, leads_into, write_atomically};
 pub use explore_section::Explore;
-pub use file::{SaveTarget, resolve_save_path, save, save_with, to_toml};
+pub use file::{save, save_with, to_toml};
 pub use key::Key;
 pub use lesson::{DEFAULT_TOLERANCE, Lesson, Question, Tolerance, grade};
 pub use params::{Access, PARAMS, Param};
+pub use save_path::{SaveTarget, resolve_save_path};
 
 /// The schema version this build reads and writes.
 pub const SCHEMA: i64 = 1;
