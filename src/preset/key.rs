@@ -142,13 +142,14 @@ impl Preset {
     fn harmonic_of(&self, key: Key) -> Result<usize, String> {
         let n = key.harmonic.unwrap_or(0);
         let count = self.spatial.harmonics.len();
-        if n < count {
-            Ok(n)
-        } else {
-            Err(format!(
-                "{key}: there is no harmonic {n} (the preset has {count}, numbered 0 to {})",
-                count - 1
-            ))
+        match count.checked_sub(1) {
+            Some(_) if n < count => Ok(n),
+            Some(last) => Err(format!(
+                "{key}: there is no harmonic {n} (the preset has {count}, numbered 0 to {last})"
+            )),
+            None => Err(format!(
+                "{key}: the preset has no harmonics (its punch is a height map, spatial.surface)"
+            )),
         }
     }
 
