@@ -16,6 +16,7 @@ mod lesson;
 mod map_cursor;
 mod monkey;
 mod partial;
+mod picker;
 mod replay;
 mod save_prompt;
 mod screens;

@@ -1,0 +1,134 @@
+//! The legend entries of a plot: its curves, markers, reference lines, shaded ranges and pins,
+//! each named as the legend shows it.
+
+use crate::tui::charts::range::{Frame, plotted};
+use crate::tui::charts::readout::short_name;
+use crate::tui::view::hidden::{self, Hidden};
+use crate::tui::view::legend::Entry;
+use crate::tui::view::theme::RenderOptions;
+use crate::units::format_si;
+
+/// The legend entries of a frame in a plot area `size`: its curves (those off the y range named
+/// with their range, those that cannot be seen with why), markers, reference lines, shaded
+/// ranges and pins.
+pub(super) fn entries(
+    frame: &Frame,
+    style: RenderOptions,
+    pins: &[String],
+    size: (u16, u16),
+) -> Vec<Entry> {
+    let plot = frame.plot;
+    let (xs, ys) = (plot.x.scale, frame.y_scale);
+    let hidden = hidden::hidden(frame, style, size);
+    let mut out: Vec<Entry> = plot
+        .series
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let ink = match hidden[i] {
+                Some(Hidden::Fails) => style.dim_ink(i),
+                _ => style.series_ink(i),
+            };
+            let drawn = plotted(&s.points, xs, ys);
+            let inside = drawn
+                .iter()
+                .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1));
+            let text = if drawn.is_empty() {
+                format!("{}: no values to draw", s.name)
+            } else if !inside {
+                let [lo, hi] = crate::tui::charts::range::bounds(s.points.iter().map(|p| p.1));
+                format!(
+                    "{}: off scale, {}..{}",
+                    s.name,
+                    format_si(lo, plot.y.unit),
+                    format_si(hi, plot.y.unit)
+                )
+            } else {
+                match hidden[i] {
+                    Some(Hidden::Fails) => format!("{}: fails over the whole range", s.name),
+                    Some(Hidden::Under(j)) => {
+                        format!("{}: under {}", s.name, short_name(&plot.series[j].name))
+                    }
+                    None => s.name.clone(),
+                }
+            };
+            Entry {
+                sample: style.sample(ink),
+                style: ink.style,
+                text,
+            }
+        })
+        .collect();
+    let marker = style.marker_ink();
+    out.extend(plot.markers.iter().map(|m| Entry {
+        sample: style.sample(marker),
+        style: marker.style,
+        text: m.name.clone(),
+    }));
+    let (_, horizontal) = style.mark_glyphs();
+    let marks_under = hidden::marks_under(frame, style, size);
+    out.extend(
+        plot.y_marks
+            .iter()
+            .zip(marks_under)
+            .map(|(m, under)| Entry {
+                sample: horizontal.to_string().repeat(2),
+                style: style.mark(),
+                text: match under {
+                    Some(j) => format!("{}: under {}", m.label, short_name(&plot.series[j].name)),
+                    None => m.label.clone(),
+                },
+            }),
+    );
+    // the dim parts that show (a curve off scale shows none): once, or without colour each
+    // curve's mark with its name ("'' narrow fails")
+    let shows = |d: &crate::tui::charts::Series| {
+        plotted(&d.points, xs, ys)
+            .iter()
+            .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1))
+    };
+    let mut owners: Vec<(usize, &str)> = (plot.dim.iter())
+        .filter(|(i, d)| shows(d) && hidden[*i] != Some(Hidden::Fails))
+        .map(|(i, d)| (*i, &*d.name))
+        .collect();
+    owners.sort_by_key(|o| o.0);
+    owners.dedup_by_key(|o| o.0);
+    let each = !style.braille() && plot.series.len() > 1 && owners.iter().all(|o| !o.1.is_empty());
+    // one entry for the dim parts of several curves: its sample in no curve's colour
+    let shared = !each && owners.len() > 1;
+    if !each {
+        owners.truncate(1);
+    }
+    out.extend(owners.into_iter().map(|(i, name)| {
+        let ink = style.dim_ink(i);
+        Entry {
+            sample: style.sample(ink),
+            style: if shared { style.mark() } else { ink.style },
+            text: if each {
+                name.to_string()
+            } else {
+                plot.dim_label.clone()
+            },
+        }
+    }));
+    let (shade_glyph, shade_style) = style.shaded();
+    out.extend(plot.shaded.iter().map(|s| Entry {
+        sample: shade_glyph.to_string().repeat(2),
+        style: shade_style,
+        text: s.label.clone(),
+    }));
+    out.extend(
+        pins.iter()
+            .enumerate()
+            .take(frame.pins.len())
+            .map(|(p, name)| {
+                let ink = style.pin_ink(p, 0);
+                Entry {
+                    sample: style.sample(ink),
+                    style: ink.style,
+                    text: name.clone(),
+                }
+            }),
+    );
+    out
+}
