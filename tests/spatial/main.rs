@@ -15,4 +15,7 @@ mod spatial_props;
 mod spatial_running_in;
 mod spatial_time_steps;
 mod surface;
+mod surface_area_load;
+mod surface_egg_box;
+mod surface_modes;
 mod surface_solve;
