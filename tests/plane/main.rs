@@ -17,4 +17,5 @@ mod plane_sharp;
 mod plane_strip;
 mod plane_validity;
 mod plane_wide;
+mod plane_yield;
 mod validity_study;

@@ -26,6 +26,7 @@ pub mod strip_check;
 pub mod sweep;
 pub mod validity;
 pub mod wide;
+pub mod yield_onset;
 
 use serde::{Deserialize, Serialize};
 
