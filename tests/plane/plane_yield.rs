@@ -9,8 +9,8 @@ use crate::common;
 use std::f64::consts::PI;
 
 use common::{plane, rel};
-use wearlab::physics::plane::yield_onset::{Stress, peak, stress};
-use wearlab::physics::plane::{Model, PlaneSolution, solve};
+use wearlab::physics::plane::yield_onset::{NotJudged, Stress, peak, stress};
+use wearlab::physics::plane::{Model, PlaneSolution, Shape, solve};
 
 const E: f64 = 1e10;
 const R: f64 = 0.05;
@@ -144,4 +144,18 @@ fn with_strong_friction_the_largest_stress_is_at_the_trailing_edge_on_the_surfac
         found.stress >= edge * (1.0 - 1e-6),
         "{found:?} against {edge}"
     );
+}
+
+#[test]
+fn sharp_corners_and_thin_layers_are_not_judged() {
+    let mut sharp = plane(E, 0.3, f64::INFINITY, 0.3, 0.0, 0.0, R, P);
+    sharp.shape = Shape::Flat {
+        half_width: 1e-3,
+        edge_radius: 0.0,
+    };
+    let sol = solve(&sharp, Model::Wide).unwrap();
+    assert_eq!(peak(&sol), Err(NotJudged::SharpCorners));
+    let thin = plane(E, 0.3, 1e-5, 0.3, 0.0, 1e-11, R, P);
+    let sol = solve(&thin, Model::Narrow).unwrap();
+    assert_eq!(peak(&sol), Err(NotJudged::ThinLayer));
 }

@@ -4,16 +4,17 @@
 //! surface or beneath it (Johnson (1985) sections 7.2 and 9.2: with friction the largest stress
 //! moves from below the surface to the surface at the trailing edge).
 //!
-//! The field is the half-plane's: exact for the wide model, an estimate on a strip of finite
-//! thickness, whose bonded base changes the field once h is not large against a + b.
+//! The field is the half-plane's: exact for the wide model on a half-plane, an estimate on a
+//! strip of finite thickness, whose bonded base changes the field once h is not large against
+//! a + b; not given under the narrow model, whose thin bonded layer is nothing like a half-plane.
 //!
 //! Axes as the solution's: x along the sliding direction (the leading edge b at +x, q1 > 0 acting
 //! on the strip in +x), z into the strip. Stresses in Pa, tension positive.
 
 use std::f64::consts::PI;
 
-use crate::physics::plane::PlaneSolution;
-use crate::physics::quadrature::{GaussRule, gauss_legendre, tanh_sinh};
+use crate::physics::plane::{Model, PlaneSolution};
+use crate::physics::quadrature::gauss_legendre;
 
 /// The in-plane stresses at a point [Pa], tension positive; the out-of-plane stress of plane
 /// strain is nu (sx + sz).
@@ -47,148 +48,235 @@ pub struct Peak {
     pub depth: f64,
 }
 
-/// Why a contact has no largest stress: its pressure is unbounded at a sharp corner of the punch,
-/// so the strip yields there under any load.
+/// Why the largest stress of a contact is not given.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Unbounded;
+pub enum NotJudged {
+    /// The pressure is unbounded at a sharp corner of the punch: the strip yields there under
+    /// any load.
+    SharpCorners,
+    /// The narrow (Winkler) model: a thin bonded layer, whose stresses are not a half-plane's.
+    ThinLayer,
+}
 
-/// Depths below which the surface formula serves, as a fraction of the contact width.
-const SURFACE: f64 = 1e-9;
-/// Quadrature segments over the contact at most (each at most half the depth long).
-const MOST_SEGMENTS: usize = 512;
-/// Grid of the search: x points over the contact and beyond, depths below the surface.
+impl NotJudged {
+    /// Why, in words.
+    pub fn reason(self) -> &'static str {
+        match self {
+            NotJudged::SharpCorners => {
+                "the pressure is unbounded at the punch's sharp corners: the strip yields there \
+                 under any load"
+            }
+            NotJudged::ThinLayer => {
+                "the narrow model's thin bonded layer is not a half-plane, whose stresses this \
+                 check computes"
+            }
+        }
+    }
+}
+
+/// Panels of the 8-point Gauss rule in the angle phi, s = -a + w (1 - cos phi)/2, over which
+/// the tractions are sampled once: the angle smooths their square-root ends.
+const PANELS: usize = 128;
+/// The shallowest depth of the field beneath the surface, in panel widths at the contact's
+/// middle (the widest): shallower, the kernels are narrower than the panels. Above it the
+/// surface stands for the layer.
+const SHALLOWEST: f64 = 2.0;
+/// Grid of the search: x points on the surface, x points and depths beneath it.
+const SURFACE_POINTS: usize = 121;
 const X_POINTS: usize = 61;
-const DEPTHS: usize = 30;
+const DEPTHS: usize = 24;
 /// Steps of the local search after the grid; each halves the step when it finds nothing better.
 const REFINE_STEPS: usize = 60;
 
-/// The stresses at (x, z) [m], z >= 0.
-pub fn stress(sol: &PlaneSolution, x: f64, z: f64) -> Stress {
-    let width = sol.contact_width();
-    if z <= SURFACE * width {
-        return surface(sol, x);
-    }
-    let (lo, hi) = (-sol.a, sol.b);
-    let n = ((width / (0.5 * z)).ceil() as usize).clamp(4, MOST_SEGMENTS);
-    let step = width / n as f64;
-    let (interior, edge) = (gauss_legendre(8), tanh_sinh(1.0 / 8.0));
-    let mut s = Stress {
-        sx: 0.0,
-        sz: 0.0,
-        txz: 0.0,
-    };
-    for i in 0..n {
-        let (s0, s1) = (lo + step * i as f64, (lo + step * (i + 1) as f64).min(hi));
-        let rule: &GaussRule = if i == 0 || i == n - 1 {
-            &edge
-        } else {
-            &interior
+/// The contact's tractions at the nodes of a fixed rule over [-a, b].
+struct Tractions {
+    /// Node positions [m].
+    s: Vec<f64>,
+    /// Quadrature weights [m].
+    w: Vec<f64>,
+    /// q2 [Pa] at the nodes.
+    p: Vec<f64>,
+    /// q1 [Pa] at the nodes.
+    q: Vec<f64>,
+    /// The shallowest depth [m] at which the rule resolves the field.
+    shallowest: f64,
+}
+
+impl Tractions {
+    fn of(sol: &PlaneSolution) -> Tractions {
+        let (lo, width) = (-sol.a, sol.contact_width());
+        let rule = gauss_legendre(8);
+        let dphi = PI / PANELS as f64;
+        let mut t = Tractions {
+            s: Vec::with_capacity(8 * PANELS),
+            w: Vec::with_capacity(8 * PANELS),
+            p: Vec::with_capacity(8 * PANELS),
+            q: Vec::with_capacity(8 * PANELS),
+            shallowest: SHALLOWEST * 0.5 * width * dphi,
         };
-        // Flamant: a line load p (compressive) and q (in +x) at t, dx = x - t, r^2 = dx^2 + z^2:
-        // normal  sx = -2p dx^2 z/(pi r^4), sz = -2p z^3/(pi r^4), txz = -2p dx z^2/(pi r^4);
-        // tangent sx = -2q dx^3/(pi r^4),   sz = -2q dx z^2/(pi r^4), txz = -2q dx^2 z/(pi r^4)
-        let (half, mid) = (0.5 * (s1 - s0), 0.5 * (s1 + s0));
-        for (u, w) in rule.nodes.iter().zip(&rule.weights) {
-            let t = mid + half * u;
-            let (p, q, dx) = (sol.pressure(t), sol.shear(t), x - t);
-            let weight = half * w / (dx * dx + z * z).powi(2);
-            s.sx += weight * dx * dx * (p * z + q * dx);
-            s.sz += weight * z * z * (p * z + q * dx);
-            s.txz += weight * dx * z * (p * z + q * dx);
+        for k in 0..PANELS {
+            let mid = (k as f64 + 0.5) * dphi;
+            for (u, weight) in rule.nodes.iter().zip(&rule.weights) {
+                let phi = mid + 0.5 * dphi * u;
+                let x = lo + 0.5 * width * (1.0 - phi.cos());
+                t.s.push(x);
+                t.w.push(0.5 * dphi * weight * 0.5 * width * phi.sin());
+                t.p.push(sol.pressure(x));
+                t.q.push(sol.shear(x));
+            }
+        }
+        t
+    }
+
+    /// The stresses at depth z >= `shallowest` beneath x: Flamant's line loads p (compressive)
+    /// and q (in +x) at s, dx = x - s, r^2 = dx^2 + z^2:
+    /// normal  sx = -2p dx^2 z/(pi r^4), sz = -2p z^3/(pi r^4), txz = -2p dx z^2/(pi r^4);
+    /// tangent sx = -2q dx^3/(pi r^4),   sz = -2q dx z^2/(pi r^4), txz = -2q dx^2 z/(pi r^4).
+    fn beneath(&self, x: f64, z: f64) -> Stress {
+        let (mut sx, mut sz, mut txz) = (0.0, 0.0, 0.0);
+        for i in 0..self.s.len() {
+            let dx = x - self.s[i];
+            let load = self.w[i] * (self.p[i] * z + self.q[i] * dx) / (dx * dx + z * z).powi(2);
+            sx += load * dx * dx;
+            sz += load * z * z;
+            txz += load * dx * z;
+        }
+        let c = -2.0 / PI;
+        Stress {
+            sx: c * sx,
+            sz: c * sz,
+            txz: c * txz,
         }
     }
-    let c = -2.0 / PI;
-    Stress {
-        sx: c * s.sx,
-        sz: c * s.sz,
-        txz: c * s.txz,
-    }
-}
 
-/// The stresses on the surface: sz = -q2, txz = -q1 under the contact (0 beyond it), and
-/// sx = -q2(x) - (2/pi) p.v. int q1(s)/(x - s) ds (Johnson (1985) section 2.4), the principal value as the regular integral of (q1(s) - q1(x))/(x - s) plus
-/// q1(x) ln((x + a)/(b - x)).
-fn surface(sol: &PlaneSolution, x: f64) -> Stress {
-    let (lo, hi) = (-sol.a, sol.b);
-    let inside = lo < x && x < hi;
-    let (p, q) = if inside {
-        (sol.pressure(x), sol.shear(x))
-    } else {
-        (0.0, 0.0)
-    };
-    let (interior, edge) = (gauss_legendre(8), tanh_sinh(1.0 / 8.0));
-    let regular = |s: f64| (sol.shear(s) - q) / (x - s);
-    let n = 64;
-    let step = (hi - lo) / n as f64;
-    let mut hilbert = 0.0;
-    for i in 0..n {
-        let (s0, s1) = (lo + step * i as f64, (lo + step * (i + 1) as f64).min(hi));
-        // the ends carry the edge behaviour of q1, and so does the segment holding x
-        let rule = if i == 0 || i == n - 1 || (s0..=s1).contains(&x) {
-            &edge
+    /// The stresses on the surface: sz = -q2, txz = -q1 under the contact (0 beyond it), and
+    /// sx = -q2(x) - (2/pi) p.v. int q1(s)/(x - s) ds (Johnson (1985) section 2.4), the
+    /// principal value as the regular integral of (q1(s) - q1(x))/(x - s) plus
+    /// q1(x) ln((x + a)/(b - x)).
+    fn surface(&self, sol: &PlaneSolution, x: f64) -> Stress {
+        let (lo, hi) = (-sol.a, sol.b);
+        let inside = lo < x && x < hi;
+        let (p, q) = if inside {
+            (sol.pressure(x), sol.shear(x))
         } else {
-            &interior
+            (0.0, 0.0)
         };
-        hilbert += rule.integrate(s0, s1, regular);
-    }
-    if inside {
-        hilbert += q * ((x - lo) / (hi - x)).ln();
-    }
-    Stress {
-        sx: -p - 2.0 / PI * hilbert,
-        sz: -p,
-        txz: -q,
+        let mut hilbert: f64 = (0..self.s.len())
+            .filter(|&i| self.s[i] != x)
+            .map(|i| self.w[i] * (self.q[i] - q) / (x - self.s[i]))
+            .sum();
+        if inside {
+            hilbert += q * ((x - lo) / (hi - x)).ln();
+        }
+        Stress {
+            sx: -p - 2.0 / PI * hilbert,
+            sz: -p,
+            txz: -q,
+        }
     }
 }
 
-/// The largest von Mises stress of the contact: a grid over x in [-a - w/5, b + w/5] (w = a + b)
-/// and depths from the surface to 1.5 w, then a bounded compass search around the grid's best.
-/// `Err(Unbounded)` for a punch with sharp corners.
-pub fn peak(sol: &PlaneSolution) -> Result<Peak, Unbounded> {
+/// The stresses at (x, z) [m]: on the surface for z = 0, beneath it for z at least a small
+/// fraction of the contact width (about w/40; shallower depths are taken at that depth).
+pub fn stress(sol: &PlaneSolution, x: f64, z: f64) -> Stress {
+    let t = Tractions::of(sol);
+    if z <= 0.0 {
+        t.surface(sol, x)
+    } else {
+        t.beneath(x, z.max(t.shallowest))
+    }
+}
+
+/// The largest von Mises stress of the contact: the surface at x in [-a - w/5, b + w/5]
+/// (w = a + b) and the edges, and beneath it from the shallowest depth resolved to 1.5 w; a
+/// bounded compass search around the best of each. Not judged for a punch with sharp corners
+/// or under the narrow model.
+pub fn peak(sol: &PlaneSolution) -> Result<Peak, NotJudged> {
     if sol.inputs.shape.is_sharp() {
-        return Err(Unbounded);
+        return Err(NotJudged::SharpCorners);
+    }
+    if sol.model == Model::Narrow {
+        return Err(NotJudged::ThinLayer);
     }
     let nu = sol.inputs.material.poisson_ratio;
+    let t = Tractions::of(sol);
     let w = sol.contact_width();
-    let vm = |x: f64, z: f64| stress(sol, x, z.max(0.0)).von_mises(nu);
-    let xs = (0..X_POINTS).map(|i| -sol.a - 0.2 * w + 1.4 * w * i as f64 / (X_POINTS - 1) as f64);
-    // the surface, the edges, then depths in geometric steps from w/400 to 1.5 w
-    let depths: Vec<f64> = std::iter::once(0.0)
-        .chain((0..DEPTHS).map(|k| w / 400.0 * 600f64.powf(k as f64 / (DEPTHS - 1) as f64)))
-        .collect();
-    let mut best = Peak {
+    let across =
+        |n: usize| (0..n).map(move |i| -sol.a - 0.2 * w + 1.4 * w * i as f64 / (n - 1) as f64);
+    let surface = |x: f64| t.surface(sol, x).von_mises(nu);
+    let beneath = |x: f64, z: f64| t.beneath(x, z.max(t.shallowest)).von_mises(nu);
+    let better = |best: Peak, candidate: Peak| {
+        if candidate.stress > best.stress {
+            candidate
+        } else {
+            best
+        }
+    };
+    let none = Peak {
         stress: f64::NEG_INFINITY,
         x: 0.0,
         depth: 0.0,
     };
-    let consider = |x: f64, z: f64, best: &mut Peak| {
-        let v = vm(x, z);
-        if v > best.stress {
-            *best = Peak {
-                stress: v,
-                x,
-                depth: z,
-            };
-        }
-    };
-    for x in xs.chain([-sol.a, sol.b]) {
-        for &z in &depths {
-            consider(x, z, &mut best);
+    let mut top = across(SURFACE_POINTS)
+        .chain([-sol.a, sol.b])
+        .map(|x| Peak {
+            stress: surface(x),
+            x,
+            depth: 0.0,
+        })
+        .fold(none, better);
+    let depths: Vec<f64> = (0..DEPTHS)
+        .map(|k| t.shallowest * (1.5 * w / t.shallowest).powf(k as f64 / (DEPTHS - 1) as f64))
+        .collect();
+    let mut deep = none;
+    for x in across(X_POINTS) {
+        for &depth in &depths {
+            deep = better(
+                deep,
+                Peak {
+                    stress: beneath(x, depth),
+                    x,
+                    depth,
+                },
+            );
         }
     }
-    // compass search: the step starts at a grid spacing and halves where no neighbour is larger
-    let mut h = 1.4 * w / (X_POINTS - 1) as f64;
+    // compass searches: the step starts at a grid spacing and halves where no neighbour is
+    // larger
+    let mut h = 1.4 * w / (SURFACE_POINTS - 1) as f64;
     for _ in 0..REFINE_STEPS {
-        let here = best;
-        for (dx, dz) in [(h, 0.0), (-h, 0.0), (0.0, h), (0.0, -h)] {
-            consider(here.x + dx, (here.depth + dz).max(0.0), &mut best);
+        let here = top;
+        for x in [here.x - h, here.x + h] {
+            top = better(
+                top,
+                Peak {
+                    stress: surface(x),
+                    x,
+                    depth: 0.0,
+                },
+            );
         }
-        if best == here {
+        if top == here {
             h *= 0.5;
         }
-        if h < 1e-7 * w {
-            break;
+    }
+    let mut h = 1.4 * w / (X_POINTS - 1) as f64;
+    for _ in 0..REFINE_STEPS {
+        let here = deep;
+        for (dx, dz) in [(h, 0.0), (-h, 0.0), (0.0, h), (0.0, -h)] {
+            let (x, depth) = (here.x + dx, (here.depth + dz).max(t.shallowest));
+            deep = better(
+                deep,
+                Peak {
+                    stress: beneath(x, depth),
+                    x,
+                    depth,
+                },
+            );
+        }
+        if deep == here {
+            h *= 0.5;
         }
     }
-    Ok(best)
+    Ok(better(top, deep))
 }
