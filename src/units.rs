@@ -173,7 +173,7 @@ pub fn prefix(exp: i32) -> Option<&'static str> {
 /// The decimal number `text` times 10^exp, read as one decimal ("2.5" and -6 read as "2.5e-6"),
 /// so that the result is the f64 nearest to the value typed, as the same value written in SI
 /// units gives: "2 mm" is the literal 2e-3 bit for bit. None when the exponent does not fit.
-fn shifted(text: &str, exp: i32) -> Option<f64> {
+pub(crate) fn shifted(text: &str, exp: i32) -> Option<f64> {
     let (mantissa, own) = match text.find(['e', 'E']) {
         Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
         None => (text, 0),

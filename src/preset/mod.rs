@@ -1,6 +1,7 @@
 //! Preset files (schema 1, TOML, SI units; `docs/presets.md`): the validated preset, its defaults and
 //! its errors. The file format is in `file`, the checks in `check`, the bundled list in `bundled`.
 
+mod as_written;
 mod bundled;
 mod check;
 mod disk;
@@ -17,10 +18,12 @@ mod lesson_tests;
 mod params;
 mod plausible;
 mod profile_csv;
+mod save_edited;
 mod save_path;
 mod shape_check;
 mod surface_file;
 mod surface_key;
+mod text_edit;
 mod wording;
 mod written;
 
@@ -44,6 +47,7 @@ pub use file::{save, save_with, to_toml};
 pub use key::Key;
 pub use lesson::{DEFAULT_TOLERANCE, Lesson, Question, Tolerance, grade};
 pub use params::{Access, PARAMS, Param};
+pub use save_edited::{Origin, save_edited, saved_text, with_data_files_of};
 pub use save_path::{SaveTarget, resolve_save_path};
 
 /// The schema version this build reads and writes.

@@ -7,7 +7,7 @@ pub use crate::tui::picker_entry::{PickerEntry, found};
 use crate::tui::text_field::TextField;
 
 use crate::engine::{Answer, Request};
-use crate::preset::{Preset, Problem, SaveTarget};
+use crate::preset::{Origin, Preset, Problem, SaveTarget};
 use ratatui::crossterm::event::KeyEvent;
 
 use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
@@ -37,6 +37,16 @@ pub struct Document {
 }
 
 impl Document {
+    /// The file it was opened from or last saved to, with the preset it held.
+    pub fn origin(&self) -> Option<Box<Origin>> {
+        self.path.as_ref().map(|path| {
+            Box::new(Origin {
+                path: path.clone(),
+                preset: self.opened.clone(),
+            })
+        })
+    }
+
     /// Whether the inputs differ from those opened or saved, the time apart: the time shown (t,
     /// and playing it) is where one looks, not an edit.
     pub fn edited(&self) -> bool {
@@ -258,6 +268,8 @@ pub enum Command {
         preset: Box<Preset>,
         /// Replace an existing file.
         overwrite: bool,
+        /// The file it was opened from or last saved to, whose text the save keeps.
+        origin: Option<Box<Origin>>,
     },
     /// Write this text to this file; refuse an existing file unless `overwrite`. Answered by
     /// `Exported` or `ExportExists`.

@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::preset::{self, BUNDLED, Links, Preset, SaveTarget};
+use crate::preset::{self, BUNDLED, Links, Origin, Preset, SaveTarget};
 
 use crate::tui::app::{Msg, PickerEntry, Places};
 
@@ -94,7 +94,13 @@ fn entry(
 /// which is created), asks about an existing file unless `overwrite`. A symbolic link to a file
 /// in one of the `shared` folders, or to a file the user may not replace, is replaced by the
 /// user's own copy, and the file stays as it was.
-pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool, shared: &[PathBuf]) -> Msg {
+pub fn save(
+    target: SaveTarget,
+    mut preset: Box<Preset>,
+    overwrite: bool,
+    origin: Option<Box<Origin>>,
+    shared: &[PathBuf],
+) -> Msg {
     let path = &target.path;
     let folder = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
@@ -118,8 +124,12 @@ pub fn save(target: SaveTarget, preset: Box<Preset>, overwrite: bool, shared: &[
         std::fs::create_dir_all(&folder)
             .map_err(|e| format!("cannot create {}: {e}", folder.display()))
             .and_then(|()| {
-                preset::save_with(&preset, path, links)
+                preset::save_edited(&preset, origin.as_deref(), path, links)
                     .map_err(|e| format!("{}: {e}", path.display()))
+            })
+            .map(|(saved, kept)| {
+                *preset = saved;
+                kept
             })
             .map(|kept| match kept {
                 Some(original) => format!(

@@ -167,7 +167,8 @@ impl<B: Backend> Loop<B> {
                         target,
                         preset,
                         overwrite,
-                    } => effects::save(target, preset, overwrite, &self.app.places.shared),
+                        origin,
+                    } => effects::save(target, preset, overwrite, origin, &self.app.places.shared),
                     Command::Export {
                         path,
                         text,

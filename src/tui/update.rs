@@ -60,7 +60,9 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
         Msg::Saved(target, preset, result) => {
             match result {
                 Ok(said) => {
-                    // edits made while the file was written stay unsaved
+                    // edits made while the file was written stay unsaved; the data files are
+                    // named from the folder saved to
+                    app.doc.preset = crate::preset::with_data_files_of(&app.doc.preset, &preset);
                     app.doc.opened = *preset;
                     app.doc.dirty = app.doc.edited();
                     app.say(said);
@@ -198,6 +200,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
                     target,
                     preset,
                     overwrite: true,
+                    origin: app.doc.origin(),
                 }]
             } else {
                 app.say("not saved");
@@ -349,6 +352,7 @@ fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
                 target,
                 preset: Box::new(app.doc.preset.clone()),
                 overwrite: false,
+                origin: app.doc.origin(),
             }]
         }
         Err(why) => {

@@ -3,6 +3,7 @@
 
 mod explore_section;
 mod hostile_save;
+mod kept_text;
 mod params;
 mod preset_fuzz;
 mod preset_multibyte;

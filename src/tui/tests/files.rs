@@ -150,7 +150,8 @@ fn a_preset_saved_after_a_nudge_holds_the_clean_value() {
         path: dir.path().join("nudged.toml"),
         create_folder: false,
     };
-    let saved = crate::tui::effects::save(target, Box::new(app.doc.preset.clone()), false, &[]);
+    let saved =
+        crate::tui::effects::save(target, Box::new(app.doc.preset.clone()), false, None, &[]);
     assert!(matches!(saved, Msg::Saved(_, _, Ok(_))), "{saved:?}");
     let text = std::fs::read_to_string(dir.path().join("nudged.toml")).unwrap();
     assert!(

@@ -10,6 +10,7 @@ mod charts;
 mod explore;
 mod files;
 mod groups;
+mod kept_save;
 mod keys;
 mod legend;
 mod lesson;

@@ -234,8 +234,9 @@ impl Monkey {
                         target,
                         preset,
                         overwrite,
+                        origin,
                     } => reports.push(if self.inside(&target.path) {
-                        effects::save(target, preset, overwrite, &[])
+                        effects::save(target, preset, overwrite, origin, &[])
                     } else {
                         Msg::Saved(target, preset, Err("outside the monkey's folder".into()))
                     }),

@@ -149,7 +149,8 @@ fn a_folder_that_cannot_be_written_is_named_with_the_file_not_a_temporary_one() 
         create_folder: false,
     };
     let preset = Box::new(bundled("polymer-coating.toml"));
-    let Msg::Saved(_, _, Err(why)) = crate::tui::effects::save(target, preset, false, &[]) else {
+    let Msg::Saved(_, _, Err(why)) = crate::tui::effects::save(target, preset, false, None, &[])
+    else {
         panic!("saved in {}", folder.display())
     };
     assert_eq!(
@@ -276,7 +277,8 @@ fn a_link_into_a_shared_folder_is_replaced_by_your_copy_and_the_original_stays()
         create_folder: true,
     };
     let preset = Box::new(bundled("polymer-coating.toml"));
-    let saved = crate::tui::effects::save(target, preset, true, std::slice::from_ref(&shared));
+    let saved =
+        crate::tui::effects::save(target, preset, true, None, std::slice::from_ref(&shared));
     let Msg::Saved(_, _, Ok(said)) = saved else {
         panic!("{saved:?}")
     };
