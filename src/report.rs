@@ -9,6 +9,7 @@ use crate::physics::plane::operating_point;
 use crate::physics::plane::profile::Profile;
 use crate::physics::plane::sweep::{Sweep, sweep};
 use crate::physics::plane::validity::Validity;
+use crate::physics::plane::yield_onset::{YieldCheck, judge};
 use crate::physics::plane::{PlaneSolution, Shape};
 use crate::preset::Preset;
 
@@ -27,6 +28,9 @@ pub struct PlaneReport {
     pub energy: Result<Energy, Undefined>,
     /// Validity flags.
     pub validity: Validity,
+    /// The yield check, when the preset gives a yield strength or hardness.
+    #[serde(rename = "yield", skip_serializing_if = "Option::is_none")]
+    pub yield_check: Option<YieldCheck>,
     /// Profiles on [-a, b].
     pub profile: Profile,
     /// mu*(P) over the preset's sweep.
@@ -38,12 +42,14 @@ pub fn plane_report(preset: &Preset, points: usize) -> Result<PlaneReport, Solve
     let inputs = preset.plane_inputs();
     let model = preset.plane.model;
     let point = operating_point(&inputs, model, points)?;
+    let yield_check = judge(&point.solution, preset.strength);
     Ok(PlaneReport {
         problem: "plane",
         shape: inputs.shape.clone(),
         solution: point.solution,
         energy: point.energy,
         validity: point.validity,
+        yield_check,
         profile: point.profile,
         sweep: sweep(&inputs, model, &preset.plane.sweep),
     })

@@ -168,14 +168,19 @@ fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
     let (format, points, time, probes) = (asked.format, asked.points, asked.time, asked.probes);
     match preset.problem {
         Problem::Plane => match report::plane_report(preset, points) {
-            Ok(r) => match format {
-                Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
-                Format::Csv => {
-                    let csv = report::profile_csv(&r.profile);
-                    let guard = finite::check_csv(&csv);
-                    print(&csv, guard)
+            Ok(r) => {
+                if let Some(y) = r.yield_check.as_ref().filter(|y| y.yields == Some(true)) {
+                    say(&format!("warning: {}", y.describe()));
                 }
-            },
+                match format {
+                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
+                    Format::Csv => {
+                        let csv = report::profile_csv(&r.profile);
+                        let guard = finite::check_csv(&csv);
+                        print(&csv, guard)
+                    }
+                }
+            }
             Err(e) => solver_failure(e),
         },
         Problem::Spatial => match spatial_report::spatial_report(preset, time, probes) {

@@ -150,6 +150,10 @@ pub const REFERENCE_PRESSURE: Limit = range("1e-3 <= p0 <= 1e12 (Pa)", 1e-3, 1e1
 /// Shear strength tau_max [Pa] capping the friction stress; inf is no cap.
 pub const SHEAR_STRENGTH: Limit =
     range("1e-3 <= tau_max <= 1e12 (Pa) or inf", 1e-3, 1e12).or_infinite();
+/// Yield strength Y [Pa] of the strip in tension (the onset of plastic flow).
+pub const YIELD_STRENGTH: Limit = range("1e3 <= Y <= 1e11 (Pa)", 1e3, 1e11);
+/// Indentation hardness H [Pa] of the strip.
+pub const HARDNESS: Limit = range("1e3 <= H <= 1e12 (Pa)", 1e3, 1e12);
 /// Load per unit length P [N/m], also the ends of the load sweep.
 pub const LINE_LOAD: Limit = range("1e-9 <= P <= 1e12 (N/m)", 1e-9, 1e12);
 /// Number of sweep points.

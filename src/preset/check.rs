@@ -9,6 +9,7 @@ use std::path::Path;
 use toml::Spanned;
 
 use crate::physics::limits::{self, Limit};
+use crate::physics::plane::yield_onset::Strength;
 use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::physics::{Friction, Material, Spacing, SweepRange};
@@ -141,6 +142,17 @@ pub fn parse_with_warnings(
         )?,
         thickness: ck.value(&mat.thickness, "material.thickness", &limits::THICKNESS)?,
     };
+    let optional = |v: &Option<Spanned<Written>>, key: &str, limit: &Limit| {
+        v.as_ref().map(|v| ck.value(v, key, limit)).transpose()
+    };
+    let strength = Strength {
+        yield_strength: optional(
+            &mat.yield_strength,
+            "material.yield_strength",
+            &limits::YIELD_STRENGTH,
+        )?,
+        hardness: optional(&mat.hardness, "material.hardness", &limits::HARDNESS)?,
+    };
     let friction = match &file.friction {
         Some(f) => Friction {
             coefficient: ck.value(&f.coefficient, "friction.coefficient", &limits::FRICTION)?,
@@ -188,6 +200,7 @@ pub fn parse_with_warnings(
         wear_exponent: laws.wear_exponent,
         reference_pressure: laws.reference_pressure,
         shear_strength: laws.shear_strength,
+        strength,
         plane,
         spatial,
         explore: None,

@@ -24,6 +24,11 @@ pub(super) struct FileMaterial {
     pub(super) youngs_modulus: Spanned<Written>,
     pub(super) poisson_ratio: Spanned<Written>,
     pub(super) thickness: Spanned<Written>,
+    /// Absent: no yield check (unless the hardness is given).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) yield_strength: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) hardness: Option<Spanned<Written>>,
 }
 
 #[derive(Deserialize, Serialize)]
@@ -202,6 +207,8 @@ pub fn to_toml(preset: &Preset) -> String {
             youngs_modulus: num(preset.material.youngs_modulus),
             poisson_ratio: num(preset.material.poisson_ratio),
             thickness: num(preset.material.thickness),
+            yield_strength: preset.strength.yield_strength.map(num),
+            hardness: preset.strength.hardness.map(num),
         })),
         friction: Some(FileFriction {
             coefficient: num(preset.friction.coefficient),

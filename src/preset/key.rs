@@ -122,6 +122,12 @@ fn shown(p: &Param, preset: &Preset) -> bool {
     match p.key {
         "wear.exponent" | "wear.reference_pressure" => preset.wear_exponent != 1.0,
         "friction.shear_strength" => preset.shear_strength.is_finite(),
+        "material.yield_strength" => {
+            preset.problem == Problem::Plane && preset.strength.yield_strength.is_some()
+        }
+        "material.hardness" => {
+            preset.problem == Problem::Plane && preset.strength.hardness.is_some()
+        }
         // the parabola's radius: no input of another shape
         "plane.radius" => preset.plane.shape.is_none(),
         _ => true,

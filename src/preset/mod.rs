@@ -33,6 +33,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
+use crate::physics::plane::yield_onset::Strength;
 use crate::physics::plane::{Model, PlaneInputs, Shape, WearLaw};
 use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::surface::SurfaceShape;
@@ -130,6 +131,9 @@ pub struct Preset {
     pub reference_pressure: Option<f64>,
     /// Shear strength tau_max [Pa] capping the friction stress, inf (no cap) by default.
     pub shear_strength: f64,
+    /// The strip's yield strength or hardness (`material.yield_strength`, `material.hardness`),
+    /// which enable the plane problem's yield check; neither by default.
+    pub strength: Strength,
     /// The plane problem (defaults when the file has no `[plane]`).
     pub plane: PlaneSection,
     /// The spatial problem (defaults when the file has no `[spatial]`).

@@ -21,10 +21,12 @@ pub enum Step {
 
 /// The nudge of each parameter, by preset key (`N` for the harmonic's index).
 #[rustfmt::skip]
-pub const STEPS: [(&str, Step); 30] = [
+pub const STEPS: [(&str, Step); 32] = [
     ("material.youngs_modulus", Step::Log { seed: 1e9 }),
     ("material.poisson_ratio", Step::Linear { step: 0.01 }),
     ("material.thickness", Step::Log { seed: 1e-3 }),
+    ("material.yield_strength", Step::Log { seed: 1e8 }),
+    ("material.hardness", Step::Log { seed: 3e8 }),
     ("friction.coefficient", Step::Linear { step: 0.01 }),
     ("friction.adhesion", Step::Log { seed: 1e4 }),
     ("friction.shear_strength", Step::Log { seed: 1e7 }),

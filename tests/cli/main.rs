@@ -14,3 +14,4 @@ mod quantities;
 mod shapes_cli;
 mod solve_output;
 mod surface_cli;
+mod yield_cli;

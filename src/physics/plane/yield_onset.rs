@@ -13,8 +13,11 @@
 
 use std::f64::consts::PI;
 
+use serde::Serialize;
+
 use crate::physics::plane::{Model, PlaneSolution};
 use crate::physics::quadrature::gauss_legendre;
+use crate::units::format_si;
 
 /// The in-plane stresses at a point [Pa], tension positive; the out-of-plane stress of plane
 /// strain is nu (sx + sz).
@@ -279,4 +282,105 @@ pub fn peak(sol: &PlaneSolution) -> Result<Peak, NotJudged> {
         }
     }
     Ok(better(top, deep))
+}
+
+/// What the strip's yield stress is known from: its yield strength, else its hardness.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Strength {
+    /// Yield strength Y [Pa] in tension, when given.
+    pub yield_strength: Option<f64>,
+    /// Indentation hardness H [Pa], when given.
+    pub hardness: Option<f64>,
+}
+
+impl Strength {
+    /// The yield stress [Pa] and where it comes from: Y when given, else H/3 (Tabor (1951): the
+    /// hardness of a plastically rigid solid is about three times its yield stress); None when
+    /// neither is given.
+    pub fn yield_stress(self) -> Option<(f64, &'static str)> {
+        match (self.yield_strength, self.hardness) {
+            (Some(y), _) => Some((y, "yield_strength")),
+            (None, Some(h)) => Some((h / 3.0, "hardness / 3")),
+            (None, None) => None,
+        }
+    }
+}
+
+/// The yield check of a contact: its largest von Mises stress against the yield stress.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct YieldCheck {
+    /// The yield stress Y [Pa] judged against.
+    pub strength: f64,
+    /// Where Y comes from: "yield_strength", or "hardness / 3".
+    pub basis: &'static str,
+    /// The largest von Mises stress [Pa]; null where it is not judged (`note` says why).
+    pub von_mises_max: Option<f64>,
+    /// von_mises_max / Y (dimensionless); null where not judged.
+    pub ratio: Option<f64>,
+    /// x [m] of the largest stress (the solution's moving frame); null where not judged.
+    pub x: Option<f64>,
+    /// Depth [m] of the largest stress below the strip's surface (0: on it); null where not
+    /// judged.
+    pub depth: Option<f64>,
+    /// Whether the strip yields: the largest stress reaches Y, or the pressure is unbounded at
+    /// sharp corners; null under the narrow model.
+    pub yields: Option<bool>,
+    /// Why the largest stress is not given, where it is not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<&'static str>,
+}
+
+/// The yield check of a solution when the strength is known.
+pub fn judge(sol: &PlaneSolution, strength: Strength) -> Option<YieldCheck> {
+    let (y, basis) = strength.yield_stress()?;
+    let check = match peak(sol) {
+        Ok(p) => YieldCheck {
+            strength: y,
+            basis,
+            von_mises_max: Some(p.stress),
+            ratio: Some(p.stress / y),
+            x: Some(p.x),
+            depth: Some(p.depth),
+            yields: Some(p.stress >= y),
+            note: None,
+        },
+        Err(why) => YieldCheck {
+            strength: y,
+            basis,
+            von_mises_max: None,
+            ratio: None,
+            x: None,
+            depth: None,
+            yields: (why == NotJudged::SharpCorners).then_some(true),
+            note: Some(why.reason()),
+        },
+    };
+    Some(check)
+}
+
+impl YieldCheck {
+    /// The check in words: whether the strip yields, the largest stress against Y and where it
+    /// is ("at the surface" or its depth).
+    pub fn describe(&self) -> String {
+        let y = format!("Y = {} ({})", format_si(self.strength, "Pa"), self.basis);
+        let (Some(stress), Some(ratio), Some(depth)) = (self.von_mises_max, self.ratio, self.depth)
+        else {
+            let why = self.note.unwrap_or("");
+            return match self.yields {
+                Some(true) => format!("the strip yields: {why}"),
+                _ => format!("yield not judged: {why}"),
+            };
+        };
+        let place = if depth == 0.0 {
+            "at the surface".to_string()
+        } else {
+            format!("{} below the surface", format_si(depth, "m"))
+        };
+        let stress = format_si(stress, "Pa");
+        if ratio >= 1.0 {
+            format!("the strip yields: von Mises stress {stress} {place} exceeds {y}")
+        } else {
+            format!("no yield: largest von Mises stress {stress} = {ratio:.2} Y {place}, {y}")
+        }
+    }
 }
