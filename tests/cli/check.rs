@@ -2,19 +2,7 @@
 //! the question's inputs; JSON; exit 2 for a preset without questions and a bad lesson, 3 for a
 //! question the solver cannot answer.
 
-use assert_cmd::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(assert_cmd::cargo::cargo_bin!("wearlab"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
+use crate::run::wearlab as run;
 
 /// `solve --output KEY --format json` at the preset with `settings`.
 fn solved(preset: &str, key: &str, settings: &[&str]) -> serde_json::Value {

@@ -1,21 +1,8 @@
 //! `wearlab fit`: the JSON keys of `docs/cli.md`, the fitted preset written and solved again, and
 //! the refusals of bad data files and requests (exit 2, `file:line: reason`).
 
+use crate::run::wearlab as run;
 use std::path::Path;
-
-use assert_cmd::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(assert_cmd::cargo::cargo_bin!("wearlab"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
 
 const PRESET: &str = "examples/lab/friction-against-load.toml";
 const DATA: &str = "examples/lab/friction-against-load.csv";

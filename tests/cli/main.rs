@@ -11,6 +11,7 @@ mod common;
 mod fit_cli;
 mod hostile_cli;
 mod quantities;
+mod run;
 mod shapes_cli;
 mod solve_output;
 mod surface_cli;

@@ -1,19 +1,7 @@
 //! `wearlab solve PRESET --output KEY[,KEY...]`: the chosen quantities, equal to the full
 //! report's; an unknown key is exit 2 naming the keys there are; a preset's warnings on stderr.
 
-use assert_cmd::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(assert_cmd::cargo::cargo_bin!("wearlab"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
+use crate::run::wearlab as run;
 
 const PRESET: &str = "presets/polymer-coating.toml";
 

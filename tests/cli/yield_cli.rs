@@ -3,9 +3,7 @@
 //! warning on stderr and still exits 0, and a preset without either has no `yield` block. The
 //! stresses themselves are verified in tests/plane/plane_yield.rs.
 
-use crate::common;
-
-use common::wearlab;
+use crate::run::wearlab;
 use serde_json::Value;
 
 /// A wide half-plane contact with mu = 0.4 (presets/friction-half-plane.toml).
