@@ -21,6 +21,7 @@ mod profile_csv;
 mod save_edited;
 mod save_path;
 mod shape_check;
+mod spatial_check;
 mod surface_file;
 mod surface_key;
 mod text_edit;
