@@ -17,7 +17,7 @@ use wearlab::physics::plane::criteria::{MU_STAR_TOLERANCE, WIDTH_TOLERANCE};
 use wearlab::physics::plane::strip::{collocate, kernels_for, nodes_for};
 use wearlab::physics::plane::strip_check::against_strip;
 use wearlab::physics::plane::validity::estimate;
-use wearlab::physics::plane::{Model, solve};
+use wearlab::physics::plane::{Model, Shape, solve};
 
 #[test]
 fn coarse_study() {
@@ -90,6 +90,32 @@ fn the_reason_is_given_in_words() {
         v.failed_criteria
     );
     assert!(v.estimated_error.mu_star_minus_mu > MU_STAR_TOLERANCE);
+    // a punch the study did not cover: each model says where it holds, the wide one on narrow
+    // contacts against h, the Winkler one on wide ones
+    for (model, h, holds) in [
+        (Model::Wide, 1e-2, "narrow against the thickness"),
+        (Model::Narrow, H, "many thicknesses wide"),
+    ] {
+        let mut power = plane(E, 0.3, h, 0.3, 0.0, 0.0, R, 1e3);
+        power.shape = Shape::Power {
+            radius: R,
+            exponent: 4.0,
+        };
+        let v = estimate(&solve(&power, model).unwrap());
+        assert!(
+            v.failed_criteria[0].starts_with(model_name(model))
+                && v.failed_criteria[0].contains(holds),
+            "{model:?}: {:?}",
+            v.failed_criteria
+        );
+    }
+}
+
+fn model_name(model: Model) -> &'static str {
+    match model {
+        Model::Wide => "the wide model",
+        _ => "the Winkler (narrow) model",
+    }
 }
 
 #[test]

@@ -170,14 +170,18 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phr
     if !inputs.is_classical() {
         // the study's formulas are fits to the parabola with the linear law and no cap
         let kind = inputs.shape.kind();
+        let holds = if sol.model == Model::Wide {
+            "where the contact is narrow against the thickness ((a+b)/h small)"
+        } else {
+            "where the contact is many thicknesses wide ((a+b)/h large)"
+        };
         failed.push((
             Aspect::Unstudied,
             Phrase::words(&format!("not judged for this punch and laws ({kind})")),
             format!(
                 "{name} is judged against the strip model only for the parabolic punch with the \
                  linear wear law and no shear cap (the validity study); its error for a {kind} \
-                 punch with these laws is not estimated: it holds where the contact is many \
-                 thicknesses wide"
+                 punch with these laws is not estimated: it holds {holds}"
             ),
         ));
         return (Deviation::NONE, failed);
