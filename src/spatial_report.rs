@@ -41,7 +41,7 @@ pub fn field_csv(result: &SpatialResult) -> String {
 /// surfaces"): `#` lines with the time and the cell, then one row per y grid line of heights [m]
 /// at 17 significant digits (each reads back to the same number). None for harmonics.
 pub fn surface_csv(result: &SpatialResult) -> Option<String> {
-    let surface = result.surface?;
+    let surface = result.surface.as_ref()?;
     let f = &result.field;
     let [lx, ly] = surface.cell;
     let mut out = format!(

@@ -15,4 +15,5 @@ mod run;
 mod shapes_cli;
 mod solve_output;
 mod surface_cli;
+mod surface_statistics_cli;
 mod yield_cli;

@@ -19,7 +19,7 @@ use crate::physics::spatial::result::{
     ContactResult, FieldTable, HarmonicResult, Probe, SpatialResult, SurfaceResult, SweepResult,
 };
 use crate::physics::spatial::state::{SpatialState, StateAt};
-use crate::physics::spatial::surface::{Surface, statistics};
+use crate::physics::spatial::surface::Surface;
 use crate::physics::spatial::{self, SpatialInputs, SpatialSolution, solve_with, state_at};
 use crate::physics::{SolveError, limits};
 
@@ -196,19 +196,13 @@ fn on_the_cell(
 /// The statistics of the shape at t on the grid of a height map.
 fn surface_at(state: &State) -> SurfaceResult {
     let g = state.grid;
-    let ly = if g.ny == 1 { 0.0 } else { g.ly };
-    let s = statistics(&Surface {
+    SurfaceResult::of(&Surface {
         nx: g.nx,
         ny: g.ny,
         lx: g.lx,
-        ly,
+        ly: if g.ny == 1 { 0.0 } else { g.ly },
         heights: state.shape.clone(),
-    });
-    SurfaceResult {
-        rms_height: s.rms_height,
-        rms_slope: s.rms_slope,
-        cell: [g.lx, ly],
-    }
+    })
 }
 
 /// mu* against pbar for the shape at t on the cell: the closed form's values (`exact`: the

@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use crate::physics::spatial::contact::NotCertified;
+use crate::physics::spatial::surface::{Surface, bearing_area, radial_psd, statistics};
 
 /// One harmonic at time t: its closed form (docs/physics/spatial.md section 3).
 #[derive(Clone, Debug, Serialize)]
@@ -95,15 +96,75 @@ pub struct SweepResult {
 }
 
 /// The statistics of a height-map punch at time t (docs/physics/spatial-surface.md section 3).
-#[derive(Clone, Copy, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct SurfaceResult {
     /// rms height of the shape U at t [m].
     pub rms_height: f64,
     /// rms slope along x of U at t [-] (spectral, the x-Nyquist line dropped).
     pub rms_slope: f64,
+    /// rms curvature along x of U at t [1/m] (spectral, the x-Nyquist line dropped).
+    pub rms_curvature: f64,
+    /// Skewness <U^3>/U_rms^3 [-] (positive: sharper peaks toward the layer).
+    pub skewness: f64,
+    /// Kurtosis <U^4>/U_rms^4 [-] (3 for Gaussian heights).
+    pub kurtosis: f64,
+    /// The bearing-area curve of U at t.
+    pub bearing_area: BearingArea,
+    /// The radially averaged power spectral density of U at t.
+    pub psd: Psd,
     /// The cell lx, ly [m] (ly = 0 for a profile; not in the JSON: the height-map file's).
     #[serde(skip)]
     pub cell: [f64; 2],
+}
+
+/// The bearing-area (Abbott-Firestone) curve: `BEARING_LEVELS` heights evenly spaced from the
+/// highest node down to the lowest.
+#[derive(Clone, Debug, Serialize)]
+pub struct BearingArea {
+    /// Height levels [m], positive toward the layer, from the mean (zero), decreasing.
+    pub height: Vec<f64>,
+    /// The fraction of the cell at or above each level [-] (1 at the lowest).
+    pub fraction: Vec<f64>,
+}
+
+/// The radially averaged PSD over `PSD_BINS` logarithmic bins of |q| (empty bins left out).
+#[derive(Clone, Debug, Serialize)]
+pub struct Psd {
+    /// Mean wavenumber |q| of each bin [rad/m], increasing.
+    pub wavenumber: Vec<f64>,
+    /// Mean C(q) of each bin: [m^4] for a map, [m^3] for a profile (docs/physics/spatial-surface.md
+    /// section 2).
+    pub psd: Vec<f64>,
+}
+
+/// The number of logarithmic bins of the reported PSD.
+pub const PSD_BINS: usize = 32;
+/// The number of levels of the reported bearing-area curve.
+pub const BEARING_LEVELS: usize = 21;
+
+impl SurfaceResult {
+    /// The statistics, bearing-area curve and PSD of `surface`.
+    pub fn of(surface: &Surface) -> SurfaceResult {
+        let s = statistics(surface);
+        let (height, fraction) = bearing_area(surface, BEARING_LEVELS)
+            .into_iter()
+            .map(|b| (b.height, b.fraction))
+            .unzip();
+        let (wavenumber, psd) = radial_psd(surface, PSD_BINS)
+            .into_iter()
+            .map(|p| (p.wavenumber, p.psd))
+            .unzip();
+        SurfaceResult {
+            rms_height: s.rms_height,
+            rms_slope: s.rms_slope,
+            rms_curvature: s.rms_curvature,
+            skewness: s.skewness,
+            kurtosis: s.kurtosis,
+            bearing_area: BearingArea { height, fraction },
+            psd: Psd { wavenumber, psd },
+            cell: [surface.lx, surface.ly],
+        }
+    }
 }
 
 /// The fields on a grid over the cell, row-major (x fastest).

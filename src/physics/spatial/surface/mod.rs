@@ -13,7 +13,9 @@ pub use generate::{Amplitude, SelfAffine, SplitMix64, generate};
 pub use read::{MAX_FILE_BYTES, ReadError, parse_csv, read_csv, read_xyz};
 pub use source::{SurfaceShape, SurfaceSource};
 pub use spectrum::{PsdPoint, mode_wave_vectors, radial_psd};
-pub use statistics::{Periodicity, Statistics, periodicity, statistics};
+pub use statistics::{
+    BearingPoint, Periodicity, Statistics, bearing_area, periodicity, statistics,
+};
 
 /// Largest 2-D grid side (nodes along x or y when ny > 1).
 pub const MAX_SIDE_2D: usize = 1024;

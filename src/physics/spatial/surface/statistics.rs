@@ -17,6 +17,8 @@ pub struct Statistics {
     /// <h^3>/h_rms^3 [-]: positive when the peaks (toward the layer) are sharper than the valleys;
     /// 0 for a flat surface.
     pub skewness: f64,
+    /// <h^4>/h_rms^4 [-]: 3 for Gaussian heights, 1.5 for a single cosine; 0 for a flat surface.
+    pub kurtosis: f64,
 }
 
 /// The statistics of `surface` (Parseval over its spectrum for the derivatives).
@@ -24,6 +26,7 @@ pub fn statistics(surface: &Surface) -> Statistics {
     let n = surface.heights.len() as f64;
     let mean_square = surface.heights.iter().map(|h| h * h).sum::<f64>() / n;
     let mean_cube = surface.heights.iter().map(|h| h * h * h).sum::<f64>() / n;
+    let mean_fourth = surface.heights.iter().map(|h| (h * h).powi(2)).sum::<f64>() / n;
     let spectrum = spectrum(surface);
     let (mut slope, mut curvature) = (0.0, 0.0);
     for ky in 0..surface.ny {
@@ -41,6 +44,11 @@ pub fn statistics(surface: &Surface) -> Statistics {
         rms_curvature: curvature.sqrt(),
         skewness: if rms_height > 0.0 {
             mean_cube / rms_height.powi(3)
+        } else {
+            0.0
+        },
+        kurtosis: if rms_height > 0.0 {
+            mean_fourth / mean_square.powi(2)
         } else {
             0.0
         },
@@ -127,4 +135,39 @@ pub fn periodicity(surface: &Surface) -> Periodicity {
         interior_step_y: rms(interior_y),
         rms_height: (surface.heights.iter().map(|h| h * h).sum::<f64>() / n).sqrt(),
     }
+}
+
+/// One point of the bearing-area (Abbott-Firestone) curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BearingPoint {
+    /// A height level [m], positive toward the layer (the mean is zero).
+    pub height: f64,
+    /// The fraction of the cell's nodes at or above that level [-]: the area a flat plane at that
+    /// height would cut through a rigid surface.
+    pub fraction: f64,
+}
+
+/// The bearing-area curve at `levels` heights evenly spaced from the highest node (fraction
+/// 1/(nx ny) or more) down to the lowest (fraction 1); a flat surface has one point, its common
+/// height with fraction 1.
+pub fn bearing_area(surface: &Surface, levels: usize) -> Vec<BearingPoint> {
+    let mut sorted = surface.heights.clone();
+    sorted.sort_by(|a, b| b.total_cmp(a));
+    let (top, bottom) = (sorted[0], sorted[sorted.len() - 1]);
+    let levels = if top > bottom { levels } else { levels.min(1) };
+    let n = sorted.len() as f64;
+    (0..levels)
+        .map(|k| {
+            // the last level is the lowest node itself, so that every node counts
+            let height = if k + 1 == levels {
+                bottom
+            } else {
+                top + (bottom - top) * k as f64 / (levels - 1) as f64
+            };
+            BearingPoint {
+                height,
+                fraction: sorted.partition_point(|&h| h >= height) as f64 / n,
+            }
+        })
+        .collect()
 }
