@@ -124,8 +124,9 @@ pub(super) struct FileSpatial {
     /// Absent: five of the slowest decay times (`Preset::auto_duration`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) duration: Option<Spanned<Written>>,
-    #[serde(default = "default_grid")]
-    pub(super) grid: Spanned<i64>,
+    /// Absent: the default section's; refused beside a height map, which has its own grid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) grid: Option<Spanned<i64>>,
     /// Absent: the default section's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) time_tolerance: Option<Spanned<Written>>,
@@ -135,10 +136,6 @@ pub(super) struct FileSpatial {
     pub(super) surface: Option<Spanned<surface_file::FileSurface>>,
     #[serde(default)]
     pub(super) harmonics: Vec<Spanned<FileHarmonic>>,
-}
-
-fn default_grid() -> Spanned<i64> {
-    plain(default_spatial_section().grid as i64)
 }
 
 #[derive(Deserialize, Serialize)]
@@ -298,7 +295,8 @@ fn spatial_file(sp: &SpatialSection) -> FileSpatial {
         sliding_speed: num(sp.sliding_speed),
         time: num(sp.time),
         duration: Some(num(sp.duration)),
-        grid: plain(sp.grid as i64),
+        // a height map is solved on its own grid: no spatial.grid beside it
+        grid: sp.surface.is_none().then(|| plain(sp.grid as i64)),
         // written only when it is not the default, so that saved presets stay as they were
         time_tolerance: (sp.time_tolerance != default_spatial_section().time_tolerance)
             .then(|| num(sp.time_tolerance)),

@@ -10,6 +10,7 @@ use crate::physics::limits;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::law_rules;
 use crate::preset::params::{Access, PARAMS, Param};
+use crate::preset::surface_set::{SURFACE_PREFIX, grid_beside_map};
 use crate::preset::{Preset, Problem};
 use crate::units::parse_si;
 
@@ -130,6 +131,8 @@ fn shown(p: &Param, preset: &Preset) -> bool {
         }
         // the parabola's radius: no input of another shape
         "plane.radius" => preset.plane.shape.is_none(),
+        // a height map is solved on its own grid
+        "spatial.grid" => preset.spatial.surface.is_none(),
         _ => true,
     }
 }
@@ -287,6 +290,9 @@ impl Preset {
                 shape.kind()
             ));
         }
+        if let (Some(map), "spatial.grid") = (&self.spatial.surface, key.param().key) {
+            return Err(grid_beside_map(&map.surface));
+        }
         Ok(key)
     }
 }
@@ -302,9 +308,11 @@ impl Preset {
             let (key, value) = setting.split_once('=').ok_or_else(|| {
                 format!("'{setting}' is not KEY=VALUE (e.g. material.thickness=10um)")
             })?;
-            self.key(key)
-                .and_then(|key| next.assign_text(key, value))
-                .map_err(|why| format!("{setting}: {why}"))?;
+            match key.trim().strip_prefix(SURFACE_PREFIX) {
+                Some(name) => next.set_surface_key(name, value),
+                None => self.key(key).and_then(|key| next.assign_text(key, value)),
+            }
+            .map_err(|why| format!("{setting}: {why}"))?;
         }
         next.check_rules()
             .map_err(|why| format!("the values set break a rule: {why}"))?;

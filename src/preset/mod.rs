@@ -24,6 +24,7 @@ mod shape_check;
 mod spatial_check;
 mod surface_file;
 mod surface_key;
+mod surface_set;
 mod text_edit;
 mod wording;
 mod written;

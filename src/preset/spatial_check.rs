@@ -8,6 +8,7 @@ use crate::physics::spatial::harmonic::Harmonic;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::check::Checker;
 use crate::preset::file::FileSpatial;
+use crate::preset::surface_set::grid_beside_map;
 use crate::preset::{
     PresetError, SpatialSection, default_pressure_sweep, default_spatial_section, plausible,
 };
@@ -91,13 +92,16 @@ impl Checker<'_> {
             }
             None => default_pressure_sweep(mean_pressure),
         };
-        let grid = self.count(&sp.grid, "grid", &limits::GRID)?;
+        let (grid, span) = match (&sp.grid, &surface) {
+            (Some(grid), Some(map)) => {
+                return Err(self.error(Some(grid.span()), grid_beside_map(&map.surface)));
+            }
+            (Some(grid), None) => (self.count(grid, "grid", &limits::GRID)?, grid.span()),
+            (None, _) => (default_spatial_section().grid, spatial.span()),
+        };
         validate_grid(&harmonics, grid).map_err(|e| {
             let why = e.to_string();
-            self.error(
-                Some(sp.grid.span()),
-                why.trim_start_matches("invalid input: "),
-            )
+            self.error(Some(span), why.trim_start_matches("invalid input: "))
         })?;
         let section = SpatialSection {
             mean_pressure,

@@ -15,5 +15,6 @@ mod run;
 mod shapes_cli;
 mod solve_output;
 mod surface_cli;
+mod surface_set_cli;
 mod surface_statistics_cli;
 mod yield_cli;
