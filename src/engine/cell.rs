@@ -10,6 +10,7 @@ use std::ops::ControlFlow;
 use std::sync::Arc;
 use std::time::Instant;
 
+use crate::engine::footprint::Footprint;
 use crate::engine::{Engine, HISTORY_POINTS, Proceed};
 use crate::physics::spatial::SpatialInputs;
 use crate::physics::spatial::partial::Setup;
@@ -78,6 +79,12 @@ pub(super) struct Run {
     stuck: Option<SolveError>,
 }
 
+impl Footprint for Run {
+    fn bytes(&self) -> usize {
+        self.running_in.held_bytes()
+    }
+}
+
 impl Run {
     fn over(&self) -> bool {
         self.stuck.is_some() || self.running_in.finished()
@@ -140,7 +147,13 @@ impl Engine {
         let run = match self.runs.get_mut(key) {
             Some(Ok(run)) => run,
             Some(Err(why)) => return Err(why.clone()),
-            None => unreachable!("inserted above"),
+            None => {
+                return Err(SolveError::NoSolution(format!(
+                    "the running-in on this grid needs more than the {} MiB the explorer keeps \
+                     for it: `wearlab solve` answers it",
+                    super::RUN_BYTES >> 20
+                )));
+            }
         };
         let (counts, states) = (&mut self.counts, &mut self.contact_states);
         let state = if run.reached(ask.time) {
@@ -232,6 +245,8 @@ impl Engine {
             if let Err(why) = stepped {
                 run.stuck = Some(why);
             }
+            // the running-in grew in place: the older one goes when both no longer fit
+            self.runs.remeasure_front();
             if stopped {
                 return;
             }

@@ -9,6 +9,7 @@
 
 mod cache;
 mod cell;
+mod footprint;
 pub mod latest;
 mod solve_worker;
 pub mod sweep_worker;
@@ -31,6 +32,7 @@ use crate::preset::{Preset, Problem};
 use cache::Cache;
 use cell::{Ask, CellKey, Run};
 
+pub use cache::{RUN_BYTES, STAGE_BYTES};
 pub use cell::{CellOutput, Progress};
 pub use solve_worker::Worker;
 
@@ -202,23 +204,23 @@ impl Default for Engine {
 pub type Proceed = bool;
 
 impl Engine {
-    /// An engine with empty caches: 8 operating points and their checks against the strip
-    /// model, 6 sweeps (two settings of three models),
-    /// 4 sets of harmonic responses, 4 histories and 2 spatial states (a 512-point grid holds
-    /// 6 MB); on the period cell 2 running-ins (each keeps at most 32 MiB of snapshots), 4
-    /// contact states, 4 running-in histories and 4 mu*(pbar) curves.
+    /// An engine with empty caches, each bounded in entries and in bytes (`STAGE_BYTES`, the
+    /// running-ins `RUN_BYTES`): 8 operating points and their checks against the strip model, 6
+    /// sweeps (two settings of three models), 4 sets of harmonic responses, 4 histories and 2
+    /// spatial states (a 512-point grid holds 6 MB); on the period cell 2 running-ins, 4 contact
+    /// states, 4 running-in histories and 4 mu*(pbar) curves.
     pub fn new() -> Engine {
         Engine {
-            points: Cache::new(8),
-            strip_checks: Cache::new(8),
-            sweeps: Cache::new(6),
-            responses: Cache::new(4),
-            histories: Cache::new(4),
-            states: Cache::new(2),
-            runs: Cache::new(2),
-            contact_states: Cache::new(4),
-            run_histories: Cache::new(4),
-            load_curves: Cache::new(4),
+            points: Cache::new(8, STAGE_BYTES),
+            strip_checks: Cache::new(8, STAGE_BYTES),
+            sweeps: Cache::new(6, STAGE_BYTES),
+            responses: Cache::new(4, STAGE_BYTES),
+            histories: Cache::new(4, STAGE_BYTES),
+            states: Cache::new(2, STAGE_BYTES),
+            runs: Cache::new(2, RUN_BYTES),
+            contact_states: Cache::new(4, STAGE_BYTES),
+            run_histories: Cache::new(4, STAGE_BYTES),
+            load_curves: Cache::new(4, STAGE_BYTES),
             counts: StageCounts::default(),
             progress_every: PROGRESS_EVERY,
         }

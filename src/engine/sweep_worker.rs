@@ -8,6 +8,7 @@ use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
 use crate::engine::cache::Cache;
+use crate::engine::footprint::Footprint;
 use crate::engine::latest::{Delivery, LatestJob};
 use crate::preset::Preset;
 use crate::sweeps::Opening;
@@ -65,8 +66,20 @@ pub fn explore(
     }
 }
 
+impl Footprint for SweepResult {
+    fn bytes(&self) -> usize {
+        match self {
+            SweepResult::Curve(curve) => curve.bytes(),
+            SweepResult::Map(map) => map.bytes(),
+        }
+    }
+}
+
 /// Finished results kept.
 const KEPT: usize = 4;
+/// The bytes they hold at most: a map holds some 64 bytes a point, so four maps of 250 x 250
+/// points (4 MB each) fit; a larger result is computed again when asked again rather than kept.
+const KEPT_BYTES: usize = 16 << 20;
 
 /// The sweep worker: the newest request on a thread of its own (`LatestJob`); a newer request
 /// replaces any pending one and cancels the running one (its solves stop at the next point).
@@ -78,7 +91,7 @@ impl SweepWorker {
     /// Starts the thread; `deliver` gets every answer and returns false when nobody listens any
     /// more (the thread then ends).
     pub fn spawn(mut deliver: impl FnMut(SweepAnswer) -> bool + Send + 'static) -> SweepWorker {
-        let mut kept: Cache<SweepRequest, SweepResult> = Cache::new(KEPT);
+        let mut kept: Cache<SweepRequest, SweepResult> = Cache::new(KEPT, KEPT_BYTES);
         let job = LatestJob::spawn(move |generation, request: Arc<SweepRequest>, cancel| {
             let answer = |explored, complete| SweepAnswer {
                 generation,

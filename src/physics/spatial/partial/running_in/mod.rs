@@ -203,6 +203,29 @@ impl RunningIn {
         }
     }
 
+    /// The bytes its vectors hold, approximately: the samples, the snapshots, the last stepped
+    /// state, and the setup's shape with the operator's four multipliers per node (for callers
+    /// that bound their memory).
+    pub fn held_bytes(&self) -> usize {
+        let (f, b) = (size_of::<f64>(), size_of::<bool>());
+        let snapshots: usize = self
+            .snapshots
+            .iter()
+            .map(|s| {
+                size_of::<Snapshot>()
+                    + s.shape.len() * f
+                    + s.contact.len() * b
+                    + s.previous.as_ref().map_or(0, |(_, u)| u.len() * f)
+            })
+            .sum();
+        let end = self.end_shape.len() * f
+            + self.end_slope.len() * f
+            + self.end_contact.len() * b
+            + self.end_previous.as_ref().map_or(0, |(_, u)| u.len() * f);
+        let setup = (self.setup.initial_shape.len() + 4 * self.setup.grid.len()) * f;
+        self.samples.len() * size_of::<Sample>() + snapshots + end + setup
+    }
+
     /// U [m] at the last stepped state (where the closed form starts when it is complete).
     pub(crate) fn end_shape(&self) -> &[f64] {
         &self.end_shape
