@@ -6,6 +6,7 @@ pub mod plane;
 pub mod quadrature;
 pub mod roots;
 pub mod spatial;
+pub mod stop;
 
 use thiserror::Error;
 

@@ -1,17 +1,18 @@
 //! A curve for the explorer's sweep chart: one quantity against one parameter, for the preset's
 //! plane model and the other models as overlays (the spatial problem has one series), with the
 //! model's verdict at every point and the parameter values where it changes, located by
-//! bisection. Points run in parallel; a cancel flag is checked before each solve.
+//! bisection. Points run in parallel; the caller's `Stop` is asked before each solve, and inside a
+//! spatial point before every time step of its running-in.
 //!
 //! The verdict is the library's own: `strip_check::verdict`'s `ok` for a plane model, the contact's
 //! `complete` for the spatial problem (where it is not, the contact is partial and solved through
 //! the running-in).
 
-use std::sync::atomic::{AtomicBool, Ordering};
-
 use rayon::prelude::*;
 
+use crate::physics::SolveError;
 use crate::physics::plane::Model;
+use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
 use crate::sweeps::groups;
@@ -132,19 +133,33 @@ pub fn solve_at(
     values: &[f64],
     model: Option<Model>,
 ) -> Result<Point, String> {
+    solve_at_until(base, axes, values, model, Stop::Never)
+}
+
+/// As [`solve_at`], told to stop by `stop` (`point::solve_until`): the error then says the
+/// computation was cancelled.
+pub fn solve_at_until(
+    base: &Preset,
+    axes: &[Axis],
+    values: &[f64],
+    model: Option<Model>,
+    stop: Stop,
+) -> Result<Point, String> {
     let mut base = base.clone();
     if let Some(m) = model {
         base.plane.model = m;
     }
     let preset = preset_at(&base, axes, values)?;
-    point::solve(&preset).map_err(|e| e.to_string())
+    point::solve_until(&preset, stop).map_err(|e| SolveError::from(e).to_string())
 }
 
 /// The quantity at a point, the verdict there and the swept input's group.
 type Answer = (Result<f64, String>, Option<bool>, Option<f64>);
 
-/// Computes the curve; None when `cancel` was set before it finished.
-pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<Curve> {
+/// Computes the curve; None when `stop` said so before it finished (a point being solved then
+/// ends within one step of its running-in).
+pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -> Option<Curve> {
+    let stop = stop.into();
     let models: Vec<Option<Model>> = match preset.problem {
         Problem::Plane => spec.models.iter().copied().map(Some).collect(),
         Problem::Spatial => vec![None],
@@ -168,10 +183,12 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
     let answers: Vec<Option<Answer>> = jobs
         .into_par_iter()
         .map(|(m, v)| {
-            if cancel.load(Ordering::Relaxed) {
+            if stop.now() {
                 return None;
             }
-            Some(answer(solve_at(preset, &axes, &[v], models[m])))
+            let solved = solve_at_until(preset, &axes, &[v], models[m], stop);
+            // a point told to stop half-way has no answer to keep
+            (!stop.now()).then(|| answer(solved))
         })
         .collect();
     let answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
@@ -180,17 +197,18 @@ pub fn curve(preset: &Preset, spec: &CurveSpec, cancel: &AtomicBool) -> Option<C
     let at_current: Vec<Answer> = models
         .par_iter()
         .map(|m| {
-            if cancel.load(Ordering::Relaxed) {
+            if stop.now() {
                 return None;
             }
-            Some(answer(solve_at(preset, &axes, &[current], *m)))
+            let solved = solve_at_until(preset, &axes, &[current], *m, stop);
+            (!stop.now()).then(|| answer(solved))
         })
         .collect::<Option<_>>()?;
     let mut series = Vec::new();
     for (m, model) in models.iter().enumerate() {
         let own = &answers[m * x.len()..(m + 1) * x.len()];
         let holds: Vec<Option<bool>> = own.iter().map(|a| a.1).collect();
-        let changes = changes(preset, &spec.axis, &x, &holds, *model, cancel)?;
+        let changes = changes(preset, &spec.axis, &x, &holds, *model, stop)?;
         series.push(Series {
             model: *model,
             y: own.iter().map(|a| a.0.clone()).collect(),
@@ -215,7 +233,7 @@ fn changes(
     x: &[f64],
     verdicts: &[Option<bool>],
     model: Option<Model>,
-    cancel: &AtomicBool,
+    stop: Stop,
 ) -> Option<Vec<Change>> {
     let steps = steps(preset, model);
     let found: Vec<Option<Option<Change>>> = (1..x.len())
@@ -229,15 +247,15 @@ fn changes(
             }
             let value = |u: f64| between(axis.range.spacing, x[i - 1], x[i], u);
             let side = |u: f64| {
-                if cancel.load(Ordering::Relaxed) {
+                if stop.now() {
                     return None;
                 }
-                solve_at(preset, &[*axis], &[value(u)], model)
+                solve_at_until(preset, &[*axis], &[value(u)], model, stop)
                     .ok()
                     .map(|p| holds(&p))
             };
             let u = bisect(steps, a, side);
-            if cancel.load(Ordering::Relaxed) {
+            if stop.now() {
                 return None;
             }
             Some(u.map(|u| Change {

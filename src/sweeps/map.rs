@@ -15,17 +15,17 @@
 //!
 //! The map is computed coarse first and refined: the first pass takes every `stride`-th point of
 //! each axis (about three per side, both ends always included), each later pass halves the
-//! stride, keeping what is computed. `on_pass` receives the map after each pass; a cancel flag is checked
-//! before every solve.
-
-use std::sync::atomic::{AtomicBool, Ordering};
+//! stride, keeping what is computed. `on_pass` receives the map after each pass; the caller's
+//! `Stop` is asked before every solve, and inside a spatial point before every time step of its
+//! running-in.
 
 use rayon::prelude::*;
 
 use crate::physics::plane::Model;
+use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
-use crate::sweeps::curve::{holds, solve_at};
+use crate::sweeps::curve::{holds, solve_at_until};
 use crate::sweeps::locate::{Node, Segment, between, bisect, contour};
 use crate::sweeps::point::Point;
 use crate::sweeps::quantity::QuantityKey;
@@ -129,9 +129,9 @@ fn first_stride(n: usize) -> usize {
     s
 }
 
-fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2]) -> Sample {
+fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], stop: Stop) -> Sample {
     let axes = [spec.x, spec.y];
-    let solve = |model| solve_at(base, &axes, &at, model);
+    let solve = |model| solve_at_until(base, &axes, &at, model, stop);
     let main = match base.problem {
         Problem::Plane => solve(Some(base.plane.model)),
         Problem::Spatial => solve(None),
@@ -183,13 +183,15 @@ fn theta_of(p: &Point) -> Option<f64> {
     }
 }
 
-/// Computes the map pass by pass; None when `cancel` was set before it finished.
-pub fn regime_map(
+/// Computes the map pass by pass; None when `stop` said so before it finished (a point being
+/// solved then ends within one step of its running-in).
+pub fn regime_map<'s>(
     preset: &Preset,
     spec: &MapSpec,
-    cancel: &AtomicBool,
+    stop: impl Into<Stop<'s>>,
     on_pass: &mut dyn FnMut(&Map),
 ) -> Option<Map> {
+    let stop = stop.into();
     let (x, y) = (spec.x.values(), spec.y.values());
     let (nx, ny) = (x.len(), y.len());
     let mut map = Map {
@@ -209,16 +211,18 @@ pub fn regime_map(
         let found: Vec<Option<(usize, Sample)>> = todo
             .into_par_iter()
             .map(|k| {
-                if cancel.load(Ordering::Relaxed) {
+                if stop.now() {
                     return None;
                 }
-                Some((k, sample(preset, spec, [map.x[k % nx], map.y[k / nx]])))
+                let s = sample(preset, spec, [map.x[k % nx], map.y[k / nx]], stop);
+                // a point told to stop half-way has no answer to keep
+                (!stop.now()).then_some((k, s))
             })
             .collect();
         for (k, s) in found.into_iter().collect::<Option<Vec<_>>>()? {
             map.samples[k] = Some(s);
         }
-        map.lines = lines(preset, spec, &map, cancel)?;
+        map.lines = lines(preset, spec, &map, stop)?;
         on_pass(&map);
         if map.stride == 1 {
             return Some(map);
@@ -233,7 +237,7 @@ const BISECTIONS: usize = 20;
 /// A verdict at a sample.
 type Verdict = fn(&Sample) -> Option<bool>;
 
-fn lines(preset: &Preset, spec: &MapSpec, map: &Map, cancel: &AtomicBool) -> Option<Vec<Line>> {
+fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<Line>> {
     let kinds: Vec<(LineKind, Verdict)> = match preset.problem {
         Problem::Plane => vec![
             (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
@@ -257,7 +261,7 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, cancel: &AtomicBool) -> Opt
     for (kind, verdict) in kinds {
         let side = |n: Node| at(n).and_then(verdict);
         let locate = |a: Node, b: Node| -> Option<[f64; 2]> {
-            if cancel.load(Ordering::Relaxed) {
+            if stop.now() {
                 return None;
             }
             let u = match kind {
@@ -268,16 +272,16 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, cancel: &AtomicBool) -> Opt
                 // a coarse pass is replaced soon: the middle of the edge is enough
                 _ if map.stride > 1 => 0.5,
                 _ => bisect(BISECTIONS, side(a)?, |u| {
-                    if cancel.load(Ordering::Relaxed) {
+                    if stop.now() {
                         return None;
                     }
-                    verdict_at(preset, spec, point(a, b, u), kind)
+                    verdict_at(preset, spec, point(a, b, u), kind, stop)
                 })?,
             };
             Some(point(a, b, u))
         };
         let segments = contour(xs.len(), ys.len(), &side, &locate);
-        if cancel.load(Ordering::Relaxed) {
+        if stop.now() {
             return None;
         }
         out.push(Line { kind, segments });
@@ -287,9 +291,15 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, cancel: &AtomicBool) -> Opt
 
 /// A plane line's verdict at a point between samples: the sign of theta (the wide model's, else
 /// the preset model's), or whether the model holds.
-fn verdict_at(base: &Preset, spec: &MapSpec, at: [f64; 2], kind: LineKind) -> Option<bool> {
+fn verdict_at(
+    base: &Preset,
+    spec: &MapSpec,
+    at: [f64; 2],
+    kind: LineKind,
+    stop: Stop,
+) -> Option<bool> {
     let axes = [spec.x, spec.y];
-    let solve = |model: Model| solve_at(base, &axes, &at, Some(model)).ok();
+    let solve = |model: Model| solve_at_until(base, &axes, &at, Some(model), stop).ok();
     match kind {
         LineKind::ThetaZero => {
             let theta = |model: Model| solve(model).and_then(|p| theta_of(&p));

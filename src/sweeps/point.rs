@@ -17,8 +17,10 @@ use crate::physics::plane::validity::{Validity, estimate};
 use crate::physics::plane::{self, PlaneSolution};
 use crate::physics::quadrature::tanh_sinh;
 use crate::physics::spatial::SpatialInputs;
+use crate::physics::spatial::partial::running_in::Stopped;
 use crate::physics::spatial::pipeline;
 use crate::physics::spatial::result::SpatialResult;
+use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 
 /// A solved plane point.
@@ -53,6 +55,13 @@ pub enum Point {
 
 /// Solves the preset's problem at its own values.
 pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
+    solve_until(preset, Stop::Never).map_err(SolveError::from)
+}
+
+/// As [`solve`], told to stop by `stop`: a spatial point asks it before every time step and
+/// every active-set iteration of its running-in (`Stopped::Cancelled`); a plane point is solved
+/// whole.
+pub fn solve_until(preset: &Preset, stop: Stop) -> Result<Point, Stopped> {
     match preset.problem {
         Problem::Plane => {
             let solution = plane::solve(&preset.plane_inputs(), preset.plane.model)?;
@@ -65,7 +74,8 @@ pub fn solve(preset: &Preset) -> Result<Point, SolveError> {
         }
         Problem::Spatial => {
             let inputs = preset.spatial_inputs();
-            let result = pipeline::solve(&inputs, &preset.spatial_state_at(), &[], false)?;
+            let at = preset.spatial_state_at();
+            let result = pipeline::solve_until(&inputs, &at, &[], false, stop)?;
             Ok(Point::Spatial(Box::new(SpatialPoint { inputs, result })))
         }
     }

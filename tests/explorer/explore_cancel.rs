@@ -1,13 +1,23 @@
 //! The explorer's thread (`engine::sweep_worker::SweepWorker`): a newer request cancels a map in
-//! progress, whose end is then never delivered, and the newer one is answered to the end.
+//! progress, whose end is then never delivered, and the newer one is answered to the end; inside
+//! a spatial point, the running-in stops within one time step of the newer request (counted in
+//! the questions the work asks its `Stop`, not in seconds).
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::channel;
 use std::time::Duration;
 
 use wearlab::engine::sweep_worker::{SweepRequest, SweepWorker};
+use wearlab::physics::Spacing;
 use wearlab::physics::plane::Model;
-use wearlab::preset::bundled;
+use wearlab::physics::spatial::partial::running_in::Stopped;
+use wearlab::physics::stop::Stop;
+use wearlab::preset::{Preset, bundled};
 use wearlab::sweeps::Opening;
+use wearlab::sweeps::axis::Axis;
+use wearlab::sweeps::map::{MapSpec, regime_map};
+use wearlab::sweeps::point;
+use wearlab::sweeps::quantity::QuantityKey;
 
 fn map_request(model: Model) -> SweepRequest {
     let mut preset = bundled("friction-or-wear-map.toml").unwrap().unwrap();
@@ -44,4 +54,70 @@ fn a_newer_input_cancels_a_map_in_progress() {
             break;
         }
     }
+}
+
+/// A newer request that arrives at the `at`-th question of the work (its `Stop`), counting every
+/// question: the work asks before every time step and every active-set iteration of a running-in.
+struct Newer {
+    asked: AtomicUsize,
+    at: usize,
+}
+
+impl Newer {
+    fn at(at: usize) -> Newer {
+        Newer {
+            asked: AtomicUsize::new(0),
+            at,
+        }
+    }
+
+    fn arrived(&self) -> bool {
+        self.asked.fetch_add(1, Ordering::SeqCst) + 1 >= self.at
+    }
+
+    fn asked(&self) -> usize {
+        self.asked.load(Ordering::SeqCst)
+    }
+}
+
+/// "contact-lost" on 1024 nodes: partial at t = 0, its running-in takes thousands of time steps
+/// (`wearlab solve` takes 5.8 s in release).
+fn costly() -> Preset {
+    let p = bundled("contact-lost.toml").unwrap().unwrap();
+    p.with_settings(&["spatial.grid=1024"]).unwrap()
+}
+
+#[test]
+fn a_newer_request_stops_a_spatial_point_within_one_time_step() {
+    let newer = Newer::at(40);
+    let solved = point::solve_until(&costly(), Stop::Asked(&|| newer.arrived()));
+    assert!(matches!(solved, Err(Stopped::Cancelled)), "{solved:?}");
+    // after the 40th question said stop, no step is taken: the stepping's loop and the
+    // running-in's end ask once more each
+    assert!(newer.asked() <= 42, "{} questions", newer.asked());
+}
+
+#[test]
+fn a_newer_request_stops_a_map_of_running_ins_inside_its_points() {
+    let p = costly();
+    let axis = |key: &str, ends: [f64; 2]| {
+        Axis::new(&p, p.key(key).unwrap(), ends, 5, Spacing::Linear).unwrap()
+    };
+    let spec = MapSpec {
+        x: axis("spatial.mean_pressure", [1e6, 5e6]),
+        y: axis("friction.coefficient", [0.0, 0.5]),
+        quantity: QuantityKey::parse("mu_star", &p).unwrap(),
+    };
+    // the newer request arrives while the first pass (3 x 3 points, each a running-in) is under
+    // way: between points alone, the map would ask only 9 questions and finish its pass
+    let newer = Newer::at(200);
+    let mut passes = 0;
+    let map = regime_map(&p, &spec, Stop::Asked(&|| newer.arrived()), &mut |_| {
+        passes += 1
+    });
+    assert!(map.is_none() && passes == 0);
+    // each of the 9 points asks at most 3 more questions after it (the stepping's loop, the
+    // running-in's end, the map keeping the point or not; a point not started asks once), and
+    // takes no further step
+    assert!(newer.asked() <= 200 + 3 * 9, "{} questions", newer.asked());
 }

@@ -15,6 +15,7 @@ use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::active_set::{ContactProblem, solve};
 use wearlab::physics::spatial::partial::running_in::{RunningIn, run_in};
 use wearlab::physics::spatial::partial::state::Outputs;
+use wearlab::physics::stop::Stop;
 use wearlab::preset::default_spatial_section;
 
 /// A 0.1 um, 1 mm wave on a steel-like half-plane at pbar = 0.3 p* with mu = 0.3 (p_max about
@@ -158,6 +159,7 @@ fn bdf2(setup: &Setup, dt: f64, steps: usize, each: &mut Each) {
             mean_pressure: pbar,
             adhesion: inputs.friction.adhesion,
             diagonal: c,
+            stop: Stop::Never,
         };
         let sol = solve(&mut op, &problem, None).unwrap();
         let next: Vec<f64> = base

@@ -12,7 +12,7 @@ use std::ops::ControlFlow;
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::{MAX_STEPS, run_in};
+use crate::physics::spatial::partial::running_in::{MAX_STEPS, Stopped, run_in_until};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::result::{
@@ -21,6 +21,7 @@ use crate::physics::spatial::result::{
 use crate::physics::spatial::state::{SpatialState, StateAt};
 use crate::physics::spatial::surface::Surface;
 use crate::physics::spatial::{self, SpatialInputs, SpatialSolution, solve_with, state_at};
+use crate::physics::stop::Stop;
 use crate::physics::{SolveError, limits};
 
 /// True when the contact is complete from t = 0 on: `complete_from` is the time [s] from which
@@ -53,6 +54,19 @@ pub fn solve(
     probes: &[[f64; 2]],
     sweep: bool,
 ) -> Result<SpatialResult, SolveError> {
+    solve_until(inputs, at, probes, sweep, Stop::Never).map_err(SolveError::from)
+}
+
+/// As [`solve`], told to stop by `stop`: the running-in asks it before every time step and
+/// every active-set iteration, the mean-pressure sweep before every pressure, so the work ends
+/// within one step of being told (`Stopped::Cancelled`).
+pub fn solve_until(
+    inputs: &SpatialInputs,
+    at: &StateAt,
+    probes: &[[f64; 2]],
+    sweep: bool,
+    stop: Stop,
+) -> Result<SpatialResult, Stopped> {
     inputs.validate()?;
     if inputs.surface().is_some() {
         // a height map is solved on its own grid, every mode by the same operators
@@ -60,7 +74,8 @@ pub fn solve(
             .check("time", at.time)
             .map_err(SolveError::InvalidInput)?;
         let setup = Setup::new(inputs, at.grid)?;
-        return on_the_cell(&setup, None, at, probes, sweep.then(|| sweep_pressures(at)));
+        let pressures = sweep.then(|| sweep_pressures(at));
+        return on_the_cell(&setup, None, at, probes, pressures, stop);
     }
     spatial::validate_grid(inputs.harmonics(), at.grid)?;
     let evolutions = spatial::evolutions(inputs);
@@ -77,7 +92,7 @@ pub fn solve(
     )?;
     let pressures = sweep.then(|| sweep_pressures(at));
     match setup {
-        Ok(setup) => on_the_cell(&setup, Some(&closed), at, probes, pressures),
+        Ok(setup) => on_the_cell(&setup, Some(&closed), at, probes, pressures, stop),
         Err(why) => {
             let initial = contact_at_start(inputs, &evolutions, &closed);
             if closed_form_holds(initial.complete, closed.contact.complete) {
@@ -87,10 +102,10 @@ pub fn solve(
             let lost = closed.contact.failure().or(initial.failure());
             let lost = lost.unwrap_or_default();
             // a coarse grid stays an input error (exit 2), no period cell has no answer (exit 3)
-            Err(match why {
+            Err(Stopped::Failed(match why {
                 SolveError::InvalidInput(w) => SolveError::InvalidInput(format!("{lost}; {w}")),
                 SolveError::NoSolution(w) => SolveError::NoSolution(format!("{lost}; {w}")),
-            })
+            }))
         }
     }
 }
@@ -103,16 +118,17 @@ fn on_the_cell(
     at: &StateAt,
     probes: &[[f64; 2]],
     pressures: Option<Vec<f64>>,
-) -> Result<SpatialResult, SolveError> {
-    let run = run_in(setup, at.time_tolerance, &mut |_| ControlFlow::Continue(()))?;
+    stop: Stop,
+) -> Result<SpatialResult, Stopped> {
+    let run = run_in_until(setup, at.time_tolerance, stop)?;
     if run.step_bound_reached() {
-        return Err(SolveError::NoSolution(format!(
+        return Err(Stopped::Failed(SolveError::NoSolution(format!(
             "the running-in reached its bound of {MAX_STEPS} time steps at t = {:.6e} s with the \
              contact still partial: the time tolerance {:.1e} asks for more steps than that \
              (raise spatial.time_tolerance)",
             run.end_time(),
             at.time_tolerance
-        )));
+        ))));
     }
     let state = run.state_at(at.time)?;
     let o = state.outputs;
@@ -165,7 +181,7 @@ fn on_the_cell(
         None => (o.normal_force, o.holding_force, o.mu_star, o.psi),
     };
     let sweep = match pressures {
-        Some(pressures) => Some(cell_sweep(setup, exact, &state, pressures)?),
+        Some(pressures) => Some(cell_sweep(setup, exact, &state, pressures, stop)?),
         None => None,
     };
     Ok(SpatialResult {
@@ -213,9 +229,14 @@ fn cell_sweep(
     exact: Option<&SpatialState>,
     state: &State,
     pressures: Vec<f64>,
-) -> Result<SweepResult, SolveError> {
+    stop: Stop,
+) -> Result<SweepResult, Stopped> {
     let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
-        ControlFlow::Continue(())
+        if stop.now() {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
     })?;
     let closed_sweep = |i: usize| {
         let s = &exact?.sweep;

@@ -21,6 +21,7 @@ use crate::physics::SolveError;
 use crate::physics::spatial::partial::gmres::{Preconditioned, gmres};
 use crate::physics::spatial::partial::operator::Operator;
 use crate::physics::spatial::partial::zone_ends;
+use crate::physics::stop::{STOPPED, Stop};
 
 /// Most active-set iterations.
 pub const MAX_ACTIVE_SET_ITERATIONS: usize = 100;
@@ -47,6 +48,9 @@ pub struct ContactProblem<'a> {
     pub adhesion: f64,
     /// c [m/Pa] >= 0 added to K (c dt k_w in an implicit wear step; 0 for a plain contact).
     pub diagonal: f64,
+    /// Asked before every active-set iteration: when it says so, the solve ends with the error
+    /// `stop::STOPPED`.
+    pub stop: Stop<'a>,
 }
 
 /// The solution of one contact problem.
@@ -185,6 +189,9 @@ pub fn solve(
     let (mut full, mut image, mut gap) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut relative_tolerance = LOOSE_TOLERANCE;
     for iteration in 1..=MAX_ACTIVE_SET_ITERATIONS {
+        if prob.stop.now() {
+            return Err(SolveError::NoSolution(STOPPED.into()));
+        }
         let active: Vec<usize> = (0..n).filter(|&i| set[i]).collect();
         let m = active.len();
         // tau0 T[1_C]: the adhesive shear of this contact set

@@ -27,6 +27,7 @@ use crate::physics::spatial::partial::grid::Grid;
 use crate::physics::spatial::partial::operator::{Multipliers, Operator};
 use crate::physics::spatial::partial::state::{State, Work, evaluate};
 use crate::physics::spatial::surface;
+use crate::physics::stop::Stop;
 
 /// A height map's Fourier mode counts in the running-in's step sizes when its amplitude exceeds
 /// this fraction of the largest (the rest is the round-off of the transform).
@@ -144,6 +145,7 @@ impl Setup {
             mean_pressure: pbar,
             adhesion: friction.adhesion,
             diagonal: 0.0,
+            stop: Stop::Never,
         };
         let sol = solve(op, &problem, start)?;
         let (outputs, gap) = evaluate(op, &shape, pbar, &friction, &sol, sol.offset);

@@ -10,6 +10,7 @@ use crate::physics::spatial::partial::running_in::{
     MAX_TRIES, RunningIn, Sample, Snapshot, Stepper, Stepping, Trial,
 };
 use crate::physics::spatial::partial::state::{State, evaluate};
+use crate::physics::stop::Stop;
 
 /// The step factor of the controller: the next step is `SAFETY` (allowed/estimated)^(1/2) times
 /// the last (BDF2's local error grows like h^3, the allowed error like h), within
@@ -75,6 +76,18 @@ impl RunningIn {
         until: f64,
         progress: &mut dyn FnMut(&RunningIn) -> ControlFlow<()>,
     ) -> Result<(), SolveError> {
+        self.extend_until(until, Stop::Never, progress)
+    }
+
+    /// As [`RunningIn::extend`], and `stop` is asked before every step and every active-set
+    /// iteration of a step: once it says so, the stepping ends (a step it cut short is not taken,
+    /// and its error, `stop::STOPPED`, is returned).
+    pub fn extend_until(
+        &mut self,
+        until: f64,
+        stop: Stop,
+        progress: &mut dyn FnMut(&RunningIn) -> ControlFlow<()>,
+    ) -> Result<(), SolveError> {
         let Some(stepping) = self.stepping.filter(|_| !self.finished()) else {
             return Ok(());
         };
@@ -89,9 +102,10 @@ impl RunningIn {
             std::mem::take(&mut self.end_contact),
         );
         stepper.slope = Some(std::mem::take(&mut self.end_slope));
+        stepper.stop = stop;
         let scale = rms(&setup.initial_shape);
         let mut result = Ok(());
-        while !self.finished() && self.end_time() < until {
+        while !self.finished() && self.end_time() < until && !stop.now() {
             let (trial, error) = match self.try_step(&mut stepper, &stepping, scale) {
                 Ok(step) => step,
                 Err(why) => {

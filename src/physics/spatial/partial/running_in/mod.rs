@@ -20,6 +20,7 @@ use thiserror::Error;
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::state::{Outputs, State};
+use crate::physics::stop::{STOPPED, Stop};
 
 pub use stepper::{Stepper, Trial};
 
@@ -49,7 +50,7 @@ impl From<Stopped> for SolveError {
     fn from(stopped: Stopped) -> SolveError {
         match stopped {
             Stopped::Failed(why) => why,
-            Stopped::Cancelled => SolveError::NoSolution("the computation was cancelled".into()),
+            Stopped::Cancelled => SolveError::NoSolution(STOPPED.into()),
         }
     }
 }
@@ -181,6 +182,19 @@ pub fn run_in_with(
     if cancelled {
         return Err(Stopped::Cancelled);
     }
+    Ok(run)
+}
+
+/// As [`run_in`] without progress, told to stop by `stop`: it is asked before every time step
+/// and every active-set iteration, so the work ends within one step of being told
+/// (`Stopped::Cancelled`).
+pub fn run_in_until(setup: &Setup, tolerance: f64, stop: Stop) -> Result<RunningIn, Stopped> {
+    let mut run = RunningIn::start(setup, Stepping::of(setup, tolerance))?;
+    let stepped = run.extend_until(f64::INFINITY, stop, &mut |_| ControlFlow::Continue(()));
+    if stop.now() {
+        return Err(Stopped::Cancelled);
+    }
+    stepped?;
     Ok(run)
 }
 

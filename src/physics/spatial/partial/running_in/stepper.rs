@@ -18,6 +18,7 @@ use crate::physics::SolveError;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::active_set::{ContactProblem, ContactSolution, solve};
 use crate::physics::spatial::partial::operator::Operator;
+use crate::physics::stop::Stop;
 
 /// The implicit stepper at step k: t_{k-1} and U_{k-1}, t_k and U_k, its contact set and slope.
 pub struct Stepper<'a> {
@@ -37,6 +38,8 @@ pub struct Stepper<'a> {
     pub contact: Vec<bool>,
     /// U'_k = -k_w (p_k - pbar) [m/s], for the error estimate (None: steps are not estimated).
     pub slope: Option<Vec<f64>>,
+    /// Asked before every active-set iteration of a step (`Stop::Never` from `new`).
+    pub stop: Stop<'a>,
 }
 
 /// A step tried but not yet taken.
@@ -71,6 +74,7 @@ impl<'a> Stepper<'a> {
             current,
             contact,
             slope: None,
+            stop: Stop::Never,
         }
     }
 
@@ -99,6 +103,7 @@ impl<'a> Stepper<'a> {
             mean_pressure: pbar,
             adhesion: inputs.friction.adhesion,
             diagonal: c,
+            stop: self.stop,
         };
         let solution = solve(&mut self.op, &problem, Some(&self.contact))?;
         let shape = base
