@@ -38,6 +38,28 @@ pub fn check(value: &impl Serialize) -> Result<(), NonFinite> {
     }
 }
 
+/// Ok when every cell of a table of `rows` rows and `header.len()` columns is finite, `cell(row,
+/// column)` its value: the check of [`check_csv`] on the table before it is written as text (a
+/// finite number is written as one), naming the same cell.
+pub fn check_table(
+    header: &[&str],
+    rows: usize,
+    cell: impl Fn(usize, usize) -> f64,
+) -> Result<(), NonFinite> {
+    for row in 0..rows {
+        for (col, name) in header.iter().enumerate() {
+            let value = cell(row, col);
+            if !value.is_finite() {
+                return Err(NonFinite {
+                    path: format!("{name}[{row}]"),
+                    value,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Ok when no cell of the CSV text is a non-finite number (`NaN`, `inf`, `-inf`).
 pub fn check_csv(text: &str) -> Result<(), NonFinite> {
     let mut lines = text.lines();

@@ -1,8 +1,11 @@
 //! The reports of `wearlab solve`: JSON and CSV, with the keys of the command-line contract
 //! (`docs/cli.md`). All values SI. The spatial report is in `spatial_report`.
 
+use std::io::{self, Write};
+
 use serde::Serialize;
 
+use crate::finite::{self, NonFinite};
 use crate::physics::SolveError;
 use crate::physics::plane::energy::{Energy, Undefined, serialize_balance};
 use crate::physics::plane::operating_point;
@@ -60,14 +63,37 @@ pub fn to_json(report: &impl Serialize) -> String {
     serde_json::to_string_pretty(report).expect("reports hold only numbers and strings")
 }
 
+/// Writes [`to_json`] to `out` as it is serialised.
+pub fn write_json(out: &mut dyn Write, report: &impl Serialize) -> io::Result<()> {
+    serde_json::to_writer_pretty(out, report).map_err(io::Error::from)
+}
+
+/// The columns of the profile's CSV.
+const PROFILE_COLUMNS: [&str; 5] = ["x", "pressure", "shear", "wear_rate", "wear"];
+
+/// The profile's row i, in the order of `PROFILE_COLUMNS`.
+fn profile_row(p: &Profile, i: usize) -> [f64; 5] {
+    [p.x[i], p.pressure[i], p.shear[i], p.wear_rate[i], p.wear[i]]
+}
+
 /// The profile as CSV: a header line, then one row per point.
 pub fn profile_csv(p: &Profile) -> String {
-    let mut out = String::from("x,pressure,shear,wear_rate,wear\n");
+    let mut out = Vec::new();
+    write_profile_csv(&mut out, p).expect("a vector takes every byte");
+    String::from_utf8(out).expect("numbers and names are ASCII")
+}
+
+/// Writes [`profile_csv`] row by row to `out`.
+pub fn write_profile_csv(out: &mut dyn Write, p: &Profile) -> io::Result<()> {
+    writeln!(out, "{}", PROFILE_COLUMNS.join(","))?;
     for i in 0..p.x.len() {
-        out.push_str(&format!(
-            "{:e},{:e},{:e},{:e},{:e}\n",
-            p.x[i], p.pressure[i], p.shear[i], p.wear_rate[i], p.wear[i]
-        ));
+        let [x, pressure, shear, wear_rate, wear] = profile_row(p, i);
+        writeln!(out, "{x:e},{pressure:e},{shear:e},{wear_rate:e},{wear:e}")?;
     }
-    out
+    Ok(())
+}
+
+/// The check of `finite::check_csv` on [`profile_csv`], without its text.
+pub fn check_profile_csv(p: &Profile) -> Result<(), NonFinite> {
+    finite::check_table(&PROFILE_COLUMNS, p.x.len(), |i, c| profile_row(p, i)[c])
 }

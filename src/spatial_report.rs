@@ -2,9 +2,12 @@
 //! (`physics::spatial::pipeline`), whose result serialises to the JSON keys of the command-line
 //! contract (`docs/cli.md`), and its fields over the cell as CSV. All values SI.
 
+use std::io::{self, Write};
+
+use crate::finite::{self, NonFinite};
 use crate::physics::SolveError;
 use crate::physics::spatial::pipeline;
-use crate::physics::spatial::result::SpatialResult;
+use crate::physics::spatial::result::{FieldTable, SpatialResult};
 use crate::preset::Preset;
 
 /// Solves a spatial preset at time `time` (the preset's own when None) with probes at `probes`,
@@ -21,20 +24,45 @@ pub fn spatial_report(
     pipeline::solve(&preset.spatial_inputs(), &at, probes, true)
 }
 
+/// The columns of the field's CSV.
+const FIELD_COLUMNS: [&str; 6] = ["x", "y", "pressure", "shear", "shape", "wear"];
+
+/// Row k = j nx + i of the field (x fastest), in the order of `FIELD_COLUMNS`.
+fn field_row(f: &FieldTable, k: usize) -> [f64; 6] {
+    let nx = f.x.len();
+    [
+        f.x[k % nx],
+        f.y[k / nx],
+        f.pressure[k],
+        f.shear[k],
+        f.shape[k],
+        f.wear[k],
+    ]
+}
+
 /// The spatial field over the cell as CSV: x,y,pressure,shear,shape,wear.
 pub fn field_csv(result: &SpatialResult) -> String {
+    let mut out = Vec::new();
+    write_field_csv(&mut out, result).expect("a vector takes every byte");
+    String::from_utf8(out).expect("numbers and names are ASCII")
+}
+
+/// Writes [`field_csv`] row by row to `out`.
+pub fn write_field_csv(out: &mut dyn Write, result: &SpatialResult) -> io::Result<()> {
     let f = &result.field;
-    let mut out = String::from("x,y,pressure,shear,shape,wear\n");
-    for (j, y) in f.y.iter().enumerate() {
-        for (i, x) in f.x.iter().enumerate() {
-            let k = j * f.x.len() + i;
-            out.push_str(&format!(
-                "{x:e},{y:e},{:e},{:e},{:e},{:e}\n",
-                f.pressure[k], f.shear[k], f.shape[k], f.wear[k]
-            ));
-        }
+    writeln!(out, "{}", FIELD_COLUMNS.join(","))?;
+    for k in 0..f.x.len() * f.y.len() {
+        let [x, y, pressure, shear, shape, wear] = field_row(f, k);
+        writeln!(out, "{x:e},{y:e},{pressure:e},{shear:e},{shape:e},{wear:e}")?;
     }
-    out
+    Ok(())
+}
+
+/// The check of `finite::check_csv` on [`field_csv`], without its text.
+pub fn check_field_csv(result: &SpatialResult) -> Result<(), NonFinite> {
+    let f = &result.field;
+    let rows = f.x.len() * f.y.len();
+    finite::check_table(&FIELD_COLUMNS, rows, |k, c| field_row(f, k)[c])
 }
 
 /// The punch surface at t of a height-map punch as a height-map CSV (docs/presets.md, "Rough

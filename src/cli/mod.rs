@@ -88,6 +88,31 @@ pub fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
     }
 }
 
+/// Writes the result through `write` as it is produced, after the last check that it holds only
+/// finite numbers (`guard`, run on the result before any text): the output of [`print`] without
+/// the whole text in memory.
+pub fn print_streamed(
+    guard: Result<(), finite::NonFinite>,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> ExitCode {
+    if let Err(e) = guard {
+        say(&format!("error: {e}"));
+        return ExitCode::from(EXIT_UNSOLVABLE);
+    }
+    if stdout_at_start::closed() {
+        say("error: cannot write the result to stdout: it is closed");
+        return ExitCode::from(EXIT_OUTPUT);
+    }
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    match write(&mut out).and_then(|()| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            say(&format!("error: cannot write the result to stdout: {e}"));
+            ExitCode::from(EXIT_OUTPUT)
+        }
+    }
+}
+
 /// Reads `--max-seconds S`: a bound on the work's wall-clock time, above 0.
 pub fn parse_seconds(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {

@@ -15,7 +15,7 @@ use wearlab::{finite, report, spatial_report};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::{
-    EXIT_INVALID, EXIT_OUTPUT, Format, finished, load_with, print, say, solve_output,
+    EXIT_INVALID, EXIT_OUTPUT, Format, finished, load_with, print_streamed, say, solve_output,
     solver_failure, within,
 };
 
@@ -173,12 +173,10 @@ fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
                     say(&format!("warning: {}", y.describe()));
                 }
                 match format {
-                    Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
-                    Format::Csv => {
-                        let csv = report::profile_csv(&r.profile);
-                        let guard = finite::check_csv(&csv);
-                        print(&csv, guard)
-                    }
+                    Format::Json => print_streamed(finite::check(&r), |out| json(out, &r)),
+                    Format::Csv => print_streamed(report::check_profile_csv(&r.profile), |out| {
+                        report::write_profile_csv(out, &r.profile)
+                    }),
                 }
             }
             Err(e) => solver_failure(e),
@@ -192,16 +190,20 @@ fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
                 ExitCode::from(EXIT_OUTPUT)
             }
             Ok(r) => match format {
-                Format::Json => print(&(report::to_json(&r) + "\n"), finite::check(&r)),
-                Format::Csv => {
-                    let csv = spatial_report::field_csv(&r);
-                    let guard = finite::check_csv(&csv);
-                    print(&csv, guard)
-                }
+                Format::Json => print_streamed(finite::check(&r), |out| json(out, &r)),
+                Format::Csv => print_streamed(spatial_report::check_field_csv(&r), |out| {
+                    spatial_report::write_field_csv(out, &r)
+                }),
             },
             Err(e) => solver_failure(e),
         },
     }
+}
+
+/// Writes `report` as `report::to_json` and a newline, as it is serialised.
+fn json(out: &mut dyn Write, report: &impl serde::Serialize) -> io::Result<()> {
+    report::write_json(out, report)?;
+    out.write_all(b"\n")
 }
 
 /// Writes the surface at t of `result` to `path` atomically (the save of a preset's way); false,
