@@ -185,6 +185,25 @@ fn a_grid_out_of_range_is_refused_at_its_line() {
     }
 }
 
+#[test]
+fn a_grid_too_coarse_for_partial_contact_is_refused_when_read_and_when_set() {
+    // the partial-contact solver's 16 nodes per wavelength: no harmonic is solved on fewer
+    let spatial = egg_box();
+    let line = 1 + spatial.lines().position(|l| l == "grid = 64").unwrap();
+    let why = "grid = 12 is too coarse for partial contact: every harmonic needs at least 16 \
+               nodes per wavelength, so grid >= 16";
+    assert_eq!(
+        error_of(&spatial.replace("grid = 64", "grid = 12")),
+        format!("lab.toml:{line}: {why}")
+    );
+    let preset = parse(spatial, Path::new("lab.toml")).unwrap();
+    assert_eq!(
+        preset.with_settings(&["spatial.grid=12"]).unwrap_err(),
+        format!("the values set break a rule: {why}")
+    );
+    assert!(preset.with_settings(&["spatial.grid=16"]).is_ok());
+}
+
 fn warnings_of(text: &str) -> Vec<String> {
     let (_, warnings) = parse_with_warnings(text, Path::new("lab.toml")).unwrap();
     warnings.iter().map(|w| w.to_string()).collect()

@@ -7,6 +7,7 @@ use std::fmt;
 
 use crate::physics::SweepRange;
 use crate::physics::limits;
+use crate::physics::spatial::partial::grid::check_side;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::law_rules;
 use crate::preset::params::{Access, PARAMS, Param};
@@ -255,8 +256,11 @@ impl Preset {
             Some(_) => Ok(()),
             None => validate_harmonics(&self.spatial.harmonics),
         };
-        harmonics
-            .and_then(|()| validate_grid(&self.spatial.harmonics, self.spatial.grid))
+        (harmonics.and_then(|()| validate_grid(&self.spatial.harmonics, self.spatial.grid)))
+            .and_then(|()| match self.spatial.surface {
+                Some(_) => Ok(()),
+                None => check_side(self.spatial.grid),
+            })
             .map_err(|e| e.to_string().trim_start_matches("invalid input: ").into())
     }
 }

@@ -5,6 +5,7 @@ use toml::Spanned;
 
 use crate::physics::limits;
 use crate::physics::spatial::harmonic::Harmonic;
+use crate::physics::spatial::partial::grid::check_side;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::check::Checker;
 use crate::preset::file::FileSpatial;
@@ -99,10 +100,15 @@ impl Checker<'_> {
             (Some(grid), None) => (self.count(grid, "grid", &limits::GRID)?, grid.span()),
             (None, _) => (default_spatial_section().grid, spatial.span()),
         };
-        validate_grid(&harmonics, grid).map_err(|e| {
-            let why = e.to_string();
-            self.error(Some(span), why.trim_start_matches("invalid input: "))
-        })?;
+        (validate_grid(&harmonics, grid))
+            .and_then(|()| match surface {
+                Some(_) => Ok(()),
+                None => check_side(grid),
+            })
+            .map_err(|e| {
+                let why = e.to_string();
+                self.error(Some(span), why.trim_start_matches("invalid input: "))
+            })?;
         let section = SpatialSection {
             mean_pressure,
             sliding_speed: self.value(

@@ -13,6 +13,20 @@ use crate::physics::spatial::{Cell, Period};
 /// least 16 nodes per shortest shape wavelength").
 pub const NODES_PER_WAVELENGTH: usize = 16;
 
+/// Refuses a side of the grid below `NODES_PER_WAVELENGTH`: every harmonic has at least one
+/// wavelength on the period cell, so no shape is solved in partial contact on it. A preset's
+/// `spatial.grid` is held to this when it is read or set; the finer need of a shape's shortest
+/// harmonic is the solver's (`Grid::new`), since the explorer adds harmonics on a fixed grid.
+pub fn check_side(side: usize) -> Result<(), SolveError> {
+    if side < NODES_PER_WAVELENGTH {
+        return Err(SolveError::InvalidInput(format!(
+            "grid = {side} is too coarse for partial contact: every harmonic needs at least \
+             {NODES_PER_WAVELENGTH} nodes per wavelength, so grid >= {NODES_PER_WAVELENGTH}"
+        )));
+    }
+    Ok(())
+}
+
 /// An nx x ny grid of nodes x_i = i lx/nx, y_j = j ly/ny over one period cell. An axis along
 /// which no harmonic varies has one node (1-D shapes solve on N x 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
