@@ -4,6 +4,8 @@
 //! a warning is rare for a value that was meant.
 
 use crate::physics::spatial::harmonic::Harmonic;
+use crate::preset::{Key, Preset, Problem};
+use crate::units::format_si;
 
 /// One plausibility rule: the parameter's preset key, when its value (SI) is suspicious, and why.
 struct Rule {
@@ -106,4 +108,30 @@ pub(super) fn vanishes(h: &Harmonic) -> Option<(&'static str, String)> {
     } else {
         None
     }
+}
+
+/// The warnings of a preset's values, as the explorer shows them (the file's own, with their
+/// lines, are `load_with_warnings`'): each value of its problem that looks like a unit mistake,
+/// named by its symbol (`k = 1.000e-07 1/Pa: more than 1 mm of wear ...`), and each harmonic that
+/// vanishes.
+pub fn warnings(preset: &Preset) -> Vec<String> {
+    let mut out = Vec::new();
+    for key in Key::all(preset) {
+        let param = key.param();
+        let Ok(value) = preset.get(key) else {
+            continue;
+        };
+        if let Some(why) = suspicious(param.key, value) {
+            let shown = format_si(value, param.unit);
+            out.push(format!("{} = {shown}: {why}", key.symbol()));
+        }
+    }
+    if preset.problem == Problem::Spatial {
+        for (n, h) in preset.spatial.harmonics.iter().enumerate() {
+            if let Some((_, why)) = vanishes(h) {
+                out.push(format!("harmonic {}: {why}", n + 1));
+            }
+        }
+    }
+    out
 }

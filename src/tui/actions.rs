@@ -243,6 +243,9 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.ui.playing = false;
     let lesson = invitation(&app.doc.preset).map_or(String::new(), |l| format!("; {l}"));
     app.say(format!("opened {}{lesson}", entry.source));
+    if let Some(warning) = crate::tui::warned::said(&app.doc.preset) {
+        app.complain(warning);
+    }
     vec![app.request()]
 }
 

@@ -330,7 +330,10 @@ impl App {
                 selected: 0,
                 mode: Mode::Normal,
                 chart: Chart::opening(&preset),
-                message: invitation(&preset).map(|text| Message { text, error: false }),
+                // a value that looks like a unit mistake first: the lesson can wait
+                message: (crate::tui::warned::said(&preset)
+                    .map(|text| Message { text, error: true }))
+                .or_else(|| invitation(&preset).map(|text| Message { text, error: false })),
                 playing: false,
                 export_waiting: None,
                 cursor: None,

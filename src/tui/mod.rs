@@ -28,6 +28,7 @@ pub mod sweep_state;
 pub mod text_field;
 pub mod update;
 pub mod view;
+pub mod warned;
 
 #[cfg(test)]
 mod tests;

@@ -25,6 +25,7 @@ mod stale;
 mod ticks;
 mod update;
 mod validity;
+mod warned;
 mod widgets;
 
 use std::time::{Duration, Instant};

@@ -148,6 +148,13 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
     if let Some(source) = &doc.source {
         lines.extend(wrap(source, width).into_iter().map(Line::from));
     }
+    for warning in crate::preset::warnings(&doc.preset) {
+        lines.extend(
+            wrap(&format!("warning: {warning}"), width)
+                .into_iter()
+                .map(|l| Line::styled(l, style.error())),
+        );
+    }
     let changed = crate::tui::form::differences(&doc.opened, &doc.preset);
     if !changed.is_empty() {
         let note = format!(
