@@ -56,6 +56,9 @@ enum Command {
         /// Set a preset value before solving, e.g. material.thickness=10um (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
         settings: Vec<String>,
+        /// Let --set change the keys the preset's lesson locks (the instructor's check).
+        #[arg(long)]
+        unlock: bool,
         /// Stop after S seconds of wall-clock time with exit code 3 (the solve is not finished).
         #[arg(long, value_name = "S", value_parser = cli::parse_seconds)]
         max_seconds: Option<f64>,
@@ -75,6 +78,9 @@ enum Command {
         /// Set a preset value first, e.g. plane.model=strip (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
         settings: Vec<String>,
+        /// Let --set change the keys the preset's lesson locks (the instructor's check).
+        #[arg(long)]
+        unlock: bool,
         /// The quantities to write, comma-separated (default: the scalar keys of `solve`).
         #[arg(long, value_name = "LIST")]
         output: Option<String>,
@@ -100,6 +106,9 @@ enum Command {
         /// Set a preset value first, e.g. plane.model=strip (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
         settings: Vec<String>,
+        /// Let --set change the keys the preset's lesson locks (the instructor's check).
+        #[arg(long)]
+        unlock: bool,
         /// Save the fitted preset to this file (atomically).
         #[arg(long, value_name = "OUT.toml")]
         write: Option<PathBuf>,
@@ -127,6 +136,7 @@ fn main() -> ExitCode {
             time,
             probe,
             settings,
+            unlock,
             max_seconds,
             output,
             write_surface,
@@ -138,6 +148,7 @@ fn main() -> ExitCode {
                 time,
                 probes: probe,
                 settings,
+                unlock,
                 max_seconds,
                 output,
                 write_surface,
@@ -147,6 +158,7 @@ fn main() -> ExitCode {
             preset,
             vary,
             settings,
+            unlock,
             output,
             format,
             max_seconds,
@@ -154,6 +166,7 @@ fn main() -> ExitCode {
             path: &preset,
             vary: &vary,
             settings: &settings,
+            unlock,
             output: output.as_deref(),
             format,
             max_seconds,
@@ -163,6 +176,7 @@ fn main() -> ExitCode {
             data,
             free,
             settings,
+            unlock,
             write,
             max_seconds,
         }) => fit::run(&fit::Request {
@@ -170,6 +184,7 @@ fn main() -> ExitCode {
             data: &data,
             free: &free,
             settings: &settings,
+            unlock,
             write: write.as_deref(),
             max_seconds,
         }),

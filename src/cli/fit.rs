@@ -25,6 +25,8 @@ pub struct Request<'a> {
     pub free: &'a str,
     /// `--set`, in order.
     pub settings: &'a [String],
+    /// `--unlock`: `--set` may change the keys the lesson locks.
+    pub unlock: bool,
     /// `--write`: where to save the fitted preset.
     pub write: Option<&'a Path>,
     /// `--max-seconds`: the bound on the fit's wall-clock time [s].
@@ -45,7 +47,7 @@ fn keys(preset: &Preset, list: &str) -> Result<Vec<Key>, String> {
 
 /// Runs `wearlab fit`.
 pub fn run(request: &Request) -> ExitCode {
-    let preset = match load_with(request.path, request.settings) {
+    let preset = match load_with(request.path, request.settings, request.unlock) {
         Ok(p) => p,
         Err(code) => return code,
     };

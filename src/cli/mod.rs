@@ -10,6 +10,7 @@ use clap::ValueEnum;
 use wearlab::finite;
 use wearlab::physics::SolveError;
 use wearlab::preset::{self, Preset};
+use wearlab::units::format_si;
 
 pub mod check;
 pub mod explorer;
@@ -60,12 +61,27 @@ pub fn load(path: &Path) -> Result<Preset, ExitCode> {
     Ok(preset)
 }
 
-/// The preset at `path` with the `--set` values applied.
-pub fn load_with(path: &Path, settings: &[String]) -> Result<Preset, ExitCode> {
-    load(path)?.with_settings(settings).map_err(|why| {
+/// The preset at `path` with the `--set` values applied; a value that changes a key the
+/// preset's lesson locks is refused (exit 2) unless `unlock` (`--unlock`, the instructor's).
+pub fn load_with(path: &Path, settings: &[String], unlock: bool) -> Result<Preset, ExitCode> {
+    let preset = load(path)?;
+    let invalid = |why: String| {
         say(&format!("error: {why}"));
         ExitCode::from(EXIT_INVALID)
-    })
+    };
+    let next = preset.with_settings(settings).map_err(invalid)?;
+    match preset.locked_change(&next) {
+        Some(key) if !unlock => Err(invalid(format!(
+            "--set {key}: {key} is locked by the lesson of {}, whose questions are asked at {} = \
+             {}; add --unlock to set it anyway (the instructor's check of another value)",
+            path.display(),
+            key.symbol(),
+            preset
+                .get(key)
+                .map_or_else(|e| e, |v| format_si(v, key.param().unit)),
+        ))),
+        _ => Ok(next),
+    }
 }
 
 /// Prints the result, after the last check that it holds only finite numbers.

@@ -59,6 +59,8 @@ pub struct Overrides {
     pub probes: Vec<[f64; 2]>,
     /// `--set KEY=VALUE`, in order.
     pub settings: Vec<String>,
+    /// `--unlock`: `--set` may change the keys the lesson locks.
+    pub unlock: bool,
     /// `--max-seconds`: the bound on the solve's wall-clock time [s].
     pub max_seconds: Option<f64>,
     /// `--output KEY[,KEY...]`: print these quantities instead of the report.
@@ -89,7 +91,7 @@ impl Overrides {
 /// Runs `wearlab solve`.
 /// `format` is None when `--format` is not given: the report is then JSON, `--output` lines.
 pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode {
-    let mut preset = match load_with(path, &options.settings) {
+    let mut preset = match load_with(path, &options.settings, options.unlock) {
         Ok(p) => p,
         Err(code) => return code,
     };

@@ -26,6 +26,8 @@ pub struct Request<'a> {
     pub vary: &'a [String],
     /// `--set`, in order.
     pub settings: &'a [String],
+    /// `--unlock`: `--set` may change the keys the lesson locks.
+    pub unlock: bool,
     /// `--output`, a comma-separated list.
     pub output: Option<&'a str>,
     /// `--format`.
@@ -109,7 +111,7 @@ fn progress(points: usize) -> ProgressBar {
 
 /// Runs `wearlab sweep`.
 pub fn run(request: &Request) -> ExitCode {
-    let preset = match load_with(request.path, request.settings) {
+    let preset = match load_with(request.path, request.settings, request.unlock) {
         Ok(p) => p,
         Err(code) => return code,
     };

@@ -74,6 +74,14 @@ impl Lesson {
     }
 }
 
+impl Preset {
+    /// The first key its lesson locks whose value differs in `next` (an edit of it).
+    pub fn locked_change(&self, next: &Preset) -> Option<Key> {
+        let lesson = self.lesson.as_ref()?;
+        (lesson.locked.iter().copied()).find(|k| self.get(*k).ok() != next.get(*k).ok())
+    }
+}
+
 impl Question {
     /// The program's value [the answer quantity's SI unit] at the question's inputs (the preset
     /// with `at` applied). Err: InvalidInput when `at` no longer applies, NoSolution when the

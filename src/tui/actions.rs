@@ -199,7 +199,7 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     if next == app.doc.preset {
         return Vec::new();
     }
-    if let Some(key) = lesson_keys::locked_change(&app.doc.preset, &next) {
+    if let Some(key) = app.doc.preset.locked_change(&next) {
         app.complain(lesson_keys::why_locked(app, key));
         return Vec::new();
     }

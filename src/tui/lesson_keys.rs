@@ -18,16 +18,6 @@ pub fn locked(app: &App, key: Key) -> bool {
     (app.doc.preset.lesson.as_ref()).is_some_and(|l| l.locks(key))
 }
 
-/// The first locked key whose value differs between two presets.
-pub fn locked_change(now: &Preset, next: &Preset) -> Option<Key> {
-    let lesson = now.lesson.as_ref()?;
-    lesson
-        .locked
-        .iter()
-        .copied()
-        .find(|k| now.get(*k).ok() != next.get(*k).ok())
-}
-
 /// Why a locked key cannot change.
 pub fn why_locked(app: &App, key: Key) -> String {
     let value = match key.harmonic_index() {

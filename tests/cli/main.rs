@@ -10,6 +10,7 @@ mod closed_stdout;
 mod common;
 mod fit_cli;
 mod hostile_cli;
+mod lesson_lock;
 mod quantities;
 mod run;
 mod shapes_cli;
