@@ -133,6 +133,7 @@ fn main() {
             Request {
                 preset,
                 overlays: true,
+                energies: false,
             },
         );
         edits += 1;

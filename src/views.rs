@@ -18,6 +18,10 @@ pub enum PlaneChart {
     MuStar,
     /// a and b against load.
     Edges,
+    /// The punch's shape, the strip surface and the wear groove against x.
+    Punch,
+    /// The friction and wear losses' shares of T against load.
+    Energy,
 }
 
 impl PlaneChart {
@@ -26,8 +30,10 @@ impl PlaneChart {
         match self {
             Self::Pressure => "pressure and shear",
             Self::Wear => "wear",
+            Self::Punch => "punch and strip surface",
             Self::MuStar => "mu* against load",
             Self::Edges => "contact edges against load",
+            Self::Energy => "energy losses against load",
         }
     }
 }

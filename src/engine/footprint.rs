@@ -9,7 +9,7 @@ use std::sync::Arc;
 use crate::physics::SolveError;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::strip_check::StripCheck;
-use crate::physics::plane::sweep::Sweep;
+use crate::physics::plane::sweep::{EnergySweep, Sweep};
 use crate::physics::spatial::SpatialState;
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History};
@@ -68,6 +68,7 @@ impl Footprint for OperatingPoint {
             + of(&p.wear_rate)
             + of(&p.wear)
             + of(&p.shape)
+            + of(&p.surface)
             + texts.map(|t| size_of::<String>() + t.len()).sum::<usize>()
             + of(&v.reasons)
     }
@@ -90,6 +91,12 @@ impl Footprint for Sweep {
             + of(&self.b)
             + of(&self.normal_force)
             + of(&self.valid)
+    }
+}
+
+impl Footprint for EnergySweep {
+    fn bytes(&self) -> usize {
+        of(&self.load) + of(&self.friction_share) + of(&self.wear_share)
     }
 }
 

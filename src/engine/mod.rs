@@ -19,7 +19,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::physics::plane::strip_check::StripCheck;
-use crate::physics::plane::sweep::{Sweep, sweep};
+use crate::physics::plane::sweep::{EnergySweep, Sweep, energy_sweep, sweep};
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History, dispersion, history};
@@ -54,6 +54,9 @@ pub struct Request {
     /// other than the preset's (the overlays of mu*(P)); the spatial mu*(pbar) on the period
     /// cell.
     pub overlays: bool,
+    /// Also compute the energy losses along the plane load sweep (asked only while the energy
+    /// chart is visible).
+    pub energies: bool,
 }
 
 /// What is known of the plane problem.
@@ -68,6 +71,8 @@ pub struct PlaneOutput {
     pub sweep: Option<Arc<Sweep>>,
     /// The other models' sweeps, when asked for and computed.
     pub overlays: Vec<(Model, Arc<Sweep>)>,
+    /// The energy losses along the preset's load sweep, when asked for and computed.
+    pub energies: Option<Arc<EnergySweep>>,
 }
 
 /// What is known of the spatial problem.
@@ -131,6 +136,8 @@ pub struct StageCounts {
     pub strip_check: usize,
     /// Plane load sweeps.
     pub load_sweep: usize,
+    /// Plane energy losses along the load sweep.
+    pub energy_sweep: usize,
     /// Spatial harmonic responses (with the dispersion curves).
     pub responses: usize,
     /// Spatial histories.
@@ -181,6 +188,8 @@ pub struct Engine {
     strip_checks: Cache<(PlaneInputs, Model), StripCheck>,
     /// Keyed by the inputs at unit load: a sweep does not depend on the load.
     sweeps: Cache<(PlaneInputs, Model, SweepRange), Arc<Sweep>>,
+    /// Keyed like the sweeps.
+    energies: Cache<(PlaneInputs, Model, SweepRange), Arc<EnergySweep>>,
     responses: Cache<ResponseKey, Responses>,
     histories: Cache<(SpatialInputs, f64), Arc<History>>,
     states: Cache<(SpatialInputs, StateAt), Result<Arc<SpatialState>, SolveError>>,
@@ -206,14 +215,15 @@ pub type Proceed = bool;
 impl Engine {
     /// An engine with empty caches, each bounded in entries and in bytes (`STAGE_BYTES`, the
     /// running-ins `RUN_BYTES`): 8 operating points and their checks against the strip model, 6
-    /// sweeps (two settings of three models), 4 sets of harmonic responses, 4 histories and 2
-    /// spatial states (a 512-point grid holds 6 MB); on the period cell 2 running-ins, 4 contact
-    /// states, 4 running-in histories and 4 mu*(pbar) curves.
+    /// sweeps (two settings of three models), 2 energy sweeps, 4 sets of harmonic responses, 4
+    /// histories and 2 spatial states (a 512-point grid holds 6 MB); on the period cell 2
+    /// running-ins, 4 contact states, 4 running-in histories and 4 mu*(pbar) curves.
     pub fn new() -> Engine {
         Engine {
             points: Cache::new(8, STAGE_BYTES),
             strip_checks: Cache::new(8, STAGE_BYTES),
             sweeps: Cache::new(6, STAGE_BYTES),
+            energies: Cache::new(2, STAGE_BYTES),
             responses: Cache::new(4, STAGE_BYTES),
             histories: Cache::new(4, STAGE_BYTES),
             states: Cache::new(2, STAGE_BYTES),
@@ -279,13 +289,15 @@ impl Engine {
             point,
             sweep: self.sweeps.get(&(unloaded.clone(), model, range)),
             overlays: Vec::new(),
+            energies: self.energies.get(&(unloaded.clone(), model, range)),
         };
+        let energies_done = !request.energies || out.energies.is_some();
         let cached: Vec<_> = others
             .iter()
             .map_while(|m| Some((*m, self.sweeps.get(&(unloaded.clone(), *m, range))?)))
             .collect();
         let checked = out.strip_check.is_some() || out.point.is_err();
-        if checked && out.sweep.is_some() && cached.len() == others.len() {
+        if checked && out.sweep.is_some() && cached.len() == others.len() && energies_done {
             out.overlays = cached;
             deliver(Output::Plane(out), true);
             return;
@@ -309,6 +321,16 @@ impl Engine {
         };
         out.sweep = Some(sweep_of(model));
         out.overlays = others.into_iter().map(|m| (m, sweep_of(m))).collect();
+        if request.energies {
+            if !deliver(Output::Plane(out.clone()), false) {
+                return;
+            }
+            out.energies = Some(self.energies.get_or(
+                (unloaded.clone(), model, range),
+                &mut self.counts.energy_sweep,
+                || Arc::new(energy_sweep(&unloaded, model, &range)),
+            ));
+        }
         deliver(Output::Plane(out), true);
     }
 

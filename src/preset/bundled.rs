@@ -37,11 +37,15 @@ pub const BUNDLED: &[Bundled] = bundled![
     "friction-or-wear-map.toml",
     "flat-pin-coating.toml",
     "rough-thin-layer.toml",
+    "worn-pin-profile.toml",
+    "wear-law-squared.toml",
+    "polymer-shear-strength.toml",
+    "energy-split.toml",
 ];
 
-/// The data files that bundled presets name (`spatial.surface.file`), built into the binary
-/// beside them.
-pub const BUNDLED_DATA: &[Bundled] = bundled![];
+/// The data files that bundled presets name (`spatial.surface.file`, `plane.shape.file`), built
+/// into the binary beside them.
+pub const BUNDLED_DATA: &[Bundled] = bundled!["worn-pin.csv"];
 
 /// The text of `file` named by the preset at `preset` when that is a bundled preset
 /// (`presets/<file>`, as `Bundled::load` names it) and `file` a bundled data file.

@@ -9,6 +9,7 @@ use std::path::Path;
 use toml::Spanned;
 
 use crate::physics::limits::{self, Limit};
+use crate::physics::plane::Shape;
 use crate::physics::plane::yield_onset::Strength;
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 use crate::preset::file::{FilePlane, FilePreset};
@@ -284,10 +285,15 @@ impl Checker<'_> {
             }
             None => default_load_sweep(load),
         };
+        let measured = match &shape {
+            Some(Shape::Table(t)) => Some(std::sync::Arc::clone(t)),
+            _ => None,
+        };
         Ok(PlaneSection {
             model: pl.model,
             radius,
             shape,
+            measured,
             load,
             sweep,
         })

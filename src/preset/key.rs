@@ -9,10 +9,10 @@ use crate::physics::SweepRange;
 use crate::physics::limits;
 use crate::physics::spatial::partial::grid::check_side;
 use crate::physics::spatial::{validate_grid, validate_harmonics};
-use crate::preset::law_rules;
 use crate::preset::params::{Access, PARAMS, Param};
 use crate::preset::surface_set::{SURFACE_PREFIX, grid_beside_map};
 use crate::preset::{Preset, Problem};
+use crate::preset::{law_rules, shape_rows};
 use crate::units::parse_si;
 
 const HARMONIC_PREFIX: &str = "spatial.harmonics.";
@@ -118,24 +118,28 @@ impl Key {
     }
 }
 
-/// Whether the form shows the parameter: the laws beyond the paper's worked example (a wear
-/// exponent, a shear cap) show only in a preset that uses them.
+/// Whether the form shows the parameter: the wear exponent and the shear cap in the plane
+/// problem (the spatial one takes the linear law without a cap), the reference pressure where
+/// the wear law is not linear, a shape's parameters for that kind of punch.
 fn shown(p: &Param, preset: &Preset) -> bool {
+    let plane = preset.problem == Problem::Plane;
     match p.key {
-        "wear.exponent" | "wear.reference_pressure" => preset.wear_exponent != 1.0,
-        "friction.shear_strength" => preset.shear_strength.is_finite(),
-        "material.yield_strength" => {
-            preset.problem == Problem::Plane && preset.strength.yield_strength.is_some()
-        }
-        "material.hardness" => {
-            preset.problem == Problem::Plane && preset.strength.hardness.is_some()
-        }
-        // the parabola's radius: no input of another shape
-        "plane.radius" => preset.plane.shape.is_none(),
+        "wear.exponent" | "friction.shear_strength" => plane,
+        "wear.reference_pressure" => plane && preset.wear_exponent != 1.0,
+        "material.yield_strength" => plane && preset.strength.yield_strength.is_some(),
+        "material.hardness" => plane && preset.strength.hardness.is_some(),
         // a height map is solved on its own grid
         "spatial.grid" => preset.spatial.surface.is_none(),
-        _ => true,
+        key => shape_rows::applies(preset, key).is_ok(),
     }
+}
+
+/// The refusal of a value that the preset file gives and nothing here sets.
+fn fixed(key: Key) -> String {
+    format!(
+        "{key} is read from the preset file with the measured profile; edit the file, or choose \
+         another plane.shape.kind"
+    )
 }
 
 impl fmt::Display for Key {
@@ -169,6 +173,7 @@ impl Preset {
             Access::Number { get, .. } => get(self),
             Access::Harmonic { get, .. } => get(&self.spatial.harmonics[self.harmonic_of(key)?]),
             Access::Choice { get, .. } => get(self) as f64,
+            Access::Fixed { .. } => return Err(fixed(key)),
         })
     }
 
@@ -192,8 +197,9 @@ impl Preset {
                         names.join(", ")
                     ));
                 }
-                set(self, value as usize);
+                set(self, value as usize)?;
             }
+            Access::Fixed { .. } => return Err(fixed(key)),
         }
         Ok(())
     }
@@ -297,6 +303,7 @@ impl Preset {
         if let (Some(map), "spatial.grid") = (&self.spatial.surface, key.param().key) {
             return Err(grid_beside_map(&map.surface));
         }
+        shape_rows::applies(self, key.param().key)?;
         Ok(key)
     }
 }
@@ -314,7 +321,7 @@ impl Preset {
             })?;
             match key.trim().strip_prefix(SURFACE_PREFIX) {
                 Some(name) => next.set_surface_key(name, value),
-                None => self.key(key).and_then(|key| next.assign_text(key, value)),
+                None => next.key(key).and_then(|key| next.assign_text(key, value)),
             }
             .map_err(|why| format!("{setting}: {why}"))?;
         }

@@ -105,7 +105,7 @@ fn refusals_name_the_line_and_what_is_allowed() {
             "view = ",
             "view = \"mu against load\" is not a view of a plane preset: the views are \
              \"pressure and shear\", \"wear\", \"mu* against load\", \"contact edges against \
-             load\" (\"sweep\" and \"regime map\" need an [explore] section with one or two axes)",
+             load\", \"punch and strip surface\", \"energy losses against load\" (\"sweep\" and \"regime map\" need an [explore] section with one or two axes)",
         ),
         (
             LESSON.replace("\"plane.model\"]", "\"plane.modle\"]"),

@@ -21,6 +21,7 @@ mod profile_csv;
 mod save_edited;
 mod save_path;
 mod shape_check;
+mod shape_rows;
 mod spatial_check;
 mod surface_file;
 mod surface_key;
@@ -35,6 +36,7 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
+use crate::physics::plane::shape::Table;
 use crate::physics::plane::yield_onset::Strength;
 use crate::physics::plane::{Model, PlaneInputs, Shape, WearLaw};
 use crate::physics::spatial::harmonic::Harmonic;
@@ -84,6 +86,9 @@ pub struct PlaneSection {
     pub radius: f64,
     /// The punch's shape when the file gives `plane.shape` (other than a parabola).
     pub shape: Option<Shape>,
+    /// The measured profile the file gave, kept while another kind of shape is chosen so that
+    /// the form can return to it.
+    pub measured: Option<Arc<Table>>,
     /// Load per unit length P [N/m].
     pub load: f64,
     /// The loads of the mu*(P) sweep.
@@ -218,6 +223,7 @@ pub fn default_plane_section() -> PlaneSection {
         model: Model::Wide,
         radius: 0.05,
         shape: None,
+        measured: None,
         load: 1e4,
         sweep: default_load_sweep(1e4),
     }

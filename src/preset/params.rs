@@ -10,7 +10,7 @@ use crate::physics::Spacing;
 use crate::physics::limits::{self, Limit};
 use crate::physics::plane::Model;
 use crate::physics::spatial::harmonic::Harmonic;
-use crate::preset::{Preset, Problem};
+use crate::preset::{Preset, Problem, shape_rows};
 
 /// How a parameter's value is read and written.
 #[derive(Clone, Copy, Debug)]
@@ -43,8 +43,14 @@ pub enum Access {
         names: &'static [&'static str],
         /// Reads the index.
         get: fn(&Preset) -> usize,
-        /// Writes the index (< names.len()).
-        set: fn(&mut Preset, usize),
+        /// Writes the index (< names.len()); Err says why that choice cannot be made here.
+        set: fn(&mut Preset, usize) -> Result<(), String>,
+    },
+    /// A text the preset file gives that is shown but cannot be set here (a measured profile's
+    /// file and x range).
+    Fixed {
+        /// Reads it.
+        show: fn(&Preset) -> String,
     },
 }
 
@@ -69,7 +75,7 @@ impl Param {
     pub fn limit(&self) -> Option<&Limit> {
         match &self.access {
             Access::Number { limit, .. } | Access::Harmonic { limit, .. } => Some(limit),
-            Access::Choice { .. } => None,
+            Access::Choice { .. } | Access::Fixed { .. } => None,
         }
     }
 
@@ -78,7 +84,7 @@ impl Param {
     pub fn typical(&self) -> Option<f64> {
         match self.access {
             Access::Number { typical, .. } | Access::Harmonic { typical, .. } => Some(typical),
-            Access::Choice { .. } => None,
+            Access::Choice { .. } | Access::Fixed { .. } => None,
         }
     }
 
@@ -86,6 +92,14 @@ impl Param {
     pub fn choices(&self) -> Option<&'static [&'static str]> {
         match self.access {
             Access::Choice { names, .. } => Some(names),
+            _ => None,
+        }
+    }
+
+    /// The text of a value that is shown but cannot be set (None for a number or a choice).
+    pub fn fixed(&self) -> Option<fn(&Preset) -> String> {
+        match self.access {
+            Access::Fixed { show } => Some(show),
             _ => None,
         }
     }
@@ -114,7 +128,7 @@ impl Param {
         match (self.limit(), self.choices()) {
             (Some(limit), _) => limit.allowed.to_string(),
             (None, Some(names)) => format!("one of {}", names.join(", ")),
-            (None, None) => unreachable!("a parameter is a number or a choice"),
+            (None, None) => "nothing: it is read from the preset file".into(),
         }
     }
 }
@@ -183,12 +197,26 @@ const fn wave(
     }
 }
 
+const fn fixed(
+    key: &'static str,
+    [symbol, label]: [&'static str; 2],
+    show: fn(&Preset) -> String,
+) -> Param {
+    Param {
+        key,
+        symbol,
+        label,
+        unit: "",
+        access: Access::Fixed { show },
+    }
+}
+
 const fn choice(
     key: &'static str,
     [symbol, label]: [&'static str; 2],
     names: &'static [&'static str],
     get: fn(&Preset) -> usize,
-    set: fn(&mut Preset, usize),
+    set: fn(&mut Preset, usize) -> Result<(), String>,
 ) -> Param {
     Param {
         key,
@@ -213,13 +241,20 @@ pub const PARAMS: &[Param] = &[
     number("wear.coefficient", ["k", "wear coefficient"], "1/Pa", limits::WEAR, 1e-15, |p| p.wear, |p, v| p.wear = v),
     number("wear.exponent", ["n", "exponent of the wear law"], "", limits::WEAR_EXPONENT, 2.0, |p| p.wear_exponent, |p, v| p.wear_exponent = v),
     number("wear.reference_pressure", ["p0", "reference pressure of the wear law"], "Pa", limits::REFERENCE_PRESSURE, 1e6, |p| p.reference_pressure.unwrap_or(0.0), |p, v| p.reference_pressure = Some(v)),
-    choice("plane.model", ["model", "plane model"], MODELS, |p| model_index(p.plane.model), |p, i| p.plane.model = Model::ALL[i]),
+    choice("plane.model", ["model", "plane model"], MODELS, |p| model_index(p.plane.model), |p, i| { p.plane.model = Model::ALL[i]; Ok(()) }),
+    choice("plane.shape.kind", ["shape", "punch shape"], shape_rows::KINDS, shape_rows::kind, shape_rows::set_kind),
     number("plane.radius", ["R", "punch radius"], "m", limits::RADIUS, 0.01, |p| p.plane.radius, |p, v| p.plane.radius = v),
+    number("plane.shape.radius", ["R", "radius of the power punch"], "m", limits::RADIUS, 0.01, shape_rows::power_radius, shape_rows::set_power_radius),
+    number("plane.shape.exponent", ["n punch", "exponent of the power punch"], "", limits::POWER_EXPONENT, 2.0, shape_rows::power_exponent, shape_rows::set_power_exponent),
+    number("plane.shape.half_width", ["c", "half-width of the flat face"], "m", limits::HALF_WIDTH, 1e-3, shape_rows::half_width, shape_rows::set_half_width),
+    number("plane.shape.edge_radius", ["r", "radius of the rounded edges (0: sharp)"], "m", limits::EDGE_RADIUS, 1e-3, shape_rows::edge_radius, shape_rows::set_edge_radius),
+    fixed("plane.shape.file", ["file", "the measured profile's file"], shape_rows::file),
+    fixed("plane.shape.range", ["x range", "x range of the measured profile"], shape_rows::range),
     number("plane.load", ["P", "load per unit length"], "N/m", limits::LINE_LOAD, 1e3, |p| p.plane.load, |p, v| p.plane.load = v),
     number("plane.sweep.load_min", ["P min", "smallest load of the mu*(P) curve"], "N/m", limits::LINE_LOAD, 1e2, |p| p.plane.sweep.min, |p, v| p.plane.sweep.min = v),
     number("plane.sweep.load_max", ["P max", "largest load of the mu*(P) curve"], "N/m", limits::LINE_LOAD, 1e5, |p| p.plane.sweep.max, |p, v| p.plane.sweep.max = v),
     number("plane.sweep.points", ["points", "points of the mu*(P) curve"], "", limits::SWEEP_POINTS, 60.0, |p| p.plane.sweep.points as f64, |p, v| p.plane.sweep.points = v as usize),
-    choice("plane.sweep.scale", ["scale", "spacing of the mu*(P) curve"], SCALES, |p| scale_index(p.plane.sweep.spacing), |p, i| p.plane.sweep.spacing = scale(i)),
+    choice("plane.sweep.scale", ["scale", "spacing of the mu*(P) curve"], SCALES, |p| scale_index(p.plane.sweep.spacing), |p, i| { p.plane.sweep.spacing = scale(i); Ok(()) }),
     number("spatial.mean_pressure", ["pbar", "mean pressure"], "Pa", limits::MEAN_PRESSURE, 1e6, |p| p.spatial.mean_pressure, |p, v| p.spatial.mean_pressure = v),
     number("spatial.sliding_speed", ["V", "sliding speed"], "m/s", limits::SPEED, 0.1, |p| p.spatial.sliding_speed, |p, v| p.spatial.sliding_speed = v),
     number("spatial.time", ["t", "the instant shown"], "s", limits::TIME, 10.0, |p| p.spatial.time, |p, v| p.spatial.time = v),
@@ -228,7 +263,7 @@ pub const PARAMS: &[Param] = &[
     number("spatial.sweep.pressure_min", ["pbar min", "smallest mean pressure of the mu*(pbar) curve"], "Pa", limits::MEAN_PRESSURE, 1e5, |p| p.spatial.sweep.min, |p, v| p.spatial.sweep.min = v),
     number("spatial.sweep.pressure_max", ["pbar max", "largest mean pressure of the mu*(pbar) curve"], "Pa", limits::MEAN_PRESSURE, 1e8, |p| p.spatial.sweep.max, |p, v| p.spatial.sweep.max = v),
     number("spatial.sweep.points", ["points", "points of the mu*(pbar) curve"], "", limits::SWEEP_POINTS, 60.0, |p| p.spatial.sweep.points as f64, |p, v| p.spatial.sweep.points = v as usize),
-    choice("spatial.sweep.scale", ["scale", "spacing of the mu*(pbar) curve"], SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| p.spatial.sweep.spacing = scale(i)),
+    choice("spatial.sweep.scale", ["scale", "spacing of the mu*(pbar) curve"], SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| { p.spatial.sweep.spacing = scale(i); Ok(()) }),
     wave("spatial.harmonics.N.amplitude", ["A", "amplitude of the harmonic"], "m", limits::AMPLITUDE, 1e-7, |h| h.amplitude, |h, v| h.amplitude = v),
     wave("spatial.harmonics.N.wavenumber_x", ["wx", "wavenumber along the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_x, |h, v| h.wavenumber_x = v),
     wave("spatial.harmonics.N.wavenumber_y", ["wy", "wavenumber across the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_y, |h, v| h.wavenumber_y = v),

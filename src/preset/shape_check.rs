@@ -13,7 +13,7 @@ use crate::physics::plane::shape::Table;
 use crate::preset::check::Checker;
 use crate::preset::file::{FileFriction, FilePlane, FileShape, FileWear};
 use crate::preset::written::Written;
-use crate::preset::{PresetError, profile_csv};
+use crate::preset::{PresetError, bundled, profile_csv};
 use crate::units::parse_si;
 
 /// The keys each kind of shape takes.
@@ -133,7 +133,11 @@ impl Checker<'_> {
             ));
         };
         let folder = self.path.parent().unwrap_or(std::path::Path::new(""));
-        let spline = profile_csv::read(&folder.join(file.get_ref()))?;
+        let path = folder.join(file.get_ref());
+        let spline = match bundled::bundled_data(self.path, file.get_ref()) {
+            Some(text) => profile_csv::parse(text, &path)?,
+            None => profile_csv::read(&path)?,
+        };
         Ok(Shape::Table(Arc::new(Table {
             file: file.get_ref().clone(),
             spline,

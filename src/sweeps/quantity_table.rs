@@ -205,6 +205,8 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("energy.wear_loss", "wear loss", "N/m", "power spent on wear per unit sliding speed, psi - J (2.7)", |p| p.energy().map_or_else(|u| u.wear_loss.ok_or_else(|| u.note.to_string()), |e| Ok(e.wear_loss))),
     plane("energy.external", "T", "N/m", "work of the tangential force per unit sliding distance: friction loss + wear loss when I = J (2.8)-(2.9)", |p| Ok(p.energy().map_or_else(|u| u.external, |e| e.external))),
     plane("energy.contact_residual", "contact residual", "", "|psi - J - k int q2^2| relative to T: how well the solution meets the contact condition", |p| balance(p, |e| e.contact_residual)),
+    plane("energy.friction_share", "friction loss/T", "", "the friction loss's share of the external work T, (Q1 + I)/T (2.5)", |p| p.energy().map_err(|u| u.note.to_string()).and_then(|e| share(e.friction_share()))).derived(),
+    plane("energy.wear_share", "wear loss/T", "", "the wear loss's share of the external work T, (psi - J)/T (2.7): 0 without wear, growing with k", wear_share).derived(),
     plane("validity.ok", "valid", "", "whether the model holds at this point (1 yes, 0 no): measured against the strip model where the study's estimate doubts it, as wearlab solve reports it", |p| yes(p.verdict().ok)).flag(),
     plane("validity.contact_width_over_thickness", "(a+b)/h", "", "contact width over the thickness, 0 for the half-plane: the wide model is the limit of small values, the narrow (Winkler) model of large ones", |p| Ok(p.validity.contact_width_over_thickness)).group(),
     plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 when wear dominates, < 0 when friction does", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),
@@ -244,6 +246,20 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     harmonic("harmonics.N.decay_exponent", "beta t", "", "decay exponent at time t, A(t)/A(0) = e^(-beta t); beta = k V A_c/M^2 with A_c the layer's normal compliance, so without friction beta t = k V t/A_c", |s, n| Ok(spatial_groups::decay_exponent(wave(s, n).decay_rate, s.result.time))).derived().group(),
     harmonic("harmonics.N.pressure_ratio", "A/(M pbar)", "", "the harmonic's pressure amplitude over the mean pressure (closed form): contact is surely complete while these sum below 1", |s, n| Ok(spatial_groups::pressure_ratio(wave(s, n).amplitude, wave(s, n).pressure_per_amplitude, s.result.mean_pressure))).derived().group(),
 ];
+
+fn share(value: Option<f64>) -> Result<f64, String> {
+    value.ok_or_else(|| "T = 0 (no friction, no wear): nothing is dissipated to share".into())
+}
+
+/// The wear loss's share of T, also where I and J have no number but the wear loss has one (the
+/// Winkler face of a punch with sharp corners).
+fn wear_share(p: &PlanePoint) -> Result<f64, String> {
+    match p.energy() {
+        Ok(e) => share(e.wear_share()),
+        Err(u) if u.wear_loss.is_some() => share(u.wear_share()),
+        Err(u) => Err(u.note.to_string()),
+    }
+}
 
 fn decay_time(h: &HarmonicResult) -> Result<f64, String> {
     let beta = h.decay_rate;

@@ -48,6 +48,11 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.ui.expanded = false;
             let row = app.row();
             match row.param().choices() {
+                None if row.param().fixed().is_some() => {
+                    if let Err(why) = form::set(&app.doc.preset, &row, 0.0) {
+                        app.complain(why);
+                    }
+                }
                 Some(_) => {
                     app.ui.mode = Mode::Choosing(form::get(&app.doc.preset, &row) as usize);
                     app.say(format!("{}: {}", row.symbol(), row.param().allowed()));
@@ -67,7 +72,10 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::NextChart | Action::PrevChart => {
             let step = if action == Action::NextChart { 1 } else { -1 };
             app.ui.chart = app.ui.chart.step(step);
-            if app.ui.chart.draws_overlays() && !app.solve.overlays {
+            let chart = app.ui.chart;
+            if (chart.draws_overlays() && !app.solve.overlays)
+                || (chart.draws_energies() && !app.solve.energies)
+            {
                 vec![app.request()]
             } else {
                 Vec::new()

@@ -69,6 +69,8 @@ pub struct Solve {
     pub generation: u64,
     /// Whether the newest request asked for the overlays.
     pub overlays: bool,
+    /// Whether the newest request asked for the energy losses along the load sweep.
+    pub energies: bool,
     /// The newest answer received (it carries the request it answers).
     pub shown: Option<Answer>,
 }
@@ -360,11 +362,13 @@ impl App {
     pub fn request(&mut self) -> Command {
         self.solve.generation += 1;
         self.solve.overlays = self.ui.chart.draws_overlays();
+        self.solve.energies = self.ui.chart.draws_energies();
         Command::Solve(
             self.solve.generation,
             Box::new(Request {
                 preset: self.doc.preset.clone(),
                 overlays: self.solve.overlays,
+                energies: self.solve.energies,
             }),
         )
     }

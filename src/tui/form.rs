@@ -17,11 +17,13 @@ pub enum Step {
     Time,
     /// The next or previous choice.
     Choice,
+    /// None: the value is read from the preset file.
+    Fixed,
 }
 
 /// The nudge of each parameter, by preset key (`N` for the harmonic's index).
 #[rustfmt::skip]
-pub const STEPS: [(&str, Step); 32] = [
+pub const STEPS: [(&str, Step); 39] = [
     ("material.youngs_modulus", Step::Log { seed: 1e9 }),
     ("material.poisson_ratio", Step::Linear { step: 0.01 }),
     ("material.thickness", Step::Log { seed: 1e-3 }),
@@ -34,7 +36,14 @@ pub const STEPS: [(&str, Step); 32] = [
     ("wear.exponent", Step::Linear { step: 0.1 }),
     ("wear.reference_pressure", Step::Log { seed: 1e6 }),
     ("plane.model", Step::Choice),
+    ("plane.shape.kind", Step::Choice),
     ("plane.radius", Step::Log { seed: 0.01 }),
+    ("plane.shape.radius", Step::Log { seed: 0.01 }),
+    ("plane.shape.exponent", Step::Linear { step: 0.1 }),
+    ("plane.shape.half_width", Step::Log { seed: 1e-3 }),
+    ("plane.shape.edge_radius", Step::Log { seed: 1e-4 }),
+    ("plane.shape.file", Step::Fixed),
+    ("plane.shape.range", Step::Fixed),
     ("plane.load", Step::Log { seed: 1e3 }),
     ("plane.sweep.load_min", Step::Log { seed: 1e2 }),
     ("plane.sweep.load_max", Step::Log { seed: 1e5 }),
@@ -91,8 +100,11 @@ pub fn get(preset: &Preset, row: &Row) -> f64 {
 
 /// The row's value as the form shows it: SI prefixes, engineering notation past them.
 pub fn show(preset: &Preset, row: &Row) -> String {
-    let v = get(preset, row);
     let param = row.param();
+    if let Some(text) = param.fixed() {
+        return text(preset);
+    }
+    let v = get(preset, row);
     match param.choices() {
         Some(names) => names[v as usize % names.len()].to_string(),
         None if param.is_whole() => format!("{v}"),
@@ -104,9 +116,13 @@ pub fn show(preset: &Preset, row: &Row) -> String {
 /// (where one looks, not an input); a harmonic added or removed is counted.
 pub fn differences(from: &Preset, to: &Preset) -> Vec<String> {
     let (was, now) = (&from.spatial.harmonics, &to.spatial.harmonics);
+    let before = rows(from);
     let mut out: Vec<String> = rows(to)
         .iter()
         .filter(|r| r.param().key != "spatial.time")
+        // a number of another kind of punch than before: the kind's row says what changed
+        .filter(|r| !r.param().key.starts_with("plane.shape.") || before.contains(r))
+        .filter(|r| r.param().key != "plane.radius" || before.contains(r))
         .filter(|r| r.harmonic_index().is_none_or(|n| n < was.len()))
         .filter(|r| show(from, r) != show(to, r))
         .map(|r| format!("{} {} -> {}", r.symbol(), show(from, r), show(to, r)))
@@ -147,14 +163,36 @@ fn changed(preset: &Preset, next: Preset, row: &Row) -> (Preset, Change) {
 /// says what is allowed, and the caller's preset keeps the last valid value.
 pub fn set(preset: &Preset, row: &Row, value: f64) -> Result<(Preset, Change), String> {
     let mut next = preset.clone();
+    reference_for(&mut next, row, value);
     next.set(*row, value)?;
     Ok(changed(preset, next, row))
+}
+
+/// A wear law made nonlinear in the form needs its reference pressure p0: where the preset has
+/// none, the mean pressure of the punch's contact on a half-plane at the preset's load (Hertz,
+/// half-width sqrt(2 P R/m); the flat's face added), so that at the pressures of the contact the
+/// law wears at about the linear law's rate.
+fn reference_for(preset: &mut Preset, row: &Row, value: f64) {
+    if row.param().key != "wear.exponent" || value == 1.0 || preset.reference_pressure.is_some() {
+        return;
+    }
+    let inputs = preset.plane_inputs();
+    let load = inputs.load;
+    let hertz = (2.0 * load * inputs.shape.radius() / inputs.material.plane_modulus()).sqrt();
+    let face = match inputs.shape {
+        crate::physics::plane::Shape::Flat { half_width, .. } => half_width,
+        _ => 0.0,
+    };
+    preset.reference_pressure = Some(clean(load / (2.0 * (hertz + face))));
 }
 
 /// Parses typed text for a row (a choice by its name, a number with SI prefix and unit) and
 /// sets it as `set` does.
 pub fn set_text(preset: &Preset, row: &Row, text: &str) -> Result<(Preset, Change), String> {
     let mut next = preset.clone();
+    if let Ok(value) = crate::units::parse_si(text, row.param().unit) {
+        reference_for(&mut next, row, value);
+    }
     next.assign_text(*row, text)?;
     next.check_rules()?;
     Ok(changed(preset, next, row))
@@ -167,6 +205,10 @@ pub fn nudged(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
 }
 
 fn nudged_raw(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
+    if step(row) == Step::Fixed {
+        // nothing to nudge: setting it says why
+        return 0.0;
+    }
     let v = get(preset, row);
     let dir = if up { 1.0 } else { -1.0 };
     let linear = |step: f64| {
@@ -190,5 +232,6 @@ fn nudged_raw(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
         Step::Log { .. } => v * if large { 2f64 } else { 1.1 }.powf(dir),
         Step::Linear { step } => linear(step),
         Step::Time => linear(preset.spatial.duration / 100.0),
+        Step::Fixed => 0.0,
     }
 }

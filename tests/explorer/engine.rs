@@ -10,6 +10,7 @@ fn full(preset: &Preset) -> Request {
     Request {
         preset: preset.clone(),
         overlays: true,
+        energies: false,
     }
 }
 
@@ -123,6 +124,7 @@ fn the_operating_point_comes_first_and_overlays_only_when_asked() {
     let request = Request {
         preset: preset.clone(),
         overlays: false,
+        energies: false,
     };
     engine.run_staged(&request, |output, complete| {
         let Output::Plane(out) = output else { panic!() };

@@ -139,7 +139,8 @@ fn a_session_in_tmux() {
     // (no Escape followed at once by another key: the two may read as Alt-key)
     keys(&["?"]);
     wait_footer(PLANE_80);
-    for _ in 0..6 {
+    // model is the ninth row (E nu h, mu tau0 tau_max, k n, model)
+    for _ in 0..8 {
         keys(&["j"]);
     }
     keys(&["Enter"]);
@@ -148,7 +149,8 @@ fn a_session_in_tmux() {
     // Enter on the current choice changes nothing
     keys(&["Enter"]);
     wait_footer(PLANE_80);
-    for _ in 0..6 {
+    // scale is seven rows below (shape R P, P min, P max, points, scale)
+    for _ in 0..7 {
         keys(&["j"]);
     }
     keys(&["Enter"]);
@@ -156,7 +158,7 @@ fn a_session_in_tmux() {
     keys(&["Enter"]);
     wait_footer(PLANE_80);
 
-    // edit the load: P is the ninth row
+    // edit the load: P is four rows above scale
     for _ in 0..4 {
         keys(&["k"]);
     }

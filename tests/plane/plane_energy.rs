@@ -106,3 +106,45 @@ fn wear_loss_per_unit_wear_rate_tends_to_hertz() {
         en.wear_loss / k
     );
 }
+
+/// The energy chart's curve (`sweep::energy_sweep`: the wear loss as the integral of q2 F(q2), the
+/// friction loss as T less it) against the full route of `energy` (Q1 + I and psi - J, each
+/// from the kernels' u' and v') at the same loads: a parabola with wear on a strip (closed form)
+/// and the bundled general-solver presets (a measured profile, n = 2, a shear cap).
+#[test]
+fn the_energy_sweep_agrees_with_the_full_energy_at_its_loads() {
+    use wearlab::physics::SweepRange;
+    use wearlab::physics::plane::sweep::energy_sweep;
+    let m = plane_modulus(1e10, 0.3);
+    let mut cases = vec![(
+        plane(1e10, 0.3, 1e-2, 0.3, 1e5, 0.5 / m, 0.05, 1e4),
+        Model::Wide,
+    )];
+    for file in [
+        "worn-pin-profile.toml",
+        "wear-law-squared.toml",
+        "polymer-shear-strength.toml",
+    ] {
+        let p = wearlab::preset::bundled(file).unwrap().unwrap();
+        cases.push((p.plane_inputs(), p.plane.model));
+    }
+    for (inputs, model) in cases {
+        let loads = SweepRange {
+            min: inputs.load / 4.0,
+            max: inputs.load,
+            points: 3,
+            spacing: wearlab::physics::Spacing::Log,
+        };
+        let e = energy_sweep(&inputs, model, &loads);
+        assert_eq!(e.load.len(), 3);
+        for (i, load) in e.load.iter().enumerate() {
+            let full = energy(&solve(&inputs.with_load(*load), model).unwrap()).unwrap();
+            let (f, w) = (e.friction_share[i].unwrap(), e.wear_share[i].unwrap());
+            assert!(
+                (f - full.friction_share().unwrap()).abs() < 1e-6
+                    && (w - full.wear_share().unwrap()).abs() < 1e-6,
+                "{model:?} P = {load}: {f} {w} against {full:?}"
+            );
+        }
+    }
+}

@@ -2,6 +2,7 @@
 //! fuzzed files, and saving.
 
 mod explore_section;
+mod general_presets;
 mod hostile_save;
 mod kept_text;
 mod params;

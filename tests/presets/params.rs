@@ -22,7 +22,11 @@ fn every_key_reads_what_the_preset_file_says() {
     let mut compared = 0;
     for b in BUNDLED {
         let preset = b.load().unwrap();
-        for key in Key::all(&preset) {
+        // a measured profile's file and range are shown, not read as numbers
+        for key in Key::all(&preset)
+            .into_iter()
+            .filter(|k| k.param().fixed().is_none())
+        {
             let Some(file) = toml_value(b.text, &key.to_string()) else {
                 continue; // a default: the file does not say
             };
@@ -70,7 +74,7 @@ fn the_keys_of_each_problem_cover_the_sections_it_solves() {
     for key in Key::all(&spatial) {
         assert_eq!(Key::parse(&key.to_string()), Ok(key));
     }
-    assert_eq!(PARAMS.len(), 32);
+    assert_eq!(PARAMS.len(), 39);
 }
 
 #[test]

@@ -275,6 +275,10 @@ fn mutated_presets_load_or_say_why_and_solve_or_say_why() {
         TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &seed));
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("fuzzed.toml");
+    // the data files a bundled preset reads lie beside it, as in presets/
+    for d in wearlab::preset::BUNDLED_DATA {
+        std::fs::write(dir.path().join(d.file), d.text).unwrap();
+    }
     let counts = Counts::default();
     let strategy = (0..BUNDLED.len(), prop::collection::vec(mutation(), 1..4));
     runner

@@ -160,6 +160,10 @@ fn a_missing_file_names_its_path() {
 #[test]
 fn round_trip_is_identical() {
     let dir = tempfile::tempdir().unwrap();
+    // the data files a bundled preset reads lie beside it, as in presets/
+    for d in preset::BUNDLED_DATA {
+        std::fs::write(dir.path().join(d.file), d.text).unwrap();
+    }
     for b in BUNDLED {
         let p = b.load().unwrap();
         let path = dir.path().join(b.file);

@@ -76,6 +76,15 @@ pub const FACE_NOTE: &str = "the Winkler pressure is bounded but steps from 0 at
     J would be the work of a stress on a displacement step, which the model leaves undefined, \
     and so is the friction loss Q1 + I; the wear loss is k times the integral of q2^2";
 
+impl Undefined {
+    /// The wear loss as a share of T (dimensionless) where the wear loss has a number; None
+    /// else, or when T = 0.
+    pub fn wear_share(&self) -> Option<f64> {
+        let loss = self.wear_loss?;
+        (self.external != 0.0).then(|| loss / self.external)
+    }
+}
+
 impl Serialize for Undefined {
     fn serialize<S: serde::Serializer>(&self, out: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
@@ -99,6 +108,19 @@ pub fn serialize_balance<S: serde::Serializer>(
     match balance {
         Ok(energy) => energy.serialize(out),
         Err(undefined) => undefined.serialize(out),
+    }
+}
+
+impl Energy {
+    /// The friction loss as a share of the external work T (dimensionless); None when T = 0
+    /// (neither friction nor wear: nothing is dissipated).
+    pub fn friction_share(&self) -> Option<f64> {
+        (self.external != 0.0).then(|| self.friction_loss / self.external)
+    }
+
+    /// The wear loss as a share of T (dimensionless); None when T = 0.
+    pub fn wear_share(&self) -> Option<f64> {
+        (self.external != 0.0).then(|| self.wear_loss / self.external)
     }
 }
 
@@ -141,24 +163,8 @@ fn pieces(lo: f64, hi: f64, kinks: &[f64]) -> impl Iterator<Item = (f64, f64)> {
 /// [0, a + b], the distance from the trailing edge, so both edges keep full precision. Undefined
 /// for a punch with sharp corners, where I and J have no number.
 pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
-    let undefined = |wear_loss, note| Undefined {
-        external: sol.tangential_force,
-        wear_loss,
-        note,
-    };
     match sol.law {
-        PressureLaw::Corners { .. } => return Err(undefined(None, CORNERS_NOTE)),
-        PressureLaw::Face { leading, lambda } => {
-            // k times the integral over the face of (q_b e^(-lambda (L - u)))^2
-            let l = sol.contact_width();
-            let squared = if lambda > 0.0 {
-                -(-2.0 * lambda * l).exp_m1() / (2.0 * lambda)
-            } else {
-                l
-            };
-            let wear_loss = sol.inputs.wear.coefficient * leading * leading * squared;
-            return Err(undefined(Some(wear_loss), FACE_NOTE));
-        }
+        PressureLaw::Corners { .. } | PressureLaw::Face { .. } => return Err(undefined_at(sol)),
         _ => {}
     }
     // the general solver's polynomial of some 64 nodes needs twice the nodes of the closed forms
@@ -292,6 +298,65 @@ pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
         external: sol.tangential_force,
         contact_residual: (wear_loss - direct_wear_loss).abs() / contact_scale,
     })
+}
+
+/// The wear loss DW/V0 [N/m] as the integral of q2 F(q2) over the contact (Soldatenkov (2007)
+/// eq. 2.7 with the contact condition: psi - J = int q2 F(q2) dx), by the tanh-sinh rule split at
+/// the kinks of q2: one pass over the contact, without the Hilbert transforms of I and J, so that
+/// a curve of many loads costs what one `energy` does. `energy` computes it too, beside psi - J
+/// (its `contact_residual` compares the two). Under sharp corners the answer is `energy`'s.
+pub fn wear_loss(sol: &PlaneSolution) -> Result<f64, Undefined> {
+    if let PressureLaw::Corners { .. } | PressureLaw::Face { .. } = sol.law {
+        return Err(undefined_at(sol));
+    }
+    let rule = tanh_sinh(match sol.law {
+        PressureLaw::General { .. } => 1.0 / 32.0,
+        _ => 1.0 / 16.0,
+    });
+    let kinks: Vec<f64> = match &sol.law {
+        PressureLaw::General { kinks, .. } => kinks.to_vec(),
+        _ => kinks_within(sol),
+    };
+    let law = &sol.inputs.wear;
+    let mut total = 0.0;
+    for (lo, hi) in pieces(0.0, sol.contact_width(), &kinks) {
+        let half = 0.5 * (hi - lo);
+        for (t, w) in rule.nodes.iter().zip(&rule.weights) {
+            // from the nearer end, so that both ends keep full precision
+            let u = if *t < 0.0 {
+                lo + half * (1.0 + t)
+            } else {
+                hi - half * (1.0 - t)
+            };
+            let q = sol.pressure_from_trailing_edge(u);
+            total += w * half * q * law.rate(q);
+        }
+    }
+    Ok(total)
+}
+
+/// The energy balance of a punch with sharp corners: only T, and the wear loss on the Winkler
+/// face, have a number (docs/physics/plane-general.md section 4).
+fn undefined_at(sol: &PlaneSolution) -> Undefined {
+    let (wear_loss, note) = match sol.law {
+        PressureLaw::Face { leading, lambda } => {
+            // k times the integral over the face of (q_b e^(-lambda (L - u)))^2
+            let l = sol.contact_width();
+            let squared = if lambda > 0.0 {
+                -(-2.0 * lambda * l).exp_m1() / (2.0 * lambda)
+            } else {
+                l
+            };
+            let loss = sol.inputs.wear.coefficient * leading * leading * squared;
+            (Some(loss), FACE_NOTE)
+        }
+        _ => (None, CORNERS_NOTE),
+    };
+    Undefined {
+        external: sol.tangential_force,
+        wear_loss,
+        note,
+    }
 }
 
 /// The shape's kinks strictly inside the contact, as distances u from the trailing edge,

@@ -20,6 +20,12 @@ pub struct Profile {
     pub wear: Vec<f64>,
     /// The punch's shape g(x) [m] at each x.
     pub shape: Vec<f64>,
+    /// The strip surface's normal displacement v(x) [m], positive towards the punch (Soldatenkov
+    /// (2007) section 1), placed where it meets the punch at the leading edge b, where the strip
+    /// has not worn yet: v(x) - v(b) + g(b). In contact v - W = g - delta (1.11), W the depth worn
+    /// (its x-derivative -F(q2), 0 at b: the wear per pass), so this is g(x) + wear(x): the loaded
+    /// strip takes the punch's shape, above it by the layer worn away.
+    pub surface: Vec<f64>,
 }
 
 /// The profile at `points` >= 2 points.
@@ -57,10 +63,12 @@ pub fn profile(sol: &PlaneSolution, points: usize) -> Profile {
                 rule.integrate(x[i], x[i + 1], |s| law.rate(q2(s)))
             };
     }
+    let shape: Vec<f64> = x.iter().map(|&x| sol.inputs.shape.g(x)).collect();
     Profile {
         shear: x.iter().map(|&x| sol.shear(x)).collect(),
         wear_rate: pressure.iter().map(|&q| law.rate(q)).collect(),
-        shape: x.iter().map(|&x| sol.inputs.shape.g(x)).collect(),
+        surface: shape.iter().zip(&wear).map(|(g, w)| g + w).collect(),
+        shape,
         x,
         pressure,
         wear,

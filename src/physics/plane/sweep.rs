@@ -1,7 +1,8 @@
-//! mu*(P), a(P), b(P), Q2(P) over a range of loads.
+//! mu*(P), a(P), b(P), Q2(P) over a range of loads, and the energy losses' shares of T.
 
 use serde::Serialize;
 
+use crate::physics::plane::energy::wear_loss;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
 use crate::physics::plane::{checks, general, scope, sharp, strip_check};
@@ -24,14 +25,60 @@ pub struct Sweep {
     pub valid: Vec<Option<bool>>,
 }
 
+/// The friction loss and the wear loss over a range of loads, as shares of the external work T
+/// (Soldatenkov (2007) eqs. (2.5), (2.7)): the wear loss as the integral of q2 F(q2) (`wear_loss`),
+/// the friction loss as T less it, which (2.8)-(2.9) make equal to Q1 + I; entries are None where
+/// the model has no solution, T = 0, or the loss has no number (sharp corners, `energy`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EnergySweep {
+    /// P [N/m].
+    pub load: Vec<f64>,
+    /// Friction loss over T, dimensionless.
+    pub friction_share: Vec<Option<f64>>,
+    /// Wear loss over T, dimensionless.
+    pub wear_share: Vec<Option<f64>>,
+}
+
 /// Solves the model at every load of the sweep (loads P [N/m]) (the inputs' own load is ignored).
 /// A range outside `limits::LINE_LOAD` gives an empty sweep.
 pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
+    let (load, solutions) = solutions(inputs, model, loads);
+    gather(load, &solutions)
+}
+
+/// The energy losses' shares of T at every load of the sweep, from the same solutions as `sweep`.
+pub fn energy_sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> EnergySweep {
+    let (load, solutions) = solutions(inputs, model, loads);
+    let shares: Vec<Option<(Option<f64>, Option<f64>)>> = solutions
+        .iter()
+        .map(|s| {
+            let s = s.as_ref()?;
+            let t = s.tangential_force;
+            let (friction, wear) = match wear_loss(s) {
+                Ok(wear) => (Some(t - wear), Some(wear)),
+                Err(undefined) => (None, undefined.wear_loss),
+            };
+            (t != 0.0).then(|| (friction.map(|f| f / t), wear.map(|w| w / t)))
+        })
+        .collect();
+    EnergySweep {
+        friction_share: shares.iter().map(|s| s.and_then(|s| s.0)).collect(),
+        wear_share: shares.iter().map(|s| s.and_then(|s| s.1)).collect(),
+        load,
+    }
+}
+
+/// The loads and the model's solution at each (None where it has none or fails the checks).
+fn solutions(
+    inputs: &PlaneInputs,
+    model: Model,
+    loads: &SweepRange,
+) -> (Vec<f64>, Vec<Option<PlaneSolution>>) {
     if loads
         .check(["load_min", "load_max"], &limits::LINE_LOAD)
         .is_err()
     {
-        return gather(Vec::new(), &[]);
+        return (Vec::new(), Vec::new());
     }
     let valid = inputs.validate().is_ok() && scope::check(inputs, model).is_ok();
     let closed = inputs.is_classical();
@@ -55,7 +102,7 @@ pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
             .filter(|sol| checks::check(sol).is_ok())
         })
         .collect();
-    gather(load, &solutions)
+    (load, solutions)
 }
 
 fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
@@ -78,11 +125,15 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
 /// The strip sweep, parametrized by the contact width: Brent finds only the widths of the end
 /// loads, then one collocation per point gives its load (so the loads are the solutions', spaced
 /// like the requested ones in contact width; a width that fails the checks is left out).
-fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sweep {
+fn by_contact_width(
+    inputs: &PlaneInputs,
+    loads: &SweepRange,
+    valid: bool,
+) -> (Vec<f64>, Vec<Option<PlaneSolution>>) {
     let none = || {
         let load = loads.values();
         let none = vec![None; load.len()];
-        gather(load, &none)
+        (load, none)
     };
     if !valid || inputs.material.is_half_space() {
         return none();
@@ -102,5 +153,5 @@ fn by_contact_width(inputs: &PlaneInputs, loads: &SweepRange, valid: bool) -> Sw
         .flatten()
         .map(|s| s.inputs.load)
         .collect::<Vec<_>>();
-    gather(load, &solutions)
+    (load, solutions)
 }

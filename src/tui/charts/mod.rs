@@ -188,6 +188,11 @@ impl PlaneChart {
                 overlays: false,
                 build: plane::wear,
             },
+            Self::Punch => ChartSpec {
+                help: "The punch's shape g(x) (its tip at x = 0, heights away from the strip), the strip surface v(x) under load ('strip v(x)'), placed where it meets the punch at the leading edge b (nothing is worn there yet), and below them the wear groove: the depth a strip point loses in one pass. In contact the loaded strip takes the punch's shape and lies above it by the layer worn away, so v - g is the groove (the contact condition, (1.11)).",
+                overlays: false,
+                build: plane::punch,
+            },
             Self::MuStar => ChartSpec {
                 help: "Total friction coefficient mu* against load: mu* = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P. The 'now' marker is the current load; the other models are overlaid for comparison (the preset's model sets the scale).",
                 overlays: true,
@@ -197,6 +202,11 @@ impl PlaneChart {
                 help: "Contact edges a (trailing) and b (leading) against load, for the preset's model.",
                 overlays: false,
                 build: plane::edges,
+            },
+            Self::Energy => ChartSpec {
+                help: "Where the work of the tangential force goes, against load: the friction loss Q1 + I (2.5) and the wear loss psi - J (2.7) as shares of T, the power per unit sliding speed. They add up to 1 when I = J (2.9): the status's I-J residual says how well that holds at the current load, marked 'now'. Without wear all of T is lost to friction; more wear (k) moves the split towards wear. Computed while this chart is visible.",
+                overlays: false,
+                build: plane::energy,
             },
         }
     }
@@ -257,6 +267,12 @@ impl Chart {
             Chart::Plane(c) => c.spec().overlays,
             Chart::Spatial(c) => c.spec().overlays,
         }
+    }
+
+    /// True when the chart draws the energy losses along the load sweep (the engine computes
+    /// them only then).
+    pub fn draws_energies(self) -> bool {
+        self == Chart::Plane(PlaneChart::Energy)
     }
 
     /// The figure for an answer, from the inputs the answer carries (never from the form).

@@ -3,6 +3,7 @@
 use crate::engine::PlaneOutput;
 use crate::physics::Spacing;
 use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::energy::{Energy, Undefined};
 use crate::physics::plane::sweep::Sweep;
 use crate::preset::Preset;
 
@@ -53,11 +54,10 @@ fn against_load(preset: &Preset, y_label: &str, y_unit: &'static str) -> (Axis, 
 }
 
 /// The loads where the model has a value, with the value.
-fn of_load(name: String, sweep: &Sweep, values: &[Option<f64>]) -> Series {
+fn of_load(name: String, load: &[f64], values: &[Option<f64>]) -> Series {
     Series {
         name,
-        points: sweep
-            .load
+        points: load
             .iter()
             .zip(values)
             .filter_map(|(p, v)| Some((*p, (*v)?)))
@@ -117,7 +117,7 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
         .chain(out.overlays.iter().map(|(m, s)| (*m, &**s)))
         // a model that needs a finite thickness has no curve on a half-plane
         .filter(|(m, _)| !(m.needs_finite_thickness() && preset.material.is_half_space()))
-        .map(|(m, s)| of_load(format!("mu* {}", m.name()), s, &s.mu_star))
+        .map(|(m, s)| of_load(format!("mu* {}", m.name()), &s.load, &s.mu_star))
         .collect();
     let (x, y) = against_load(preset, "mu*", "");
     let mut plot = Plot::new(x, y, series);
@@ -137,8 +137,58 @@ pub(super) fn edges(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigu
         x,
         y,
         vec![
-            of_load("a (trailing)".into(), s, &s.a),
-            of_load("b (leading)".into(), s, &s.b),
+            of_load("a (trailing)".into(), &s.load, &s.a),
+            of_load("b (leading)".into(), &s.load, &s.b),
         ],
     )]))
+}
+
+pub(super) fn punch(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
+    let op = point(out)?;
+    let p = &op.profile;
+    let series = |name: &str, values: &[f64]| Series {
+        name: name.into(),
+        points: zip(&p.x, values),
+    };
+    Ok(Figure::Plots(vec![
+        along_x(
+            op,
+            "height",
+            "m",
+            vec![
+                series("punch g(x)", &p.shape),
+                series("strip v(x)", &p.surface),
+            ],
+        ),
+        along_x(op, "groove", "m", vec![series("wear groove", &p.wear)]),
+    ]))
+}
+
+/// An operating point's energy balance, as `energy` answers.
+type Balance = Result<Energy, Undefined>;
+
+pub(super) fn energy(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
+    let e = out.energies.as_deref().ok_or(NoFigure::Solving)?;
+    let now = point(out).ok();
+    // one plot each: a share moves monotonically with load, its legend beside it
+    let share = |name: &str, values: &[Option<f64>], at: fn(&Balance) -> Option<f64>| {
+        let (x, y) = against_load(preset, name, "");
+        let mut plot = Plot::new(x, y, vec![of_load(name.into(), &e.load, values)]);
+        plot.markers = now.and_then(|p| {
+            Some(Series {
+                name: "now".into(),
+                points: vec![(p.solution.inputs.load, at(&p.energy)?)],
+            })
+        });
+        plot
+    };
+    Ok(Figure::Plots(vec![
+        share("friction loss/T", &e.friction_share, |b| {
+            b.as_ref().ok()?.friction_share()
+        }),
+        share("wear loss/T", &e.wear_share, |b| match b {
+            Ok(energy) => energy.wear_share(),
+            Err(undefined) => undefined.wear_share(),
+        }),
+    ]))
 }

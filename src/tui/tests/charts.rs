@@ -16,6 +16,7 @@ fn complete(file: &str) -> Answer {
     let request = Request {
         preset: bundled(file),
         overlays: true,
+        energies: true,
     };
     let cmds = [Command::Solve(1, Box::new(request))];
     answers(&mut Engine::new(), &cmds).pop().unwrap()
@@ -227,6 +228,7 @@ fn without_a_duration_the_time_charts_span_five_of_the_slowest_decay_times() {
         let request = Request {
             preset,
             overlays: false,
+            energies: false,
         };
         let answer = answers(&mut Engine::new(), &[Command::Solve(1, Box::new(request))])
             .pop()

@@ -76,9 +76,10 @@ fn v_opens_a_form_that_refuses_what_is_not_allowed() {
         panic!()
     };
     assert_ne!(form.axes[0].key.to_string(), "plane.load");
-    // from = -1 Pa for E: refused, saying what is allowed, the form still open
+    // from = -1 for k (past E, nu, h, mu, tau0, tau_max): refused, saying what is allowed, the
+    // form still open
     press(&mut app, KeyCode::Left);
-    for _ in 0..6 {
+    for _ in 0..7 {
         press(&mut app, KeyCode::Right);
     }
     let Mode::Form(form) = &app.ui.mode else {
@@ -392,7 +393,7 @@ fn the_help_explains_the_view_on_screen() {
     let map = app("friction-or-wear-map.toml");
     assert!(text(&map).contains("This view: the regime map (M)"));
     let charts = app("polymer-coating.toml");
-    assert!(text(&charts).contains("This chart (1/4): pressure and shear"));
+    assert!(text(&charts).contains("This chart (1/6): pressure and shear"));
 }
 
 #[test]

@@ -21,6 +21,7 @@ mod picker;
 mod replay;
 mod save_prompt;
 mod screens;
+mod shape_form;
 mod stale;
 mod ticks;
 mod update;

@@ -176,8 +176,10 @@ fn tab_cycles_the_charts_and_asks_for_overlays_only_for_the_chart_that_draws_the
     assert!(matches!(cmds.as_slice(), [Command::Solve(_, r)] if r.overlays));
     press(&mut app, KeyCode::BackTab);
     press(&mut app, KeyCode::BackTab);
-    press(&mut app, KeyCode::BackTab);
-    assert_eq!(app.ui.chart, Chart::Plane(PlaneChart::Edges), "wraps");
+    let cmds = press(&mut app, KeyCode::BackTab);
+    assert_eq!(app.ui.chart, Chart::Plane(PlaneChart::Energy), "wraps");
+    // the energy chart asks for the losses along the load sweep
+    assert!(matches!(cmds.as_slice(), [Command::Solve(_, r)] if r.energies));
 }
 
 #[test]
