@@ -103,49 +103,54 @@ fn plane(
     height: usize,
 ) -> Vec<Line<'static>> {
     let s = &p.solution;
-    let mut items = vec![
-        format!("a = {}", format_si(s.a, "m")),
-        format!("b = {}", format_si(s.b, "m")),
+    let mut items: Vec<Phrase> = vec![
+        format!("a = {}", format_si(s.a, "m")).into(),
+        format!("b = {}", format_si(s.b, "m")).into(),
     ];
     // a punch other than the parabola is named first (the parabola's R is in the form)
     if let Some(shape) = shape_name(&s.inputs.shape) {
         items.insert(0, shape);
     }
     // theta exists only for the models that have it: never a placeholder under another's label
-    items.extend(s.theta.map(|t| format!("theta = {}", number("theta", t))));
-    items.extend([
-        format!("Q2 = {}", format_si(s.normal_force, "N/m")),
-        format!("psi = {}", format_si(s.psi, "N/m")),
-        mu_star(s.mu_star, s.inputs.friction.coefficient),
-        residual(p.energy.as_ref().ok().map(|e| e.residual)),
-    ]);
+    items.extend(
+        s.theta
+            .map(|t| format!("theta = {}", number("theta", t)).into()),
+    );
+    items.extend(
+        [
+            format!("Q2 = {}", format_si(s.normal_force, "N/m")),
+            format!("psi = {}", format_si(s.psi, "N/m")),
+            mu_star(s.mu_star, s.inputs.friction.coefficient),
+            residual(p.energy.as_ref().ok().map(|e| e.residual)),
+        ]
+        .map(Phrase::from),
+    );
     with_validity(&items, p, check, style, width, height)
 }
 
-/// The punch's shape in a few words; None for the parabola.
-fn shape_name(shape: &Shape) -> Option<String> {
+/// The punch's shape in a few words, each value with its name and unit a piece that a line
+/// break never splits ("flat punch", "c = 1 mm,", "edges r = 0.2 mm"); None for the parabola.
+fn shape_name(shape: &Shape) -> Option<Phrase> {
+    let punch = Phrase::whole;
     match shape {
         Shape::Parabola { .. } => None,
-        Shape::Power { radius, exponent } => Some(format!(
-            "power punch n = {exponent}, R = {}",
-            format_si(*radius, "m")
-        )),
+        Shape::Power { radius, exponent } => Some(
+            punch("power punch")
+                .then(format!("n = {exponent},"))
+                .then(format!("R = {}", format_si(*radius, "m"))),
+        ),
         Shape::Flat {
             half_width,
             edge_radius,
-        } if *edge_radius == 0.0 => Some(format!(
-            "flat punch c = {}, sharp corners",
-            format_si(*half_width, "m")
-        )),
-        Shape::Flat {
-            half_width,
-            edge_radius,
-        } => Some(format!(
-            "flat punch c = {}, edges r = {}",
-            format_si(*half_width, "m"),
-            format_si(*edge_radius, "m")
-        )),
-        Shape::Table(t) => Some(format!("profile {}", t.file)),
+        } => {
+            let face = punch("flat punch").then(format!("c = {},", format_si(*half_width, "m")));
+            Some(if *edge_radius == 0.0 {
+                face.then("sharp corners")
+            } else {
+                face.then(format!("edges r = {}", format_si(*edge_radius, "m")))
+            })
+        }
+        Shape::Table(t) => Some(punch("profile").then(t.file.clone())),
     }
 }
 

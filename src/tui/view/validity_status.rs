@@ -102,8 +102,8 @@ pub fn lines(
 
 /// A plane status: `items` packed into lines, then the validity lines in the room left (the
 /// dimensional status and the dimensionless view share it).
-pub fn with_validity(
-    items: &[String],
+pub fn with_validity<P: Clone + Into<Phrase>>(
+    items: &[P],
     p: &OperatingPoint,
     check: Option<&StripCheck>,
     style: RenderOptions,
