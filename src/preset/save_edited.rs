@@ -84,6 +84,11 @@ pub fn with_data_files_of(preset: &Preset, saved: &Preset) -> Preset {
     {
         out.plane.shape = Some(Shape::Table(Arc::clone(theirs)));
     }
+    if let (Some(mine), Some(theirs)) = (&preset.plane.measured, &saved.plane.measured)
+        && mine.spline == theirs.spline
+    {
+        out.plane.measured = Some(Arc::clone(theirs));
+    }
     if let (Some(mine), Some(theirs)) = (&preset.spatial.surface, &saved.spatial.surface)
         && mine.surface == theirs.surface
         && matches!(mine.source, SurfaceSource::File { .. })
@@ -104,12 +109,17 @@ fn folder(path: &Path) -> &Path {
 /// `preset` with its data files, named relative to the folder `from`, named from `to`.
 fn data_files_moved(preset: &Preset, from: &Path, to: &Path) -> Preset {
     let mut out = preset.clone();
-    if let Some(Shape::Table(t)) = &preset.plane.shape {
-        out.plane.shape = Some(Shape::Table(Arc::new(Table {
+    let table_moved = |t: &Arc<Table>| {
+        Arc::new(Table {
             file: moved(&t.file, from, to),
             spline: t.spline.clone(),
-        })));
+        })
+    };
+    if let Some(Shape::Table(t)) = &preset.plane.shape {
+        out.plane.shape = Some(Shape::Table(table_moved(t)));
     }
+    // the profile the form can return to is named from the new folder too
+    out.plane.measured = preset.plane.measured.as_ref().map(table_moved);
     if let Some(s) = &preset.spatial.surface
         && let SurfaceSource::File {
             file,
