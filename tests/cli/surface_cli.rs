@@ -1,24 +1,12 @@
 //! A height-map punch (`spatial.surface`) as a script meets it: the file read beside its preset,
 //! the JSON's `surface` keys, `--write-surface` reading back, and the refusals in words.
 
+use crate::run::SURFACE_PRESET as PRESET;
 use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
 use serde_json::Value;
-
-const PRESET: &str = "schema = 1
-problem = \"spatial\"
-[material]
-youngs_modulus = 2.0e11
-poisson_ratio = 0.3
-thickness = inf
-[wear]
-coefficient = 1.0e-12
-[spatial]
-mean_pressure = 1.0e9
-sliding_speed = 1.0
-";
 
 /// `wearlab solve` of `dir/p.toml` with `args`: (exit code, stdout, stderr).
 fn solve(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {

@@ -1,24 +1,12 @@
 //! A generated surface's keys changed by `--set spatial.surface.NAME=VALUE` with the checks of the
 //! preset file, and `spatial.grid` refused beside a height map (the map's own grid is solved).
 
+use crate::run::SURFACE_PRESET as PRESET;
 use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
 use serde_json::Value;
-
-const PRESET: &str = "schema = 1
-problem = \"spatial\"
-[material]
-youngs_modulus = 2.0e11
-poisson_ratio = 0.3
-thickness = inf
-[wear]
-coefficient = 1.0e-12
-[spatial]
-mean_pressure = 1.0e9
-sliding_speed = 1.0
-";
 
 const GENERATED: &str = "surface = { kind = \"self-affine\", hurst = 0.8, rms_height = \"2 nm\", \
     rolloff_wavelength = \"250 um\", cutoff_wavelength = \"50 um\", length_x = \"1 mm\", \

@@ -2,25 +2,13 @@
 //! radially averaged PSD at t: a single cosine against its closed forms, and a generated
 //! self-affine map's PSD slope against its Hurst exponent.
 
+use crate::run::SURFACE_PRESET as PRESET;
 use std::f64::consts::PI;
 use std::path::Path;
 use std::time::Duration;
 
 use assert_cmd::Command;
 use serde_json::Value;
-
-const PRESET: &str = "schema = 1
-problem = \"spatial\"
-[material]
-youngs_modulus = 2.0e11
-poisson_ratio = 0.3
-thickness = inf
-[wear]
-coefficient = 1.0e-12
-[spatial]
-mean_pressure = 1.0e9
-sliding_speed = 1.0
-";
 
 fn solve_json(dir: &Path, surface: &str) -> Value {
     std::fs::write(dir.join("p.toml"), format!("{PRESET}surface = {surface}\n")).unwrap();
