@@ -3,14 +3,13 @@
 
 use std::path::PathBuf;
 
+pub use crate::tui::messages::{Command, Msg};
 pub use crate::tui::picker_entry::{PickerEntry, found};
 use crate::tui::text_field::TextField;
 
 use crate::engine::{Answer, Request};
 use crate::preset::{Origin, Preset, Problem, SaveTarget};
-use ratatui::crossterm::event::KeyEvent;
 
-use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
@@ -222,74 +221,6 @@ impl Pin {
             n => format!("pin: {}, +{} more", differ[..3].join(", "), n - 3),
         }
     }
-}
-
-/// Input to `update`: keys, time, and what the loop's I/O and the worker report.
-#[derive(Clone, Debug)]
-pub enum Msg {
-    /// A key press.
-    Key(KeyEvent),
-    /// Time passes while playing (spatial).
-    Tick,
-    /// The worker answered (a stage of) a request.
-    Answer(Box<Answer>),
-    /// The presets to offer in the picker.
-    PresetsListed(Vec<PickerEntry>),
-    /// A preset file named by a path typed in the picker, read.
-    PresetRead(Box<PickerEntry>),
-    /// A save needs confirmation: the file exists.
-    SaveExists(SaveTarget),
-    /// A save finished: the preset written and what to say of it, or why not.
-    Saved(SaveTarget, Box<Preset>, Result<String, String>),
-    /// An export needs confirmation: the file exists (the file, the text to write).
-    ExportExists(PathBuf, String),
-    /// An export finished: the file, or why not.
-    Exported(PathBuf, Result<(), String>),
-    /// The explorer's thread answered (a pass of) a sweep or a map.
-    Explored(Box<SweepAnswer>),
-    /// The program's answers to the lesson's questions at these inputs (each SI, or why not).
-    LessonAnswered(Box<Preset>, Vec<Result<f64, String>>),
-}
-
-/// What the loop must do after an update (the I/O and the solving happen there).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Command {
-    /// Solve this request (generation number attached).
-    Solve(u64, Box<Request>),
-    /// List the bundled presets, the shared folders and the user's folder, answered by
-    /// `PresetsListed`.
-    ListPresets,
-    /// Read the preset file at this path, answered by `PresetRead`.
-    ReadPreset(PathBuf),
-    /// Write the preset; refuse an existing file unless `overwrite`. Answered by `Saved` or
-    /// `SaveExists`.
-    Save {
-        /// Where.
-        target: SaveTarget,
-        /// What.
-        preset: Box<Preset>,
-        /// Replace an existing file.
-        overwrite: bool,
-        /// The file it was opened from or last saved to, whose text the save keeps.
-        origin: Option<Box<Origin>>,
-    },
-    /// Write this text to this file; refuse an existing file unless `overwrite`. Answered by
-    /// `Exported` or `ExportExists`.
-    Export {
-        /// Where.
-        path: PathBuf,
-        /// What.
-        text: String,
-        /// Replace an existing file.
-        overwrite: bool,
-    },
-    /// Compute this sweep or map on the explorer's thread (cancelling older work), answered
-    /// by `SweepResult`.
-    Explore(u64, Box<SweepRequest>),
-    /// Answer the lesson's questions at these inputs, answered by `LessonAnswered`.
-    AnswerLesson(Box<Preset>),
-    /// Leave.
-    Quit,
 }
 
 /// Where files go: read once at start, so that `update` stays a pure function.

@@ -15,6 +15,7 @@ pub mod keys;
 pub mod lesson_keys;
 pub mod lesson_state;
 pub mod map_cursor;
+pub mod messages;
 pub mod on_screen;
 pub mod picker_entry;
 pub mod picker_keys;

@@ -18,6 +18,7 @@ mod map_cursor;
 mod monkey;
 mod partial;
 mod picker;
+mod regime_map;
 mod replay;
 mod save_prompt;
 mod screens;
