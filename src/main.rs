@@ -66,6 +66,10 @@ enum Command {
         /// CSV.
         #[arg(long, value_name = "FILE", conflicts_with = "output")]
         write_surface: Option<PathBuf>,
+        /// Also compute mu* against the mean pressure over spatial.sweep (spatial, JSON; on the
+        /// period cell a contact solve a point). The plane report always holds its load sweep.
+        #[arg(long, conflicts_with = "output")]
+        sweep: bool,
     },
     /// Solve a preset over a range of one parameter (a curve) or two (a grid); rows on stdout.
     Sweep {
@@ -140,6 +144,7 @@ fn main() -> ExitCode {
             max_seconds,
             output,
             write_surface,
+            sweep,
         }) => solve::run(
             &preset,
             format,
@@ -152,6 +157,7 @@ fn main() -> ExitCode {
                 max_seconds,
                 output,
                 write_surface,
+                sweep,
             },
         ),
         Some(Command::Sweep {

@@ -11,17 +11,19 @@ use crate::physics::spatial::result::{FieldTable, SpatialResult};
 use crate::preset::Preset;
 
 /// Solves a spatial preset at time `time` (the preset's own when None) with probes at `probes`,
-/// mu* against pbar over the preset's sweep.
+/// and when `sweep`, mu* against pbar over the preset's sweep (on the period cell each of its
+/// points is a contact solve: several times the cost of the solve itself).
 pub fn spatial_report(
     preset: &Preset,
     time: Option<f64>,
     probes: &[[f64; 2]],
+    sweep: bool,
 ) -> Result<SpatialResult, SolveError> {
     let mut at = preset.spatial_state_at();
     if let Some(t) = time {
         at.time = t;
     }
-    pipeline::solve(&preset.spatial_inputs(), &at, probes, true)
+    pipeline::solve(&preset.spatial_inputs(), &at, probes, sweep)
 }
 
 /// The columns of the field's CSV.

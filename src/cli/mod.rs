@@ -28,7 +28,7 @@ pub const EXIT_INVALID: u8 = 2;
 pub const EXIT_UNSOLVABLE: u8 = 3;
 
 /// The text format of a result on stdout.
-#[derive(Clone, Copy, ValueEnum)]
+#[derive(Clone, Copy, PartialEq, ValueEnum)]
 pub enum Format {
     Json,
     Csv,

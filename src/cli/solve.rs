@@ -67,6 +67,9 @@ pub struct Overrides {
     pub output: Option<String>,
     /// `--write-surface FILE`: also write the punch surface at t as a height-map CSV.
     pub write_surface: Option<PathBuf>,
+    /// `--sweep`: also compute mu* against the mean pressure (spatial, JSON); the plane report
+    /// always holds its load sweep.
+    pub sweep: bool,
 }
 
 impl Overrides {
@@ -117,7 +120,12 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         );
         return ExitCode::from(EXIT_INVALID);
     }
+    if options.sweep && format == Some(Format::Csv) {
+        say("error: --sweep adds the mu* curve to the JSON report; the CSV is the field alone");
+        return ExitCode::from(EXIT_INVALID);
+    }
     let format = format.unwrap_or(Format::Json);
+    let sweep = options.sweep;
     let (time, probes) = (options.time, options.probes.clone());
     let points = options.points.unwrap_or(DEFAULT_POINTS);
     let write_surface = options.write_surface.clone();
@@ -132,6 +140,7 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
                 time,
                 probes: &probes,
                 write_surface: write_surface.as_deref(),
+                sweep,
             };
             answer(&preset, &asked)
         },
@@ -163,6 +172,7 @@ struct Asked<'a> {
     time: Option<f64>,
     probes: &'a [[f64; 2]],
     write_surface: Option<&'a Path>,
+    sweep: bool,
 }
 
 /// Solves the preset, writes the surface when asked and prints its report.
@@ -183,7 +193,8 @@ fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
             }
             Err(e) => solver_failure(e),
         },
-        Problem::Spatial => match spatial_report::spatial_report(preset, time, probes) {
+        Problem::Spatial => match spatial_report::spatial_report(preset, time, probes, asked.sweep)
+        {
             Ok(r)
                 if asked
                     .write_surface

@@ -168,6 +168,7 @@ fn spatial_json_has_every_key_of_the_contract() {
             "0,0",
             "--probe",
             "1e-3,2e-4",
+            "--sweep",
         ])
         .output()
         .unwrap();
@@ -578,4 +579,27 @@ fn solve_gives_the_verdict_measured_against_the_strip_model_where_it_can() {
         .unwrap();
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(v["validity"]["measured_error"].is_null());
+}
+
+#[test]
+fn the_spatial_mu_star_curve_is_computed_only_when_asked() {
+    // on the period cell every point of the curve is a contact solve (several times the solve
+    // itself), so `solve` leaves it out unless `--sweep` asks for it; the CSV is the field alone
+    let (code, out, err) = crate::run::wearlab(&["solve", "presets/dispersion.toml"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert!(v["sweep"].is_null(), "{}", v["sweep"]);
+    assert!(v["mu_star"].is_number());
+    let (code, _, err) = crate::run::wearlab(&[
+        "solve",
+        "presets/dispersion.toml",
+        "--sweep",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--sweep adds the mu* curve to the JSON report"),
+        "{err}"
+    );
 }

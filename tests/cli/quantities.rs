@@ -36,9 +36,9 @@ fn every_report_quantity_is_the_report_key_with_the_reports_value() {
         let p = b.load().unwrap();
         let json = match p.problem {
             Problem::Plane => report::to_json(&report::plane_report(&p, 2).unwrap()),
-            Problem::Spatial => {
-                report::to_json(&wearlab::spatial_report::spatial_report(&p, None, &[]).unwrap())
-            }
+            Problem::Spatial => report::to_json(
+                &wearlab::spatial_report::spatial_report(&p, None, &[], false).unwrap(),
+            ),
         };
         let json: Value = serde_json::from_str(&json).unwrap();
         let point = solve(&p).unwrap();
