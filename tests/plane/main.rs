@@ -13,6 +13,7 @@ mod plane_general;
 mod plane_general_strip;
 mod plane_narrow;
 mod plane_narrow_general;
+mod plane_refinement;
 mod plane_sharp;
 mod plane_strip;
 mod plane_surface;

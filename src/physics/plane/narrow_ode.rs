@@ -59,6 +59,8 @@ struct Shooter<'a> {
     kinks: Vec<f64>,
     /// A power punch with n < 2, whose curvature is infinite at the tip.
     blunt_tip: bool,
+    /// How many times finer than `STEPS` (and the stiffness bound) the steps are, >= 1.
+    refine: f64,
 }
 
 /// One shot from b: the trailing end, the integrals over [-a, b] and the nodes.
@@ -105,7 +107,7 @@ impl Shooter<'_> {
         let mut nodes = vec![(b, 0.0, self.rate(b, &y)[0])];
         let range = self.inputs.shape.range();
         for _ in 0..MAX_STEPS {
-            let mut size = h.min(0.5 / stiffness(y[0]).max(f64::MIN_POSITIVE));
+            let mut size = h.min(0.5 / self.refine / stiffness(y[0]).max(f64::MIN_POSITIVE));
             if self.blunt_tip {
                 // g' ~ |x|^(n-1) with n < 2: steps graded geometrically towards the tip keep the
                 // fourth order that a uniform step loses there
@@ -152,13 +154,14 @@ impl Shooter<'_> {
         )))
     }
 
-    /// The shot from b with about STEPS steps across its contact: a first shot sized by b, then
-    /// one sized by the contact it found.
+    /// The shot from b with about STEPS (times `refine`) steps across its contact: a first shot
+    /// sized by b, then one sized by the contact it found.
     fn settled(&self, b: f64, scale: f64) -> Result<Option<Shot>, SolveError> {
-        let Some(first) = self.shoot(b, scale / STEPS)? else {
+        let steps = STEPS * self.refine;
+        let Some(first) = self.shoot(b, scale / steps)? else {
             return Ok(None);
         };
-        self.shoot(b, (first.a + b) / STEPS)
+        self.shoot(b, (first.a + b) / steps)
     }
 
     /// P(b) - P: the load the shot from b carries (0 without contact), less the inputs' load.
@@ -176,6 +179,12 @@ impl Shooter<'_> {
 
 /// Solves the Winkler problem for any shape and law at the inputs' load.
 pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
+    solve_refined(inputs, 1)
+}
+
+/// `solve` with `factor` >= 1 times `STEPS` Runge-Kutta steps across the contact: the
+/// discretisation error is the difference from `solve`'s answer.
+pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolution, SolveError> {
     if inputs.shape.is_sharp() {
         return Err(SolveError::InvalidInput(
             "the narrow model's shooting needs a rounded edge (edge_radius > 0): on sharp corners \
@@ -193,6 +202,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
             k
         },
         blunt_tip: matches!(inputs.shape, Shape::Power { exponent, .. } if exponent < 2.0),
+        refine: factor.max(1) as f64,
     };
     let p = inputs.load;
     let radius = inputs.shape.radius();

@@ -7,13 +7,23 @@
 use std::sync::Arc;
 
 use crate::physics::SolveError;
-use crate::physics::plane::general::{NODES, Problem, solve as solve_general};
+use crate::physics::plane::general::{NODES, Problem, solve_refined as solve_general};
 use crate::physics::plane::strip::{Kernels, kernels_for};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw};
 
 /// The wide or strip model's solution of smooth, non-classical inputs; an error when the
 /// general solver does not converge or the contact runs off a measured profile.
 pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveError> {
+    solve_refined(inputs, model, 1)
+}
+
+/// `solve` with `factor` >= 1 times the node count it would choose (`general::solve_refined`):
+/// the discretisation error is the difference from `solve`'s answer.
+pub fn solve_refined(
+    inputs: &PlaneInputs,
+    model: Model,
+    factor: usize,
+) -> Result<PlaneSolution, SolveError> {
     let kernels = (model == Model::Strip).then(|| kernels_for(inputs.material.poisson_ratio));
     let problem = Problem {
         material: inputs.material,
@@ -23,7 +33,7 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
         load: inputs.load,
         strip: kernels.as_deref().map(|k| k as &dyn Kernels),
     };
-    let sol = solve_general(&problem, NODES)?;
+    let sol = solve_general(&problem, NODES, factor)?;
     inputs.shape.covers(sol.a, sol.b)?;
     let p = &sol.pressure;
     let kinks: Arc<[f64]> = problem

@@ -171,6 +171,17 @@ pub struct Solution {
 /// `COARSE_NODES` nodes, then refined with `nodes`, or on the strip of any thickness with the
 /// strip solver's count if that is more (`strip::nodes_for`: the kernels vary on the scale h).
 pub fn solve(problem: &Problem, nodes: usize) -> Result<Solution, SolveError> {
+    solve_refined(problem, nodes, 1)
+}
+
+/// `solve` with the final node count (the one it would choose) multiplied by `factor` >= 1: the
+/// same problem on a finer discretisation, whose difference from `solve`'s answer measures the
+/// discretisation error.
+pub fn solve_refined(
+    problem: &Problem,
+    nodes: usize,
+    factor: usize,
+) -> Result<Solution, SolveError> {
     let theta = problem.theta();
     let (near, nodes) = match problem.strip {
         None => {
@@ -192,7 +203,7 @@ pub fn solve(problem: &Problem, nodes: usize) -> Result<Solution, SolveError> {
             (near, wanted.max(nodes))
         }
     };
-    let d = Discretisation::new(theta, nodes);
+    let d = Discretisation::new(theta, nodes * factor.max(1));
     let (l, unknowns) = width::solve(problem, &d, Some(near))?;
     Ok(assemble(problem, unknowns.pressure(&d, problem, l)))
 }
