@@ -22,14 +22,30 @@ pub(super) fn kind(p: &Preset) -> usize {
 }
 
 /// The radius of the parabola that stands in for the current punch when the kind changes: the
-/// parabola's and the power punch's R, the flat's edge radius (the parabola's radius when its
-/// corners are sharp, or for a measured profile).
+/// parabola's and the power punch's R, the flat's edge radius, a measured profile's
+/// `table_radius` (the parabola's radius when the flat's corners are sharp, or when the profile
+/// does not rise at its ends).
 fn stand_in_radius(p: &Preset) -> f64 {
     match &p.plane.shape {
         Some(Shape::Power { radius, .. }) => *radius,
         Some(Shape::Flat { edge_radius, .. }) if *edge_radius > 0.0 => *edge_radius,
+        Some(table @ Shape::Table(_)) => table_radius(table).unwrap_or(p.plane.radius),
         _ => p.plane.radius,
     }
+}
+
+/// The radius [m] of the parabola g = x^2/(2R) through a measured profile's two ends (R =
+/// x^2/(2 g(x)) at each, averaged; within `limits::RADIUS`): the profile's size, which its tip
+/// alone (worn flat, say) does not give, and not the preset's parabola radius, which a table
+/// leaves unused at its default. None when the profile does not rise at both ends.
+fn table_radius(table: &Shape) -> Option<f64> {
+    let (lo, hi) = table.range()?;
+    let at = |x: f64| {
+        let g = table.g(x);
+        (g > 0.0).then(|| x * x / (2.0 * g))
+    };
+    let r = 0.5 * (at(lo)? + at(hi)?);
+    Some(r.clamp(limits::RADIUS.min, limits::RADIUS.max))
 }
 
 /// Changes the punch's kind, keeping its size: the power punch starts at n = 2 (the same

@@ -184,7 +184,7 @@ impl PlaneChart {
                 build: plane::pressure,
             },
             Self::Wear => ChartSpec {
-                help: "Wear per pass: the depth a strip point loses while the punch passes over it (k times the integral of q2 from x to b). Wear rate k q2: depth per unit sliding distance.",
+                help: "Wear per pass: the depth a strip point loses while the punch passes over it (the integral of the wear rate from x to b). Wear rate F(q2) = k q2 (q2/p0)^(n-1), k q2 for the linear law n = 1: depth per unit sliding distance.",
                 overlays: false,
                 build: plane::wear,
             },

@@ -88,6 +88,7 @@ pub(super) fn pressure(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure
 pub(super) fn wear(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
     let op = point(out)?;
     let p = &op.profile;
+    let (axis, law) = wear_law(op.solution.inputs.wear.exponent);
     Ok(Figure::Plots(vec![
         along_x(
             op,
@@ -100,14 +101,24 @@ pub(super) fn wear(_: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
         ),
         along_x(
             op,
-            "k q2",
+            axis,
             "",
             vec![Series {
-                name: "wear rate k q2".into(),
+                name: format!("wear rate {law}"),
                 points: zip(&p.x, &p.wear_rate),
             }],
         ),
     ]))
+}
+
+/// The wear rate's axis label and its law as the legend writes it: k q2 for the linear law,
+/// k q2 (q2/p0)^(n-1) with n's value otherwise.
+fn wear_law(exponent: f64) -> (&'static str, String) {
+    if exponent == 1.0 {
+        ("k q2", "k q2".into())
+    } else {
+        ("F(q2)", format!("k q2 (q2/p0)^(n-1), n = {exponent}"))
+    }
 }
 
 pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {

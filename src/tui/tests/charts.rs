@@ -248,3 +248,24 @@ fn without_a_duration_the_time_charts_span_five_of_the_slowest_decay_times() {
         assert!((slowest / (-5f64).exp() - 1.0).abs() < 1e-9, "{slowest}");
     }
 }
+
+#[test]
+fn the_wear_chart_names_the_wear_law_it_draws() {
+    use crate::tui::charts::PlaneChart;
+    for (file, axis, legend) in [
+        ("polymer-coating.toml", "k q2", "wear rate k q2"),
+        (
+            "wear-law-squared.toml",
+            "F(q2)",
+            "wear rate k q2 (q2/p0)^(n-1), n = 2",
+        ),
+    ] {
+        let answer = complete(file);
+        let Ok(Figure::Plots(plots)) = Chart::Plane(PlaneChart::Wear).build(&answer) else {
+            panic!("{file}: no wear chart")
+        };
+        let rate = &plots[1];
+        assert_eq!(rate.y.label, axis, "{file}");
+        assert_eq!(rate.series[0].name, legend, "{file}");
+    }
+}

@@ -141,3 +141,27 @@ fn a_measured_profile_shows_its_file_and_range_and_cannot_be_edited() {
     press(&mut app, KeyCode::Left);
     assert_eq!(app.doc.preset.plane.shape, table);
 }
+
+#[test]
+fn a_measured_profile_hands_its_own_size_to_the_flat_and_the_parabola() {
+    // worn-pin.csv's header: g = (sqrt(x^4 + w^4) - w^2)/(2R), R = 10 mm, w = 0.3 mm, over
+    // [-2, 2] mm (rounded to 1 nm, 5e-6 of g there); the parabola through its ends has
+    // R x^2/(sqrt(x^4 + w^4) - w^2) at x = 2 mm, not the 50 mm the preset leaves unused
+    let (r, w, x) = (0.01f64, 3e-4f64, 2e-3f64);
+    let through_ends = r * x * x / ((x.powi(4) + w.powi(4)).sqrt() - w * w);
+    let mut app = app("worn-pin-profile.toml");
+    select(&mut app, "shape", None);
+    press(&mut app, KeyCode::Right);
+    assert_eq!(app.doc.preset.plane.shape, None);
+    let radius = app.doc.preset.plane.radius;
+    assert!((radius / through_ends - 1.0).abs() < 1e-4, "{radius}");
+    press(&mut app, KeyCode::Left);
+    press(&mut app, KeyCode::Left);
+    let Some(Shape::Flat { edge_radius, .. }) = app.doc.preset.plane.shape.clone() else {
+        panic!("{:?}", app.doc.preset.plane.shape)
+    };
+    assert!(
+        (edge_radius / through_ends - 1.0).abs() < 1e-4,
+        "{edge_radius}"
+    );
+}
