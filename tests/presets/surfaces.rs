@@ -48,3 +48,42 @@ fn the_thin_layer_wears_every_mode_at_one_rate_as_its_description_says() {
     assert!(near(ratio(s), 2.56e4, 0.002) && near(ratio(s0), 2.56e4, 0.002));
     assert!(near(r.contact.min_pressure, 50e6, 0.003));
 }
+
+#[test]
+fn the_ground_profile_loses_its_short_waves_first_as_its_description_says() {
+    let p = preset::bundled("ground-profile.toml").unwrap().unwrap();
+    let inputs = p.spatial_inputs();
+    let solve = |t: f64| {
+        let mut at = p.spatial_state_at();
+        at.time = t;
+        pipeline::solve(&inputs, &at, &[], false).unwrap()
+    };
+    let (start, end) = (solve(0.0), solve(p.spatial.time));
+    let (s0, s) = (start.surface.unwrap(), end.surface.unwrap());
+    let psd_ratio = |bin: usize| s0.psd.psd[bin] / s.psd.psd[bin];
+    let last = s.psd.psd.len() - 1;
+    println!(
+        "t = 0: fraction {:.4}, p_max {:.4e}, skewness {:.3}, complete from {:?} s; t = {}: rms \
+         {:.4e} m, slope {:.4e}, PSD first bin / {:.2}, last / {:.1e}",
+        start.contact.fraction,
+        start.max_pressure,
+        s0.skewness,
+        start.contact.time_to_complete,
+        end.time,
+        s.rms_height,
+        s.rms_slope,
+        psd_ratio(0),
+        psd_ratio(last)
+    );
+    assert!(near(start.contact.fraction, 0.86, 0.005));
+    assert!(near(start.max_pressure, 149e6, 0.005));
+    assert!(near(s0.rms_height, 0.25e-6, 0.005));
+    assert!(near(s0.skewness, -0.35, 0.01));
+    assert!(near(start.contact.time_to_complete.unwrap(), 0.88, 0.005));
+    assert!(end.contact.complete);
+    // a third of the height, a tenth of the slope: the short waves went first
+    assert!(near(s.rms_height, 79e-9, 0.005));
+    assert!(near(s.rms_slope, 1.8e-3, 0.02));
+    assert!(near(psd_ratio(0), 6.5, 0.01));
+    assert!((24.0..25.5).contains(&psd_ratio(last).log10()));
+}
