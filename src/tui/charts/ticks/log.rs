@@ -61,6 +61,18 @@ pub(super) fn logarithmic([a, b]: [f64; 2], label: &str, unit: &str, max: usize)
         let (step, _, _, ks) = nice_step(lo, hi, max);
         ks.iter().map(|k| k * step).collect()
     };
+    // over two to three decades where 1-2-5 is too dense and the decades leave an end bare
+    // (100 N/m to 60 kN/m labelled to 10k leaves 0.28 of it): half decades, where they fit
+    let half = within(&[1.0, 3.0]);
+    let values = if bare(&values) > BARE_END
+        && b - a <= 3.0
+        && half.len() <= max
+        && bare(&half) < bare(&values)
+    {
+        half
+    } else {
+        values
+    };
     Ticks {
         ticks: with_labels(Scale::Log, values, unit),
         title,
