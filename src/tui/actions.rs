@@ -122,6 +122,12 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             });
             Vec::new()
         }
+        Action::AddHarmonic | Action::RemoveHarmonic
+            if app.doc.preset.spatial.surface.is_some() =>
+        {
+            app.complain("the punch is a height map (spatial.surface): it has no harmonics");
+            Vec::new()
+        }
         Action::AddHarmonic => add_harmonic(app),
         Action::RemoveHarmonic => remove_harmonic(app),
         Action::Open => vec![Command::ListPresets],
