@@ -6,8 +6,10 @@ use std::io::{self, Write};
 
 use crate::finite::{self, NonFinite};
 use crate::physics::SolveError;
+use crate::physics::spatial::partial::running_in::Stopped;
 use crate::physics::spatial::pipeline;
 use crate::physics::spatial::result::{FieldTable, SpatialResult};
+use crate::physics::stop::Stop;
 use crate::preset::Preset;
 
 /// Solves a spatial preset at time `time` (the preset's own when None) with probes at `probes`,
@@ -19,11 +21,22 @@ pub fn spatial_report(
     probes: &[[f64; 2]],
     sweep: bool,
 ) -> Result<SpatialResult, SolveError> {
+    spatial_report_until(preset, time, probes, sweep, Stop::Never).map_err(SolveError::from)
+}
+
+/// As [`spatial_report`], told to stop by `stop` (`pipeline::solve_until`).
+pub fn spatial_report_until(
+    preset: &Preset,
+    time: Option<f64>,
+    probes: &[[f64; 2]],
+    sweep: bool,
+    stop: Stop,
+) -> Result<SpatialResult, Stopped> {
     let mut at = preset.spatial_state_at();
     if let Some(t) = time {
         at.time = t;
     }
-    pipeline::solve(&preset.spatial_inputs(), &at, probes, sweep)
+    pipeline::solve_until(&preset.spatial_inputs(), &at, probes, sweep, stop)
 }
 
 /// The columns of the field's CSV.

@@ -10,6 +10,7 @@ use serde_json::{Map, Value, json};
 
 use wearlab::data::{self, DataSet};
 use wearlab::fit::{self, Fit, FitError};
+use wearlab::physics::stop::Stop;
 use wearlab::preset::{self, Key, Preset};
 use wearlab::{finite, units};
 
@@ -59,22 +60,32 @@ pub fn run(request: &Request) -> ExitCode {
         Ok(k) => k,
         Err(why) => return invalid(&why),
     };
-    let write = request.write.map(Path::to_path_buf);
     let bounded = within(
         request.max_seconds,
-        move || answer(&preset, &data, &keys, write.as_deref()),
+        |stop| answer(&preset, &data, &keys, request.write, stop),
         &|| {},
     );
-    finished(bounded, &|| "the fit was not finished".into())
+    finished(bounded)
 }
 
-fn answer(preset: &Preset, data: &DataSet, keys: &[Key], write: Option<&Path>) -> ExitCode {
-    let fitted = match fit::fit(preset, data, keys) {
+/// Fits and prints the report; Err (nothing written) when `stop` said so before the fit was done.
+fn answer(
+    preset: &Preset,
+    data: &DataSet,
+    keys: &[Key],
+    write: Option<&Path>,
+    stop: Stop,
+) -> Result<ExitCode, String> {
+    let fitted = fit::fit_until(preset, data, keys, stop);
+    if stop.now() {
+        return Err("the fit was not finished".into());
+    }
+    let fitted = match fitted {
         Ok(f) => f,
-        Err(FitError::Invalid(why)) => return invalid(&why),
+        Err(FitError::Invalid(why)) => return Ok(invalid(&why)),
         Err(FitError::NoFit(why)) => {
             say(&format!("error: {why}"));
-            return ExitCode::from(EXIT_UNSOLVABLE);
+            return Ok(ExitCode::from(EXIT_UNSOLVABLE));
         }
     };
     let report = json(data, &fitted, write);
@@ -82,10 +93,10 @@ fn answer(preset: &Preset, data: &DataSet, keys: &[Key], write: Option<&Path>) -
         && let Err(e) = preset::save(&fitted.preset, out)
     {
         say(&format!("error: cannot write {}: {e}", out.display()));
-        return ExitCode::from(EXIT_OUTPUT);
+        return Ok(ExitCode::from(EXIT_OUTPUT));
     }
     let text = serde_json::to_string_pretty(&report).unwrap_or_default() + "\n";
-    print(&text, finite::check(&report))
+    Ok(print(&text, finite::check(&report)))
 }
 
 /// The JSON report of a fit (keys of docs/cli.md).

@@ -4,11 +4,14 @@
 use std::io::{self, Write};
 use std::path::Path;
 use std::process::ExitCode;
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
 
 use clap::ValueEnum;
 
 use wearlab::finite;
 use wearlab::physics::SolveError;
+use wearlab::physics::stop::Stop;
 use wearlab::preset::{self, Preset};
 use wearlab::units::format_si;
 
@@ -26,6 +29,9 @@ pub const EXIT_OUTPUT: u8 = 1;
 pub const EXIT_INVALID: u8 = 2;
 /// Exit code when the solver cannot answer.
 pub const EXIT_UNSOLVABLE: u8 = 3;
+
+/// How far a solve stopped by `--max-seconds` got.
+pub const SOLVE_NOT_FINISHED: &str = "the solve had not finished";
 
 /// The text format of a result on stdout.
 #[derive(Clone, Copy, PartialEq, ValueEnum)]
@@ -141,48 +147,54 @@ pub fn parse_seconds(text: &str) -> Result<f64, String> {
 pub enum Bounded<T> {
     /// It finished with this.
     Done(T),
-    /// The bound came first, after this many seconds.
-    Stopped(f64),
+    /// The bound stopped it after this many seconds, saying how far it got.
+    Stopped(f64, String),
     /// The work panicked (its message is on stderr already).
     Panicked,
 }
 
-/// Runs `work` on a thread of its own and waits for it at most `limit` seconds (for ever when
-/// None), calling `tick` every tenth of a second meanwhile (a progress display). Work stopped by
-/// the bound is left running: the process exits with exit code 3 right after.
-pub fn within<T: Send + 'static>(
+/// Runs `work` on a thread of its own, handing it a `Stop` that says so once `limit` seconds
+/// have passed (never when None): the work asks it between its steps (and inside its contact
+/// solves) and returns Err, saying how far it got, when it stopped. Meanwhile `tick` is called
+/// every tenth of a second (a progress display). The work's thread has ended when this returns:
+/// nothing is left running.
+pub fn within<T: Send>(
     limit: Option<f64>,
-    work: impl FnOnce() -> T + Send + 'static,
+    work: impl FnOnce(Stop) -> Result<T, String> + Send,
     tick: &dyn Fn(),
 ) -> Bounded<T> {
-    let (tx, rx) = std::sync::mpsc::channel();
-    std::thread::spawn(move || {
-        let _ = tx.send(work());
-    });
-    let start = std::time::Instant::now();
-    let bound = limit.map(std::time::Duration::from_secs_f64);
-    loop {
-        match rx.recv_timeout(std::time::Duration::from_millis(100)) {
-            Ok(done) => return Bounded::Done(done),
-            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => return Bounded::Panicked,
-            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {}
+    let start = Instant::now();
+    let bound = limit.map(Duration::from_secs_f64);
+    let passed = || bound.is_some_and(|b| start.elapsed() >= b);
+    std::thread::scope(|scope| {
+        let (tx, rx) = mpsc::channel();
+        let worker = scope.spawn(move || {
+            let _ = tx.send(work(Stop::Asked(&passed)));
+        });
+        let outcome = loop {
+            match rx.recv_timeout(Duration::from_millis(100)) {
+                Ok(outcome) => break Some(outcome),
+                Err(mpsc::RecvTimeoutError::Disconnected) => break None,
+                Err(mpsc::RecvTimeoutError::Timeout) => tick(),
+            }
+        };
+        let joined = worker.join();
+        match (outcome, joined) {
+            (Some(Ok(done)), Ok(())) => Bounded::Done(done),
+            (Some(Err(what)), Ok(())) => Bounded::Stopped(start.elapsed().as_secs_f64(), what),
+            _ => Bounded::Panicked,
         }
-        if bound.is_some_and(|b| start.elapsed() >= b) {
-            return Bounded::Stopped(start.elapsed().as_secs_f64());
-        }
-        tick();
-    }
+    })
 }
 
 /// The exit code of bounded work: its own when it finished; 3 with the reason when the bound
-/// stopped it ("stopped after S s: ..."), `what` saying how far it got.
-pub fn finished(bounded: Bounded<ExitCode>, what: &dyn Fn() -> String) -> ExitCode {
+/// stopped it ("stopped after S s (--max-seconds): " and how far it got).
+pub fn finished(bounded: Bounded<ExitCode>) -> ExitCode {
     match bounded {
         Bounded::Done(code) => code,
-        Bounded::Stopped(seconds) => {
+        Bounded::Stopped(seconds, what) => {
             say(&format!(
-                "error: stopped after {seconds:.1} s (--max-seconds): {}",
-                what()
+                "error: stopped after {seconds:.1} s (--max-seconds): {what}"
             ));
             ExitCode::from(EXIT_UNSOLVABLE)
         }

@@ -8,15 +8,17 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use wearlab::physics::limits::{self, Limit};
+use wearlab::physics::spatial::partial::running_in::Stopped;
 use wearlab::physics::spatial::result::SpatialResult;
+use wearlab::physics::stop::Stop;
 use wearlab::preset::{Links, Preset, Problem, write_atomically};
 use wearlab::{finite, report, spatial_report};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use super::{
-    EXIT_INVALID, EXIT_OUTPUT, Format, finished, load_with, print_streamed, say, solve_output,
-    solver_failure, within,
+    EXIT_INVALID, EXIT_OUTPUT, Format, SOLVE_NOT_FINISHED, finished, load_with, print_streamed,
+    say, solve_output, solver_failure, within,
 };
 
 /// Profile points when `--points` is not given.
@@ -108,10 +110,10 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         }
         let bounded = within(
             options.max_seconds,
-            move || solve_output::answer(&preset, &list, format),
+            |stop| solve_output::answer(&preset, &list, format, stop),
             &|| {},
         );
-        return finished(bounded, &|| "the solve had not finished".into());
+        return finished(bounded);
     }
     if options.write_surface.is_some() && preset.spatial.surface.is_none() {
         say(
@@ -124,30 +126,23 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         say("error: --sweep adds the mu* curve to the JSON report; the CSV is the field alone");
         return ExitCode::from(EXIT_INVALID);
     }
-    let format = format.unwrap_or(Format::Json);
-    let sweep = options.sweep;
-    let (time, probes) = (options.time, options.probes.clone());
-    let points = options.points.unwrap_or(DEFAULT_POINTS);
-    let write_surface = options.write_surface.clone();
+    let asked = Asked {
+        format: format.unwrap_or(Format::Json),
+        points: options.points.unwrap_or(DEFAULT_POINTS),
+        time: options.time,
+        probes: &options.probes,
+        write_surface: options.write_surface.as_deref(),
+        sweep: options.sweep,
+    };
     let spinner = ProgressBar::hidden();
     let start = Instant::now();
     let bounded = within(
         options.max_seconds,
-        move || {
-            let asked = Asked {
-                format,
-                points,
-                time,
-                probes: &probes,
-                write_surface: write_surface.as_deref(),
-                sweep,
-            };
-            answer(&preset, &asked)
-        },
+        |stop| answer(&preset, &asked, stop),
         &|| show_after_a_second(&spinner, start),
     );
     spinner.finish_and_clear();
-    finished(bounded, &|| "the solve had not finished".into())
+    finished(bounded)
 }
 
 /// A spinner with the time so far on stderr when it is a terminal (never in a pipe), drawn
@@ -175,41 +170,56 @@ struct Asked<'a> {
     sweep: bool,
 }
 
-/// Solves the preset, writes the surface when asked and prints its report.
-fn answer(preset: &Preset, asked: &Asked) -> ExitCode {
+/// Solves the preset, writes the surface when asked and prints its report. Err (nothing written)
+/// when `stop` said so before the answer was ready: a spatial solve asks it inside its work, a
+/// plane solve (within its solvers' own bounds) at its end.
+fn answer(preset: &Preset, asked: &Asked, stop: Stop) -> Result<ExitCode, String> {
     let (format, points, time, probes) = (asked.format, asked.points, asked.time, asked.probes);
+    // an answer ready only after the bound is not printed either
+    let in_time = || {
+        if stop.now() {
+            Err(SOLVE_NOT_FINISHED.to_string())
+        } else {
+            Ok(())
+        }
+    };
     match preset.problem {
         Problem::Plane => match report::plane_report(preset, points) {
             Ok(r) => {
+                in_time()?;
                 if let Some(y) = r.yield_check.as_ref().filter(|y| y.yields == Some(true)) {
                     say(&format!("warning: {}", y.describe()));
                 }
-                match format {
+                Ok(match format {
                     Format::Json => print_streamed(finite::check(&r), |out| json(out, &r)),
                     Format::Csv => print_streamed(report::check_profile_csv(&r.profile), |out| {
                         report::write_profile_csv(out, &r.profile)
                     }),
+                })
+            }
+            Err(e) => in_time().map(|()| solver_failure(e)),
+        },
+        Problem::Spatial => {
+            match spatial_report::spatial_report_until(preset, time, probes, asked.sweep, stop) {
+                Ok(r) => {
+                    in_time()?;
+                    if asked
+                        .write_surface
+                        .is_some_and(|path| !write_surface(path, &r))
+                    {
+                        return Ok(ExitCode::from(EXIT_OUTPUT));
+                    }
+                    Ok(match format {
+                        Format::Json => print_streamed(finite::check(&r), |out| json(out, &r)),
+                        Format::Csv => print_streamed(spatial_report::check_field_csv(&r), |out| {
+                            spatial_report::write_field_csv(out, &r)
+                        }),
+                    })
                 }
+                Err(Stopped::Cancelled) => Err(SOLVE_NOT_FINISHED.into()),
+                Err(Stopped::Failed(e)) => in_time().map(|()| solver_failure(e)),
             }
-            Err(e) => solver_failure(e),
-        },
-        Problem::Spatial => match spatial_report::spatial_report(preset, time, probes, asked.sweep)
-        {
-            Ok(r)
-                if asked
-                    .write_surface
-                    .is_some_and(|path| !write_surface(path, &r)) =>
-            {
-                ExitCode::from(EXIT_OUTPUT)
-            }
-            Ok(r) => match format {
-                Format::Json => print_streamed(finite::check(&r), |out| json(out, &r)),
-                Format::Csv => print_streamed(spatial_report::check_field_csv(&r), |out| {
-                    spatial_report::write_field_csv(out, &r)
-                }),
-            },
-            Err(e) => solver_failure(e),
-        },
+        }
     }
 }
 

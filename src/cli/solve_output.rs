@@ -7,11 +7,15 @@
 use std::process::ExitCode;
 
 use wearlab::finite;
+use wearlab::physics::spatial::partial::running_in::Stopped;
+use wearlab::physics::stop::Stop;
 use wearlab::preset::Preset;
 use wearlab::sweeps::QuantityKey;
 use wearlab::sweeps::point;
 
-use super::{EXIT_INVALID, EXIT_UNSOLVABLE, Format, print, say, solver_failure};
+use super::{
+    EXIT_INVALID, EXIT_UNSOLVABLE, Format, SOLVE_NOT_FINISHED, print, say, solver_failure,
+};
 
 /// Reads `--output`: names of the preset's quantities, separated by commas. Err names the
 /// quantities there are.
@@ -32,18 +36,25 @@ pub fn number(v: f64) -> String {
 }
 
 /// Solves the preset and prints the chosen quantities; a quantity without a value at the
-/// preset's point is exit 3 with the reason.
-pub fn answer(preset: &Preset, list: &str, format: Option<Format>) -> ExitCode {
+/// preset's point is exit 3 with the reason. Err (nothing printed) when `stop` said so before
+/// the values were ready.
+pub fn answer(
+    preset: &Preset,
+    list: &str,
+    format: Option<Format>,
+    stop: Stop,
+) -> Result<ExitCode, String> {
     let outputs = match parse(preset, list) {
         Ok(o) => o,
         Err(why) => {
             say(&format!("error: {why}"));
-            return ExitCode::from(EXIT_INVALID);
+            return Ok(ExitCode::from(EXIT_INVALID));
         }
     };
-    let point = match point::solve(preset) {
+    let point = match point::solve_until(preset, stop) {
         Ok(p) => p,
-        Err(e) => return solver_failure(e),
+        Err(Stopped::Cancelled) => return Err(SOLVE_NOT_FINISHED.into()),
+        Err(Stopped::Failed(e)) => return Ok(solver_failure(e)),
     };
     let mut values = Vec::new();
     for q in &outputs {
@@ -51,9 +62,12 @@ pub fn answer(preset: &Preset, list: &str, format: Option<Format>) -> ExitCode {
             Ok(v) => values.push(v),
             Err(why) => {
                 say(&format!("error: {q} has no value here: {why}"));
-                return ExitCode::from(EXIT_UNSOLVABLE);
+                return Ok(ExitCode::from(EXIT_UNSOLVABLE));
             }
         }
+    }
+    if stop.now() {
+        return Err(SOLVE_NOT_FINISHED.into());
     }
     let guard = finite::check(&values);
     let text = |q: &QuantityKey, v: f64| {
@@ -104,5 +118,5 @@ pub fn answer(preset: &Preset, list: &str, format: Option<Format>) -> ExitCode {
             format!("{}\n{}\n", names.join(","), row.join(","))
         }
     };
-    print(&out, guard)
+    Ok(print(&out, guard))
 }

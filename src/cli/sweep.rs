@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
+use wearlab::physics::stop::Stop;
 use wearlab::preset::Preset;
 use wearlab::sweeps::axis::{Axis, CURVE_POINTS, GRID_POINTS};
 use wearlab::sweeps::quantity::{self, QuantityKey};
@@ -127,34 +128,38 @@ pub fn run(request: &Request) -> ExitCode {
         say("error: cannot write the result to stdout: it is closed");
         return ExitCode::from(EXIT_OUTPUT);
     }
-    let points: usize = axes.iter().map(|a| a.range.points).product();
-    let bar = progress(points);
-    let worker = bar.clone();
+    let bar = progress(axes.iter().map(|a| a.range.points).product());
     let format = request.format;
     let bounded = within(
         request.max_seconds,
-        move || answer(&preset, &axes, &outputs, format, &|| worker.inc(1)),
+        |stop| answer(&preset, &axes, &outputs, format, &|| bar.inc(1), stop),
         &|| {},
     );
-    let done = bar.position();
     bar.finish_and_clear();
-    finished(bounded, &|| format!("{done} of {points} points done"))
+    finished(bounded)
 }
 
-/// Sweeps and writes each row on stdout as it is solved.
+/// Sweeps and writes each row on stdout as it is solved. Err, saying how many rows were written,
+/// when `stop` stopped the sweep (the text on stdout is then cut short where it stopped).
 fn answer(
     preset: &Preset,
     axes: &[Axis],
     outputs: &[QuantityKey],
     format: Format,
     point_done: &(dyn Fn() + Sync),
-) -> ExitCode {
+    stop: Stop,
+) -> Result<ExitCode, String> {
     let mut first_failure: Option<String> = None;
     let mut all_failed = true;
-    let rows = sweep::rows(preset, axes, outputs, point_done).inspect(|row| match &row.failure {
-        Some(why) if first_failure.is_none() => first_failure = Some(why.clone()),
-        Some(_) => {}
-        None => all_failed = false,
+    let mut written_rows = 0;
+    let rows = sweep::rows(preset, axes, outputs, point_done, stop).inspect(|row| {
+        let Ok(row) = row else { return };
+        written_rows += 1;
+        match &row.failure {
+            Some(why) if first_failure.is_none() => first_failure = Some(why.clone()),
+            Some(_) => {}
+            None => all_failed = false,
+        }
     });
     let mut out = BufWriter::new(io::stdout().lock());
     let written = match format {
@@ -163,10 +168,15 @@ fn answer(
     }
     .and_then(|()| out.flush());
     if let Err(e) = written {
+        if stop.now() {
+            let _ = out.flush();
+            let points: usize = axes.iter().map(|a| a.range.points).product();
+            return Err(format!("{written_rows} of {points} points done"));
+        }
         say(&format!("error: cannot write the result to stdout: {e}"));
-        return ExitCode::from(EXIT_OUTPUT);
+        return Ok(ExitCode::from(EXIT_OUTPUT));
     }
-    match first_failure {
+    Ok(match first_failure {
         Some(why) if all_failed => {
             say(&format!(
                 "error: no point of the sweep has an answer; the first: {why}"
@@ -174,5 +184,5 @@ fn answer(
             ExitCode::from(EXIT_UNSOLVABLE)
         }
         _ => ExitCode::SUCCESS,
-    }
+    })
 }

@@ -19,6 +19,7 @@ use crate::physics::spatial::partial::running_in::{RunningIn, Stepping, Stopped}
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::{LoadCurve, load_curve};
 use crate::physics::spatial::pipeline;
+use crate::physics::stop::{STOPPED, Stop};
 use crate::physics::{SolveError, SweepRange};
 
 /// Where the running-in stands.
@@ -123,25 +124,32 @@ pub(super) struct Ask<'a> {
     pub(super) duration: f64,
     /// The mean pressures of mu*(pbar) [Pa], when the chart that draws it is visible.
     pub(super) curve: Option<(&'a SweepRange, &'a [f64])>,
+    /// Asked inside every contact solve of the running-in and of the load curve (before each
+    /// active-set iteration and linear-solve product): a newer request ends the work inside a step.
+    pub(super) stop: Stop<'a>,
 }
 
 impl Engine {
     /// The cell output from what is cached or quick: the running-in (started on first use: one
     /// contact solve), the state at t once the running-in has reached it (a replay from its
     /// snapshots), else its last stepped state; the history so far; the load curve if cached.
-    /// Err: the contact is not solved on the cell (no period cell, a grid too coarse).
+    /// Err: the contact is not solved on the cell (no period cell, a grid too coarse), or
+    /// `ask.stop` ended the first contact solve (`stop::STOPPED`; nothing is kept).
     pub(super) fn cell_now(&mut self, ask: &Ask) -> Result<CellOutput, SolveError> {
         let key = ask.key;
         if self.runs.get_mut(key).is_none() {
-            self.counts.running_in += 1;
             let run = Setup::new(&key.inputs, key.grid).and_then(|setup| {
-                let running_in =
-                    RunningIn::start(&setup, Stepping::of(&setup, key.time_tolerance))?;
+                let stepping = Stepping::of(&setup, key.time_tolerance);
+                let running_in = RunningIn::start(&setup, stepping, ask.stop)?;
                 Ok(Run {
                     running_in,
                     stuck: None,
                 })
             });
+            if run.is_err() && ask.stop.now() {
+                return Err(SolveError::NoSolution(STOPPED.into()));
+            }
+            self.counts.running_in += 1;
             self.runs.insert(key.clone(), run);
         }
         let run = match self.runs.get_mut(key) {
@@ -189,7 +197,8 @@ impl Engine {
     /// The slow part: steps the running-in to t, then on to complete contact, then computes the
     /// load curve when asked. `deliver(output, complete)` gets progress at most every
     /// `progress_every` and the output after each part; the work stops between two wear steps
-    /// (or two points of the load curve) when `cancelled()` or `deliver` says so.
+    /// (or two points of the load curve) when `cancelled()` or `deliver` says so, and inside a
+    /// step when `ask.stop` says so (the step is not taken: a later request tries it again).
     pub(super) fn cell_rest(
         &mut self,
         ask: &Ask,
@@ -211,7 +220,7 @@ impl Engine {
             let (every, before) = (self.progress_every, run.running_in.samples.len());
             let mut last = Instant::now();
             let mut stopped = false;
-            let stepped = run.running_in.extend(until, &mut |ri| {
+            let stepped = run.running_in.extend_until(until, ask.stop, &mut |ri| {
                 if cancelled() {
                     stopped = true;
                     return ControlFlow::Break(());
@@ -243,7 +252,11 @@ impl Engine {
             });
             self.counts.wear_steps += run.running_in.samples.len() - before;
             if let Err(why) = stepped {
-                run.stuck = Some(why);
+                if ask.stop.now() {
+                    stopped = true;
+                } else {
+                    run.stuck = Some(why);
+                }
             }
             // the running-in grew in place: the older one goes when both no longer fit
             self.runs.remeasure_front();
@@ -280,7 +293,8 @@ impl Engine {
             };
             let curve = match &output.state {
                 Ok(state) => {
-                    load_curve(&run.running_in.setup, &state.shape, pressures, &mut |_| {
+                    let setup = &run.running_in.setup;
+                    load_curve(setup, &state.shape, pressures, ask.stop, &mut |_| {
                         if cancelled() {
                             ControlFlow::Break(())
                         } else {

@@ -28,6 +28,7 @@ use crate::physics::spatial::partial::history::History as RunHistory;
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::LoadCurve;
 use crate::physics::spatial::{self, SpatialInputs, SpatialState, StateAt, pipeline, state_at};
+use crate::physics::stop::Stop;
 use crate::physics::{Friction, Material, SolveError, SweepRange};
 use crate::preset::Problem;
 use cache::Cache;
@@ -154,7 +155,22 @@ impl Engine {
     ) {
         match request.preset.problem {
             Problem::Plane => self.plane(request, deliver),
-            Problem::Spatial => self.spatial(request, cancelled, deliver),
+            Problem::Spatial => self.spatial(request, cancelled, Stop::Never, deliver),
+        }
+    }
+
+    /// As [`Engine::run_cancellable`] with `stop` also asked inside every contact solve of the
+    /// running-in (before each active-set iteration and linear-solve product): a newer request ends
+    /// even a long step, which is not taken (the next request tries it again).
+    pub fn run_stoppable(
+        &mut self,
+        request: &Request,
+        stop: Stop,
+        deliver: impl FnMut(Output, bool) -> Proceed,
+    ) {
+        match request.preset.problem {
+            Problem::Plane => self.plane(request, deliver),
+            Problem::Spatial => self.spatial(request, &|| stop.now(), stop, deliver),
         }
     }
 
@@ -229,6 +245,7 @@ impl Engine {
         &mut self,
         request: &Request,
         cancelled: &dyn Fn() -> bool,
+        stop: Stop,
         mut deliver: impl FnMut(Output, bool) -> Proceed,
     ) {
         let preset = &request.preset;
@@ -280,8 +297,12 @@ impl Engine {
             time: at.time,
             duration,
             curve: request.overlays.then_some((sweep, pressures.as_slice())),
+            stop,
         };
         let cell = self.cell_now(&ask);
+        if cell.is_err() && stop.now() {
+            return;
+        }
         let complete_at_start = cell
             .is_err()
             .then(|| pipeline::contact_at_start(&inputs, &responses.0, &state).complete);

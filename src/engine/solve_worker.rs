@@ -6,6 +6,7 @@ use std::sync::atomic::Ordering;
 
 use crate::engine::latest::{Delivery, LatestJob};
 use crate::engine::{Answer, Engine, Request};
+use crate::physics::stop::Stop;
 
 /// A background thread running the engine on the newest request (`LatestJob`). A job stops
 /// after a delivery, or between two steps of long work, when a newer request is waiting.
@@ -21,7 +22,7 @@ impl Worker {
         let job = LatestJob::spawn(move |generation, request: Arc<Request>, newer| {
             let newer_waits = || newer.load(Ordering::SeqCst);
             let mut listening = true;
-            engine.run_cancellable(&request, &newer_waits, |output, complete| {
+            engine.run_stoppable(&request, Stop::Flag(newer), |output, complete| {
                 listening = deliver(Answer {
                     generation,
                     request: Arc::clone(&request),

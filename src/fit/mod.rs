@@ -17,6 +17,7 @@ pub mod uncertainty;
 use nalgebra::DVector;
 
 use crate::data::DataSet;
+use crate::physics::stop::Stop;
 use crate::preset::{Key, Preset};
 use crate::units::format_si;
 
@@ -124,6 +125,18 @@ fn show(value: f64, unit: &str) -> String {
 
 /// Fits `keys` of `preset` to `data`.
 pub fn fit(preset: &Preset, data: &DataSet, keys: &[Key]) -> Result<Fit, FitError> {
+    fit_until(preset, data, keys, Stop::Never)
+}
+
+/// As [`fit`], every solve of the model asking `stop` (`Model::stop`): once it says so the fit
+/// ends within its bounded loops, each prediction failing at once; the caller that stopped it
+/// reads `stop`, not the error.
+pub fn fit_until(
+    preset: &Preset,
+    data: &DataSet,
+    keys: &[Key],
+    stop: Stop,
+) -> Result<Fit, FitError> {
     let free = free_parameters(preset, data, keys).map_err(FitError::Invalid)?;
     let (weights, weighted) = weights(data)?;
     let (n, p) = (weights.len(), free.len());
@@ -138,6 +151,7 @@ pub fn fit(preset: &Preset, data: &DataSet, keys: &[Key]) -> Result<Fit, FitErro
         data,
         free: &free,
         weights,
+        stop,
     };
     let start = DVector::from_iterator(
         p,

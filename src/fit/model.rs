@@ -5,6 +5,8 @@
 use nalgebra::DVector;
 
 use crate::data::DataSet;
+use crate::physics::SolveError;
+use crate::physics::stop::{STOPPED, Stop};
 use crate::preset::{Key, Preset};
 use crate::sweeps::point;
 
@@ -70,6 +72,9 @@ pub struct Model<'a> {
     pub free: &'a [Free],
     /// One weight per measured value (1/sd, or 1 without sd), row by row.
     pub weights: Vec<f64>,
+    /// Asked before every row's solve and inside it: once it says so, every prediction fails
+    /// at once, so the fit's bounded loops end quickly.
+    pub stop: Stop<'a>,
 }
 
 impl Model<'_> {
@@ -102,7 +107,11 @@ impl Model<'_> {
             at.assign(self.data.x.key, *x)
                 .and_then(|()| at.check_rules())
                 .map_err(|why| format!("line {line}: {why}"))?;
-            let p = point::solve(&at).map_err(|e| format!("line {line}: {e}"))?;
+            if self.stop.now() {
+                return Err(STOPPED.into());
+            }
+            let p = point::solve_until(&at, self.stop)
+                .map_err(|e| format!("line {line}: {}", SolveError::from(e)))?;
             for m in &self.data.measured {
                 let v = m
                     .quantity

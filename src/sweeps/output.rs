@@ -1,14 +1,17 @@
 //! The rows of a sweep as CSV or JSON (`wearlab sweep --format`). Numbers are written in the
 //! shortest form that reads back to the same bits (`{:e}` in CSV, as `wearlab solve --format csv`
 //! does; serde_json's in JSON, as `wearlab solve` does); flags as true/false. A field is empty
-//! (JSON null) only where its row's `status` says why; `status` is "ok" otherwise.
+//! (JSON null) only where its row's `status` says why; `status` is "ok" otherwise. A stopped sweep
+//! (`Err` among the rows) ends the writing with an error where it was stopped: the text is then
+//! cut short (a JSON document left open), never a whole answer.
 
 use std::cell::RefCell;
 use std::io::{self, Write};
 
-use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
+use serde::ser::{Error as _, Serialize, SerializeMap, SerializeSeq, Serializer};
 
 use crate::physics::Spacing;
+use crate::physics::spatial::partial::running_in::Stopped;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
 use crate::sweeps::quantity::QuantityKey;
@@ -36,13 +39,14 @@ pub fn write_csv(
     out: &mut impl Write,
     axes: &[Axis],
     outputs: &[QuantityKey],
-    rows: impl Iterator<Item = Row>,
+    rows: impl Iterator<Item = Result<Row, Stopped>>,
 ) -> io::Result<()> {
     let mut header: Vec<String> = axes.iter().map(|a| a.key.to_string()).collect();
     header.extend(outputs.iter().map(|q| q.to_string()));
     header.push("status".into());
     writeln!(out, "{}", header.join(","))?;
     for row in rows {
+        let row = row.map_err(io::Error::other)?;
         let mut fields: Vec<String> = row.at.iter().map(|v| format!("{v:e}")).collect();
         fields.extend(outputs.iter().zip(&row.values).map(|(q, v)| cell(q, v)));
         fields.push(quoted(&row.status()));
@@ -83,10 +87,11 @@ struct JsonRows<'a, I> {
     rows: RefCell<I>,
 }
 
-impl<I: Iterator<Item = Row>> Serialize for JsonRows<'_, I> {
+impl<I: Iterator<Item = Result<Row, Stopped>>> Serialize for JsonRows<'_, I> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let mut seq = s.serialize_seq(None)?;
         for row in self.rows.borrow_mut().by_ref() {
+            let row = row.map_err(S::Error::custom)?;
             seq.serialize_element(&JsonRow {
                 axes: self.axes,
                 outputs: self.outputs,
@@ -131,7 +136,7 @@ pub fn write_json(
     preset: &Preset,
     axes: &[Axis],
     outputs: &[QuantityKey],
-    rows: impl Iterator<Item = Row>,
+    rows: impl Iterator<Item = Result<Row, Stopped>>,
 ) -> io::Result<()> {
     let doc = Document {
         problem: preset.problem,

@@ -7,6 +7,8 @@
 
 use rayon::prelude::*;
 
+use crate::physics::spatial::partial::running_in::Stopped;
+use crate::physics::stop::Stop;
 use crate::preset::Preset;
 use crate::sweeps::axis::Axis;
 use crate::sweeps::point::{self, Point};
@@ -55,21 +57,34 @@ pub fn preset_at(base: &Preset, axes: &[Axis], values: &[f64]) -> Result<Preset,
     Ok(preset)
 }
 
+/// A point's failure, if any, and each output's value or why it has none.
+pub type Evaluated = (Option<String>, Vec<Result<f64, String>>);
+
 /// The outputs at one point; the failure, if any, first.
-pub fn evaluate(
-    preset: &Preset,
-    outputs: &[QuantityKey],
-) -> (Option<String>, Vec<Result<f64, String>>) {
+pub fn evaluate(preset: &Preset, outputs: &[QuantityKey]) -> Evaluated {
     match point::solve(preset) {
         Ok(p) => (None, values(&p, outputs)),
-        Err(e) => {
-            let why = e.to_string();
-            (
-                Some(why.clone()),
-                outputs.iter().map(|_| Err(why.clone())).collect(),
-            )
-        }
+        Err(e) => failed(e.to_string(), outputs),
     }
+}
+
+/// As [`evaluate`], told to stop by `stop` (`point::solve_until`): Err when it did.
+fn evaluate_until(
+    preset: &Preset,
+    outputs: &[QuantityKey],
+    stop: Stop,
+) -> Result<Evaluated, Stopped> {
+    match point::solve_until(preset, stop) {
+        Ok(p) => Ok((None, values(&p, outputs))),
+        Err(Stopped::Cancelled) => Err(Stopped::Cancelled),
+        Err(Stopped::Failed(e)) => Ok(failed(e.to_string(), outputs)),
+    }
+}
+
+/// A point without an answer: `why` as its failure and as every output's reason.
+fn failed(why: String, outputs: &[QuantityKey]) -> Evaluated {
+    let values = outputs.iter().map(|_| Err(why.clone())).collect();
+    (Some(why), values)
 }
 
 fn values(point: &Point, outputs: &[QuantityKey]) -> Vec<Result<f64, String>> {
@@ -96,41 +111,48 @@ fn point_at(values: &[Vec<f64>], mut index: usize) -> Vec<f64> {
     at
 }
 
-fn solve_at(base: &Preset, axes: &[Axis], outputs: &[QuantityKey], at: Vec<f64>) -> Row {
+/// The row at `at`, or Err when `stop` stopped its point (a point not started asks once).
+fn solve_at(
+    base: &Preset,
+    axes: &[Axis],
+    outputs: &[QuantityKey],
+    at: Vec<f64>,
+    stop: Stop,
+) -> Result<Row, Stopped> {
+    if stop.now() {
+        return Err(Stopped::Cancelled);
+    }
     let (failure, values) = match preset_at(base, axes, &at) {
-        Ok(preset) => evaluate(&preset, outputs),
-        Err(why) => {
-            let why = format!("invalid input: {why}");
-            (
-                Some(why.clone()),
-                outputs.iter().map(|_| Err(why.clone())).collect(),
-            )
-        }
+        Ok(preset) => evaluate_until(&preset, outputs, stop)?,
+        Err(why) => failed(format!("invalid input: {why}"), outputs),
     };
-    Row {
+    Ok(Row {
         at,
         failure,
         values,
-    }
+    })
 }
 
 /// The rows of a sweep, the first axis varying slowest, solved `CHUNK` points at a time in parallel
-/// (rayon) as they are asked for, so that only one chunk is held at once.
+/// (rayon) as they are asked for, so that only one chunk is held at once. Once `stop` has stopped
+/// a point, the rows before it are handed on, then one `Err(Stopped::Cancelled)`, then nothing:
+/// a writer fails there, so a stopped sweep never reads as a whole one.
 pub struct Rows<'a> {
     base: &'a Preset,
     axes: &'a [Axis],
     outputs: &'a [QuantityKey],
     tick: &'a (dyn Fn() + Sync),
+    stop: Stop<'a>,
     values: Vec<Vec<f64>>,
     next: usize,
     count: usize,
-    chunk: std::vec::IntoIter<Row>,
+    chunk: std::vec::IntoIter<Result<Row, Stopped>>,
 }
 
 impl Iterator for Rows<'_> {
-    type Item = Row;
+    type Item = Result<Row, Stopped>;
 
-    fn next(&mut self) -> Option<Row> {
+    fn next(&mut self) -> Option<Result<Row, Stopped>> {
         if let Some(row) = self.chunk.next() {
             return Some(row);
         }
@@ -138,29 +160,43 @@ impl Iterator for Rows<'_> {
             return None;
         }
         let end = self.count.min(self.next + CHUNK);
-        let (base, axes, outputs, tick, values) =
-            (self.base, self.axes, self.outputs, self.tick, &self.values);
-        let rows: Vec<Row> = (self.next..end)
+        let (base, axes, outputs, tick, stop, values) = (
+            self.base,
+            self.axes,
+            self.outputs,
+            self.tick,
+            self.stop,
+            &self.values,
+        );
+        let mut rows: Vec<Result<Row, Stopped>> = (self.next..end)
             .into_par_iter()
             .map(|i| {
-                let row = solve_at(base, axes, outputs, point_at(values, i));
-                tick();
+                let row = solve_at(base, axes, outputs, point_at(values, i), stop);
+                if row.is_ok() {
+                    tick();
+                }
                 row
             })
             .collect();
         self.next = end;
+        if let Some(first) = rows.iter().position(Result::is_err) {
+            rows.truncate(first + 1);
+            self.next = self.count;
+        }
         self.chunk = rows.into_iter();
         self.chunk.next()
     }
 }
 
 /// Solves `base` at every point of the axes in parallel, chunk by chunk as the rows are read, the
-/// first axis varying slowest; `tick` is called once per finished point (from any thread).
+/// first axis varying slowest; `tick` is called once per finished point (from any thread), `stop`
+/// is asked before every point and inside a spatial one (`point::solve_until`).
 pub fn rows<'a>(
     base: &'a Preset,
     axes: &'a [Axis],
     outputs: &'a [QuantityKey],
     tick: &'a (dyn Fn() + Sync),
+    stop: Stop<'a>,
 ) -> Rows<'a> {
     let values: Vec<Vec<f64>> = axes.iter().map(Axis::values).collect();
     Rows {
@@ -168,6 +204,7 @@ pub fn rows<'a>(
         axes,
         outputs,
         tick,
+        stop,
         count: values.iter().map(Vec::len).product(),
         values,
         next: 0,
@@ -183,5 +220,7 @@ pub fn run(
     outputs: &[QuantityKey],
     tick: &(dyn Fn() + Sync),
 ) -> Vec<Row> {
-    rows(base, axes, outputs, tick).collect()
+    rows(base, axes, outputs, tick, Stop::Never)
+        .filter_map(Result::ok)
+        .collect()
 }

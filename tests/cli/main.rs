@@ -11,6 +11,7 @@ mod common;
 mod fit_cli;
 mod hostile_cli;
 mod lesson_lock;
+mod max_seconds;
 mod quantities;
 mod run;
 mod shapes_cli;

@@ -108,3 +108,50 @@ pub fn spatial(
         shape: wearlab::physics::spatial::PunchShape::Harmonics(harmonics),
     }
 }
+
+/// The punch of 64 harmonics of `benches/partial_harmonics.rs`: wavenumbers (i, j) k0 for
+/// i, j = 1..8 (k0 = 2 pi/1 mm, the egg-box's), amplitudes falling as 1/(i^2 + j^2) and scaled to
+/// the egg-box's rms height (Delta = 0.1 um: sum A^2/4 = Delta^2/4), phases spread by the golden
+/// ratio.
+pub fn sixty_four_harmonics() -> Vec<wearlab::physics::spatial::harmonic::Harmonic> {
+    use std::f64::consts::PI;
+    let k0 = 2.0 * PI / 1e-3;
+    let golden = 0.5 * (5f64.sqrt() - 1.0);
+    let mut harmonics: Vec<_> = (1..=8)
+        .flat_map(|i| (1..=8).map(move |j| (i, j)))
+        .enumerate()
+        .map(
+            |(n, (i, j))| wearlab::physics::spatial::harmonic::Harmonic {
+                amplitude: 1.0 / f64::from(i * i + j * j),
+                wavenumber_x: f64::from(i) * k0,
+                wavenumber_y: f64::from(j) * k0,
+                phase_x: 2.0 * PI * ((2 * n + 1) as f64 * golden).fract(),
+                phase_y: 2.0 * PI * ((2 * n + 2) as f64 * golden).fract(),
+            },
+        )
+        .collect();
+    let sum: f64 = harmonics.iter().map(|h| h.amplitude * h.amplitude).sum();
+    harmonics
+        .iter_mut()
+        .for_each(|h| h.amplitude *= 1e-7 / sum.sqrt());
+    harmonics
+}
+
+/// A preset of [`sixty_four_harmonics`] in partial contact on a 0.5 mm steel layer with friction
+/// (the benchmark's: pbar = 25 MPa, mu = 0.3), worn from t = 0, on a `grid` x `grid` cell.
+pub fn sixty_four_preset(grid: usize) -> String {
+    let mut text = format!(
+        "schema = 1\nproblem = \"spatial\"\n[material]\nyoungs_modulus = 2.0e11\n\
+         poisson_ratio = 0.3\nthickness = 5.0e-4\n[friction]\ncoefficient = 0.3\n[wear]\n\
+         coefficient = 1.0e-16\n[spatial]\nmean_pressure = 2.5e7\nsliding_speed = 1.0\n\
+         time = 0.0\nduration = 50.0\ngrid = {grid}\n"
+    );
+    for h in sixty_four_harmonics() {
+        text += &format!(
+            "[[spatial.harmonics]]\namplitude = {:?}\nwavenumber_x = {:?}\nwavenumber_y = {:?}\n\
+             phase_x = {:?}\nphase_y = {:?}\n",
+            h.amplitude, h.wavenumber_x, h.wavenumber_y, h.phase_x, h.phase_y
+        );
+    }
+    text
+}

@@ -1,13 +1,15 @@
 //! The explorer's thread (`engine::sweep_worker::SweepWorker`): a newer request cancels a map in
 //! progress, whose end is then never delivered, and the newer one is answered to the end; inside
 //! a spatial point, the running-in stops within one time step of the newer request (counted in
-//! the questions the work asks its `Stop`, not in seconds).
+//! the questions the work asks its `Stop`, not in seconds); the explorer's own running-in stops
+//! inside a contact solve and goes on later with the same steps.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc::channel;
 use std::time::Duration;
 
 use wearlab::engine::sweep_worker::{SweepRequest, SweepWorker};
+use wearlab::engine::{CellOutput, Engine, Output, Request};
 use wearlab::physics::Spacing;
 use wearlab::physics::plane::Model;
 use wearlab::physics::spatial::partial::running_in::Stopped;
@@ -120,4 +122,60 @@ fn a_newer_request_stops_a_map_of_running_ins_inside_its_points() {
     // running-in's end, the map keeping the point or not; a point not started asks once), and
     // takes no further step
     assert!(newer.asked() <= 200 + 3 * 9, "{} questions", newer.asked());
+}
+
+fn cell_of(output: &Output) -> Option<&CellOutput> {
+    let Output::Spatial(Ok(out)) = output else {
+        return None;
+    };
+    out.cell.as_ref().ok()
+}
+
+#[test]
+fn the_explorers_running_in_stops_inside_a_contact_solve_and_resumes_the_same() {
+    // "contact-lost" on its own 64 nodes: every step a partial-contact solve
+    let mut preset = bundled("contact-lost.toml").unwrap().unwrap();
+    preset.spatial.time = 30.0;
+    let request = Request {
+        preset: preset.clone(),
+        overlays: false,
+        energies: false,
+    };
+    // untold, the running-in asks several questions a wear step: before the step, after it (the
+    // explorer's own check), and inside its contact solve (each active-set iteration and each
+    // product of the linear solve but the first)
+    let mut engine = Engine::new();
+    let counted = Newer::at(usize::MAX);
+    engine.run_stoppable(&request, Stop::Asked(&|| counted.arrived()), |_, _| true);
+    let steps = engine.counts.wear_steps;
+    let asked = counted.asked();
+    assert!(asked > 4 * steps, "{asked} questions, {steps} steps");
+    // a newer request arrives half-way through the questions: most of them inside a contact
+    // solve, where the explorer used to wait for the step's end
+    let mut engine = Engine::new();
+    let newer = Newer::at(asked / 2);
+    let mut last = None;
+    engine.run_stoppable(
+        &request,
+        Stop::Asked(&|| newer.arrived()),
+        |output, complete| {
+            last = Some((cell_of(&output).map(|c| c.progress), complete));
+            true
+        },
+    );
+    // no step after it, and the work asks once more (to tell a cut step from a failed one)
+    assert!(newer.asked() <= newer.at + 1, "{} questions", newer.asked());
+    let cut = engine.counts.wear_steps;
+    assert!(cut > 0 && cut < steps, "{cut} of {steps} steps");
+    assert!(!matches!(last, Some((_, true))), "{last:?}");
+    // the next request goes on from there: the same steps and the same state at t as one
+    // uncut run, the cut step not counted as done
+    let resumed = engine.run(&request);
+    let mut fresh = Engine::new();
+    let whole = fresh.run(&request);
+    assert_eq!(engine.counts.running_in, 1);
+    assert_eq!(engine.counts.wear_steps, fresh.counts.wear_steps);
+    assert_eq!(engine.counts.wear_steps, steps);
+    let state = |o: &Output| cell_of(o).unwrap().state.clone().unwrap();
+    assert_eq!(state(&resumed), state(&whole));
 }

@@ -13,6 +13,7 @@ mod spatial_partial_adhesion;
 mod spatial_partial_sie;
 mod spatial_props;
 mod spatial_running_in;
+mod spatial_stop;
 mod spatial_time_steps;
 mod surface;
 mod surface_area_load;

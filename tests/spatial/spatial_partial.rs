@@ -13,6 +13,7 @@ use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::fixed_point;
 use wearlab::physics::spatial::partial::state::State;
 use wearlab::physics::spatial::{PunchShape, SpatialInputs, solve};
+use wearlab::physics::stop::Stop;
 
 fn inputs(material: Material, mu: f64, tau0: f64, pbar: f64, h: Vec<Harmonic>) -> SpatialInputs {
     common::spatial(material, mu, tau0, 0.0, pbar, h)
@@ -342,9 +343,13 @@ fn mu_star_over_the_whole_range_of_mean_pressure() {
     let input = inputs(material, 0.3, 0.0, 2e7, vec![cosine(1e-6, 1e-3)]);
     let setup = Setup::new(&input, 256).unwrap();
     let pressures = Spacing::Log.points(1e5, 5e7, 40);
-    let curve = load_curve(&setup, &setup.initial_shape, &pressures, &mut |_| {
-        ControlFlow::Continue(())
-    })
+    let curve = load_curve(
+        &setup,
+        &setup.initial_shape,
+        &pressures,
+        Stop::Never,
+        &mut |_| ControlFlow::Continue(()),
+    )
     .unwrap();
     // the complete-contact load is the pressure amplitude A/M (sampled at the nodes)
     let closed = solve(&input, 0.0).unwrap();

@@ -12,6 +12,7 @@ use wearlab::physics::Spacing;
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::fixed_point;
 use wearlab::physics::spatial::partial::state::State;
+use wearlab::physics::stop::Stop;
 
 /// The "rubber-backward-drift" preset (E = 5 MPa, nu = 0.49, h = 1 mm, a 20 um wave 5 mm long:
 /// kh = 1.26 < X*(0.49) = 4.02 of docs/physics/spatial.md section 2, so B < 0) with mu = 5 and
@@ -41,7 +42,13 @@ fn load_curve(setup: &Setup) -> Vec<(f64, State)> {
         let mut at = setup.clone();
         at.inputs.mean_pressure = pbar;
         let s = at
-            .state(&mut op, setup.initial_shape.clone(), 0.0, start.as_deref())
+            .state(
+                &mut op,
+                setup.initial_shape.clone(),
+                0.0,
+                start.as_deref(),
+                Stop::Never,
+            )
             .unwrap_or_else(|e| panic!("pbar = {pbar:e}: {e}"));
         start = Some(s.contact());
         states.push((pbar, s));

@@ -16,6 +16,7 @@ use wearlab::physics::spatial::partial::running_in::{
     RunningIn, Stepper, Stepping, Stopped, run_in, run_in_with,
 };
 use wearlab::physics::spatial::{SpatialInputs, solve};
+use wearlab::physics::stop::Stop;
 
 fn inputs(material: Material, mu: f64, tau0: f64, pbar: f64, h: Vec<Harmonic>) -> SpatialInputs {
     common::spatial(material, mu, tau0, 1e-15, pbar, h)
@@ -330,7 +331,7 @@ fn a_running_in_extended_in_parts_takes_the_same_steps() {
     let setup = Setup::new(&input, 128).unwrap();
     let whole = go(&setup);
     let stepping = whole.stepping.unwrap();
-    let mut parts = RunningIn::start(&setup, Some(stepping)).unwrap();
+    let mut parts = RunningIn::start(&setup, Some(stepping), Stop::Never).unwrap();
     assert!(!parts.finished());
     // stopped after every third step, then asked up to a time, then to the end
     let mut calls = 0;

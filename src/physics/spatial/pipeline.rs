@@ -12,7 +12,9 @@ use std::ops::ControlFlow;
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::{MAX_STEPS, Stopped, run_in_until};
+use crate::physics::spatial::partial::running_in::{
+    MAX_STEPS, Stopped, cancelled_or, run_in_until,
+};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::result::{
@@ -57,9 +59,10 @@ pub fn solve(
     solve_until(inputs, at, probes, sweep, Stop::Never).map_err(SolveError::from)
 }
 
-/// As [`solve`], told to stop by `stop`: the running-in asks it before every time step and
-/// every active-set iteration, the mean-pressure sweep before every pressure, so the work ends
-/// within one step of being told (`Stopped::Cancelled`).
+/// As [`solve`], told to stop by `stop`: every contact solve asks it before each active-set
+/// iteration and each product of its linear solve, the running-in before every time step, the
+/// mean-pressure sweep before every pressure, so the work ends within one step of being told
+/// (`Stopped::Cancelled`).
 pub fn solve_until(
     inputs: &SpatialInputs,
     at: &StateAt,
@@ -130,7 +133,9 @@ fn on_the_cell(
             at.time_tolerance
         ))));
     }
-    let state = run.state_at(at.time)?;
+    let state = run
+        .state_at_until(at.time, stop)
+        .map_err(|why| cancelled_or(why, stop))?;
     let o = state.outputs;
     // a height map's state at t, when given, is complete (`RunningIn::state_at`)
     let from_start = closed_form_holds(
@@ -231,7 +236,7 @@ fn cell_sweep(
     pressures: Vec<f64>,
     stop: Stop,
 ) -> Result<SweepResult, Stopped> {
-    let curve = load_curve(setup, &state.shape, &pressures, &mut |_| {
+    let curve = load_curve(setup, &state.shape, &pressures, stop, &mut |_| {
         if stop.now() {
             ControlFlow::Break(())
         } else {

@@ -48,8 +48,8 @@ pub struct ContactProblem<'a> {
     pub adhesion: f64,
     /// c [m/Pa] >= 0 added to K (c dt k_w in an implicit wear step; 0 for a plain contact).
     pub diagonal: f64,
-    /// Asked before every active-set iteration: when it says so, the solve ends with the error
-    /// `stop::STOPPED`.
+    /// Asked before every active-set iteration and every product of its linear solve: when it
+    /// says so, the solve ends with the error `stop::STOPPED`.
     pub stop: Stop<'a>,
 }
 
@@ -221,9 +221,20 @@ pub fn solve(
             },
             image: std::mem::take(&mut image),
         };
-        let out = gmres(&mut sys, &rhs, &mut x, RESTART, MAX_LINEAR_ITERATIONS, tol);
+        let out = gmres(
+            &mut sys,
+            &rhs,
+            &mut x,
+            RESTART,
+            MAX_LINEAR_ITERATIONS,
+            tol,
+            prob.stop,
+        );
         (full, image) = (sys.full, sys.image);
         linear_iterations += out.iterations;
+        if out.stopped {
+            return Err(SolveError::NoSolution(STOPPED.into()));
+        }
         if !out.converged {
             return Err(SolveError::NoSolution(format!(
                 "the contact solver's linear solve did not converge in {MAX_LINEAR_ITERATIONS} \

@@ -1,6 +1,8 @@
 //! Restarted GMRES with a right preconditioner (Saad, Iterative Methods for Sparse Linear Systems,
 //! 2nd ed., SIAM 2003, algorithms 6.9 and 9.5): modified Gram–Schmidt, Givens rotations.
 
+use crate::physics::stop::Stop;
+
 /// A matrix-free linear system A x = b with a right preconditioner M^-1 ~ A^-1.
 pub(crate) trait Preconditioned {
     /// y = A x.
@@ -26,10 +28,14 @@ pub(crate) struct Gmres {
     pub residual: f64,
     /// True when |b - A x| <= tol.
     pub converged: bool,
+    /// True when `stop` ended the solve before it converged (x is then that of the last restart).
+    pub stopped: bool,
 }
 
 /// Improves x towards A x = b until |b - A x| <= `tol` (absolute), with restarts every `restart`
-/// iterations and at most `max_iterations` products in all.
+/// iterations and at most `max_iterations` products in all. `stop` is asked before every product
+/// but the first (the caller asks before the solve): a long solve on a fine grid ends within one
+/// product of being told.
 pub(crate) fn gmres(
     sys: &mut impl Preconditioned,
     b: &[f64],
@@ -37,6 +43,7 @@ pub(crate) fn gmres(
     restart: usize,
     max_iterations: usize,
     tol: f64,
+    stop: Stop,
 ) -> Gmres {
     let n = b.len();
     let mut r = vec![0.0; n];
@@ -59,6 +66,7 @@ pub(crate) fn gmres(
                 iterations,
                 residual: beta,
                 converged: beta <= tol,
+                stopped: false,
             };
         }
         basis.clear();
@@ -67,6 +75,14 @@ pub(crate) fn gmres(
         g[0] = beta;
         let mut k = 0;
         while k < restart && iterations < max_iterations {
+            if iterations > 0 && stop.now() {
+                return Gmres {
+                    iterations,
+                    residual: beta,
+                    converged: false,
+                    stopped: true,
+                };
+            }
             sys.precondition(&basis[k], &mut z);
             sys.apply(&z, &mut w);
             iterations += 1;
@@ -141,7 +157,7 @@ mod tests {
         let mut b = vec![0.0; n];
         Tridiagonal.apply(&exact, &mut b);
         let mut x = vec![0.0; n];
-        let out = gmres(&mut Tridiagonal, &b, &mut x, 5, 500, 1e-13);
+        let out = gmres(&mut Tridiagonal, &b, &mut x, 5, 500, 1e-13, Stop::Never);
         assert!(out.converged, "{out:?}");
         let err = x
             .iter()
@@ -149,5 +165,29 @@ mod tests {
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max);
         assert!(err < 1e-12, "{err}");
+    }
+
+    #[test]
+    fn a_stop_ends_the_solve_before_its_next_product() {
+        let n = 50;
+        let b: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).sin()).collect();
+        let mut x = vec![0.0; n];
+        let asked = std::sync::atomic::AtomicUsize::new(0);
+        let stop = || {
+            asked.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            true
+        };
+        let out = gmres(
+            &mut Tridiagonal,
+            &b,
+            &mut x,
+            5,
+            500,
+            1e-13,
+            Stop::Asked(&stop),
+        );
+        // the first product, then the question before the second
+        assert!(out.stopped && !out.converged, "{out:?}");
+        assert_eq!((out.iterations, asked.into_inner()), (1, 1));
     }
 }

@@ -5,6 +5,7 @@ use serde::Serialize;
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::running_in::RunningIn;
 use crate::physics::spatial::partial::state::Outputs;
+use crate::physics::stop::Stop;
 
 /// The outputs against time over [0, duration].
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -67,7 +68,7 @@ impl RunningIn {
         for i in 1..=points.max(1) {
             let t = from + (duration - from) * i as f64 / points.max(1) as f64;
             op.decay(end_shape, &mut shape, k_w * (t - from));
-            let state = setup.state(&mut op, shape.clone(), t, None)?;
+            let state = setup.state(&mut op, shape.clone(), t, None, Stop::Never)?;
             if !state.outputs.complete {
                 break;
             }

@@ -106,11 +106,18 @@ impl Setup {
 
     /// The contact state at t = 0 (a fresh operator; the first thing to show after an edit).
     pub fn initial_state(&self) -> Result<State, SolveError> {
-        self.state(&mut self.operator(), self.initial_shape.clone(), 0.0, None)
+        self.state(
+            &mut self.operator(),
+            self.initial_shape.clone(),
+            0.0,
+            None,
+            Stop::Never,
+        )
     }
 
     /// The contact state of the zero-mean shape `shape` [m] at time `time` [s] (which sets the
-    /// mean wear k_w pbar t), starting the active set from `start` when given. Refused when the
+    /// mean wear k_w pbar t), starting the active set from `start` when given; the active set
+    /// asks `stop` before every iteration (its error is then `stop::STOPPED`). Refused when the
     /// vertical force P is not positive (slopes far beyond the small-slope theory).
     pub fn state(
         &self,
@@ -118,8 +125,9 @@ impl Setup {
         shape: Vec<f64>,
         time: f64,
         start: Option<&[bool]>,
+        stop: Stop,
     ) -> Result<State, SolveError> {
-        let state = self.unchecked_state(op, shape, time, start)?;
+        let state = self.unchecked_state(op, shape, time, start, stop)?;
         let p = state.outputs.normal_force;
         if p.is_nan() || p <= 0.0 {
             return Err(SolveError::NoSolution(format!(
@@ -137,6 +145,7 @@ impl Setup {
         shape: Vec<f64>,
         time: f64,
         start: Option<&[bool]>,
+        stop: Stop,
     ) -> Result<State, SolveError> {
         let pbar = self.inputs.mean_pressure;
         let friction = self.inputs.friction;
@@ -145,7 +154,7 @@ impl Setup {
             mean_pressure: pbar,
             adhesion: friction.adhesion,
             diagonal: 0.0,
-            stop: Stop::Never,
+            stop,
         };
         let sol = solve(op, &problem, start)?;
         let (outputs, gap) = evaluate(op, &shape, pbar, &friction, &sol, sol.offset);

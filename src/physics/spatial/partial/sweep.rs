@@ -6,7 +6,8 @@ use std::ops::ControlFlow;
 use serde::Serialize;
 
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::Stopped;
+use crate::physics::spatial::partial::running_in::{Stopped, cancelled_or};
+use crate::physics::stop::Stop;
 
 /// mu* and the contact against pbar for one shape.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -25,11 +26,13 @@ pub struct LoadCurve {
 
 /// mu* of the zero-mean shape `shape` [m] (on `setup`'s grid) at each mean pressure of
 /// `pressures` [Pa] (> 0), each solve warm-started from the previous contact set. `progress` gets
-/// the fraction of the points done; `ControlFlow::Break` abandons the work.
+/// the fraction of the points done; `ControlFlow::Break` abandons the work, and so does `stop`,
+/// asked inside each solve (before every active-set iteration and every product of its linear solve).
 pub fn load_curve(
     setup: &Setup,
     shape: &[f64],
     pressures: &[f64],
+    stop: Stop,
     progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
 ) -> Result<LoadCurve, Stopped> {
     let mut op = setup.operator();
@@ -47,7 +50,9 @@ pub fn load_curve(
         let mut at = setup.clone();
         at.inputs.mean_pressure = pbar;
         at.inputs.validate()?;
-        let state = at.unchecked_state(&mut op, shape.to_vec(), 0.0, contact.as_deref())?;
+        let state = at
+            .unchecked_state(&mut op, shape.to_vec(), 0.0, contact.as_deref(), stop)
+            .map_err(|why| cancelled_or(why, stop))?;
         let o = state.outputs;
         curve.load.push(o.normal_force);
         curve

@@ -24,12 +24,18 @@ const GROW: f64 = 2.0;
 impl RunningIn {
     /// The running-in of `setup` at t = 0: the first contact state solved, nothing stepped yet
     /// (`stepping` None: no stepping, the state of t = 0 holds). [`RunningIn::extend`] steps it.
-    pub fn start(setup: &Setup, stepping: Option<Stepping>) -> Result<RunningIn, SolveError> {
+    /// The first solve's active set asks `stop` (its error is then `stop::STOPPED`).
+    pub fn start(
+        setup: &Setup,
+        stepping: Option<Stepping>,
+        stop: Stop,
+    ) -> Result<RunningIn, SolveError> {
         let first = setup.state(
             &mut setup.operator(),
             setup.initial_shape.clone(),
             0.0,
             None,
+            stop,
         )?;
         let (pbar, k_w) = (setup.inputs.mean_pressure, setup.inputs.wear_rate());
         Ok(RunningIn {
@@ -152,7 +158,9 @@ impl RunningIn {
 
     /// One step within the tolerance: tried with the proposed step, shrunk while its estimate is
     /// above `tolerance` beta_min h (at most `MAX_TRIES` tries); the step after it proposed.
-    /// Returns the step and its error estimate relative to `scale` [m].
+    /// Returns the step and its error estimate relative to `scale` [m]. A try whose contact
+    /// solve fails (or is stopped) leaves the proposed step and the count of refused tries as
+    /// they were before the step, so that a later call tries the same steps again.
     fn try_step(
         &mut self,
         stepper: &mut Stepper,
@@ -160,13 +168,20 @@ impl RunningIn {
         scale: f64,
     ) -> Result<(Trial, f64), SolveError> {
         let now = stepper.time;
+        let before = (self.next_step, self.rejected);
         let mut refused = false;
         for _ in 0..MAX_TRIES {
             let time = (now + self.next_step).min(stepping.horizon);
             if time <= now {
                 break;
             }
-            let trial = stepper.trial(time)?;
+            let trial = match stepper.trial(time) {
+                Ok(trial) => trial,
+                Err(why) => {
+                    (self.next_step, self.rejected) = before;
+                    return Err(why);
+                }
+            };
             let h = time - now;
             let error = stepper.local_error(&trial).map_or(0.0, |e| rms(&e) / scale);
             let error = if error.is_finite() {
@@ -236,6 +251,7 @@ impl RunningIn {
             shape,
             self.end_time(),
             Some(&self.end_contact),
+            Stop::Never,
         )
     }
 }

@@ -166,7 +166,7 @@ pub fn run_in_with(
     stepping: Option<Stepping>,
     progress: &mut dyn FnMut(f64) -> ControlFlow<()>,
 ) -> Result<RunningIn, Stopped> {
-    let mut run = RunningIn::start(setup, stepping)?;
+    let mut run = RunningIn::start(setup, stepping, Stop::Never)?;
     let m0 = run.samples[0].outputs.min_pressure_complete;
     let mut cancelled = false;
     run.extend(f64::INFINITY, &mut |run: &RunningIn| {
@@ -185,17 +185,28 @@ pub fn run_in_with(
     Ok(run)
 }
 
-/// As [`run_in`] without progress, told to stop by `stop`: it is asked before every time step
-/// and every active-set iteration, so the work ends within one step of being told
-/// (`Stopped::Cancelled`).
+/// As [`run_in`] without progress, told to stop by `stop`: it is asked before every time step,
+/// every active-set iteration and every product of a linear solve, the first contact solve's
+/// included, so the work ends within one step of being told (`Stopped::Cancelled`).
 pub fn run_in_until(setup: &Setup, tolerance: f64, stop: Stop) -> Result<RunningIn, Stopped> {
-    let mut run = RunningIn::start(setup, Stepping::of(setup, tolerance))?;
+    let mut run = RunningIn::start(setup, Stepping::of(setup, tolerance), stop)
+        .map_err(|why| cancelled_or(why, stop))?;
     let stepped = run.extend_until(f64::INFINITY, stop, &mut |_| ControlFlow::Continue(()));
     if stop.now() {
         return Err(Stopped::Cancelled);
     }
     stepped?;
     Ok(run)
+}
+
+/// `Stopped::Cancelled` when `stop` says so (the error of a solve it cut short), else the
+/// solver's own error.
+pub fn cancelled_or(why: SolveError, stop: Stop) -> Stopped {
+    if stop.now() {
+        Stopped::Cancelled
+    } else {
+        Stopped::Failed(why)
+    }
 }
 
 impl RunningIn {
@@ -276,13 +287,19 @@ impl RunningIn {
     /// steps replayed from the nearest snapshot). Refused beyond the end of a running-in that
     /// stayed partial, and where the closed form separates the contact again.
     pub fn state_at(&self, t: f64) -> Result<State, SolveError> {
+        self.state_at_until(t, Stop::Never)
+    }
+
+    /// As [`RunningIn::state_at`], every contact solve of the replay asking `stop` before each
+    /// active-set iteration (its error is then `stop::STOPPED`).
+    pub fn state_at_until(&self, t: f64, stop: Stop) -> Result<State, SolveError> {
         let setup = &self.setup;
         let mut op = setup.operator();
         let k_w = setup.inputs.wear_rate();
         if let Some(from) = self.complete_from.filter(|from| t >= *from) {
             let mut shape = vec![0.0; self.end_shape.len()];
             op.decay(&self.end_shape, &mut shape, k_w * (t - from));
-            let state = setup.state(&mut op, shape, t, None)?;
+            let state = setup.state(&mut op, shape, t, None, stop)?;
             if !state.outputs.complete {
                 // harmonics drifting at different speeds can bring the valleys into phase again
                 return Err(SolveError::NoSolution(format!(
@@ -293,7 +310,7 @@ impl RunningIn {
             return Ok(state);
         }
         if self.stepping.is_none() {
-            return setup.state(&mut op, setup.initial_shape.clone(), t, None);
+            return setup.state(&mut op, setup.initial_shape.clone(), t, None, stop);
         }
         let end = self.end_time();
         if t > end {
@@ -319,6 +336,7 @@ impl RunningIn {
             snap.shape.clone(),
             snap.contact.clone(),
         );
+        stepper.stop = stop;
         while stepper.step < k {
             stepper.advance(self.samples[stepper.step + 1].time)?;
         }
@@ -327,6 +345,6 @@ impl RunningIn {
         } else {
             stepper.current.clone()
         };
-        setup.state(&mut op, shape, t, Some(&stepper.contact))
+        setup.state(&mut op, shape, t, Some(&stepper.contact), stop)
     }
 }
