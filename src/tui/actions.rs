@@ -135,7 +135,8 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.ui.mode = Mode::SaveAs(TextField::proposed(proposed_name(app)));
             Vec::new()
         }
-        Action::Pin | Action::ClearPins | Action::LogY | Action::Export | Action::ExportSvg
+        Action::ExportSvg if app.explore.view.is_some() => crate::tui::sweep_export::export(app),
+        Action::Pin | Action::ClearPins | Action::LogY | Action::Export
             if app.explore.view.is_some() =>
         {
             app.complain(sweep_keys::not_here(app));
@@ -307,15 +308,15 @@ pub fn export(app: &mut App, chart: Chart, format: Format) -> Vec<Command> {
     let Some(answer) = &app.solve.shown else {
         return wait(app);
     };
+    let pins = app.ui.pins_of(chart);
+    let now = &answer.request.preset;
+    let pinned = pins
+        .iter()
+        .map(|p| (p.plots.as_slice(), p.name(now)))
+        .collect();
     let text = match format {
-        Format::Csv => csv::csv(chart, answer),
+        Format::Csv => csv::csv(chart, answer, pinned),
         Format::Svg => {
-            let pins = app.ui.pins_of(chart);
-            let now = &answer.request.preset;
-            let pinned = pins
-                .iter()
-                .map(|p| (p.plots.as_slice(), p.name(now)))
-                .collect();
             let toggled = app.ui.log_y.contains(&chart);
             let scale = app.ui.heat_scale_for(&answer.request.preset);
             csv::svg(chart, answer, pinned, toggled, scale)

@@ -296,7 +296,7 @@ pub const BINDINGS: [Binding; 23] = [
     ),
     binding(
         &[(ch('e'), Action::Export), (ch('E'), Action::ExportSvg)],
-        "e, E", "export the visible chart: e its data as CSV (parameters in a header, units in the column names), E a figure as SVG (axes, legend, parameters); both ask before overwriting",
+        "e, E", "export the visible chart: e its data as CSV (parameters in a header, units in the column names), E a figure as SVG (axes, legend, parameters), of the sweep or the regime map too; both ask before overwriting",
         ("e/E", "export", "", 5), None,
     ),
     binding(

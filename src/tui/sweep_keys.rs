@@ -103,7 +103,7 @@ fn own_cell(app: &App, spec: &MapSpec) -> Option<(usize, usize)> {
     ))
 }
 
-/// What pins, the log y axis and the exports say in the sweep and map views: they work on the
+/// What pins, the log y axis and the CSV export say in the sweep and map views: they work on the
 /// charts (Tab); the sweep's numbers come from `wearlab sweep` (the command, with the preset's
 /// file when it holds what is on screen, and this view's axes).
 pub fn not_here(app: &App) -> String {
@@ -130,7 +130,7 @@ pub fn not_here(app: &App) -> String {
     };
     // the command first: where the message line cuts, it cuts the words after it
     format!(
-        "{what} as CSV: wearlab sweep {preset} {} (pins, y and exports work on the charts: Tab)",
+        "{what} as CSV: wearlab sweep {preset} {} (E: the figure as SVG; pins and y work on the charts: Tab)",
         axes.join(" ")
     )
 }

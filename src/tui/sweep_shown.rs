@@ -8,6 +8,7 @@ use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::preset::{Key, Preset, Problem};
 use crate::sweeps::axis::{Axis, GRID_POINTS};
 use crate::sweeps::curve::CurveSpec;
+use crate::sweeps::groups::of_input;
 use crate::sweeps::map::MapSpec;
 use crate::sweeps::{Opening, QuantityKey, models, opening};
 use crate::tui::app::App;
@@ -144,4 +145,28 @@ pub fn shown(app: &App) -> Option<(&SweepAnswer, bool)> {
         (Opening::Curve(_), View::Sweep) | (Opening::Map(_), View::Map)
     );
     same_kind.then_some((answer, current))
+}
+
+/// What a sweep or a map of `preset` shows, as the view's title (and an exported figure's) says
+/// it: "sweep: mu* against h", in the dimensionless view "sweep: mu* against (a+b)/h (swept:
+/// h)"; "regime map: mu* - mu over mu and k".
+pub fn title(preset: &Preset, job: &Opening, dimensionless: bool) -> String {
+    match job {
+        Opening::Curve(c) => format!(
+            "sweep: {} against {}",
+            c.quantity.symbol(),
+            match of_input(preset, c.axis.key.param().key) {
+                Some(g) if dimensionless => {
+                    format!("{} (swept: {})", g.symbol(), c.axis.key.symbol())
+                }
+                _ => c.axis.key.symbol(),
+            }
+        ),
+        Opening::Map(m) => format!(
+            "regime map: {} over {} and {}",
+            m.quantity.symbol(),
+            m.x.key.symbol(),
+            m.y.key.symbol()
+        ),
+    }
 }

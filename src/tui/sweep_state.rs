@@ -39,6 +39,8 @@ pub struct Explore {
     pub requested: Option<SweepRequest>,
     /// The newest answer received.
     pub shown: Option<SweepAnswer>,
+    /// `E` waits for the view's whole answer.
+    pub export_waiting: bool,
 }
 
 impl Explore {

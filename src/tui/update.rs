@@ -75,7 +75,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
         }
         Msg::Explored(answer) => {
             crate::tui::sweep_keys::on_answer(app, *answer);
-            Vec::new()
+            crate::tui::sweep_export::on_answer(app)
         }
         Msg::LessonAnswered(preset, values) => {
             crate::tui::lesson_keys::answered(app, *preset, values);

@@ -1,11 +1,13 @@
 //! The exports of a chart: its data as CSV (`e`) and a figure as SVG (`E`), both exactly the
-//! figure the view draws, both naming the parameters they were computed from (the answered
-//! request's preset): the CSV in comment lines (TOML), the SVG in its caption.
+//! figure the view draws, its pins included, both naming the parameters they were computed from
+//! (the answered request's preset): the CSV in comment lines (TOML), the SVG in its caption. The
+//! sweep chart and the regime map are exported as SVG from what their view draws.
 
 use crate::engine::Answer;
 use crate::preset::{Preset, to_toml};
+use crate::sweeps::map::{Map, MapSpec};
 
-use crate::tui::charts::svg::{Page, svg as draw_svg};
+use crate::tui::charts::svg::{Page, regime, svg as draw_svg};
 use crate::tui::charts::{Axis, Chart, Figure, NoFigure, Plot};
 use crate::tui::form;
 
@@ -20,8 +22,12 @@ pub enum Format {
 
 /// The file name of a chart's export: `wearlab-<title words>.csv` (or `.svg`).
 pub fn file_name(chart: Chart, format: Format) -> String {
-    let stem = chart
-        .title()
+    named(chart.title(), format)
+}
+
+/// The file name of an export titled `title`: `wearlab-<title words>.csv` (or `.svg`).
+pub fn named(title: &str, format: Format) -> String {
+    let stem = title
         .split(|c: char| !c.is_ascii_alphanumeric())
         .filter(|w| !w.is_empty())
         .collect::<Vec<_>>()
@@ -50,11 +56,16 @@ fn field(text: &str) -> String {
     }
 }
 
-/// The CSV text of the figure drawn for `chart` from `answer`: comment lines with the chart and
-/// the preset (TOML), then a header with units, then the rows. A plot figure has one row per
-/// point: the curve's name, then its x and y in the columns of its axes (plots that share an
-/// axis share its column).
-pub fn csv(chart: Chart, answer: &Answer) -> Result<String, NoFigure> {
+/// The CSV text of the figure drawn for `chart` from `answer` with its pins (their plots and
+/// legend names): comment lines with the chart and the preset (TOML), then a header with units,
+/// then the rows. A plot figure has one row per point: the curve's name, then its x and y in the
+/// columns of its axes (plots that share an axis share its column); a pinned curve follows the
+/// curves, named by its pin and its own name ("pin: mu = 0.2: mu* wide").
+pub fn csv(
+    chart: Chart,
+    answer: &Answer,
+    pins: Vec<(&[Plot], String)>,
+) -> Result<String, NoFigure> {
     let figure = chart.build(answer)?;
     let mut out = format!("# wearlab: {}\n", chart.title());
     let preset = &answer.request.preset;
@@ -64,6 +75,11 @@ pub fn csv(chart: Chart, answer: &Answer) -> Result<String, NoFigure> {
     out.push_str("# computed from these parameters (preset, TOML, SI units):\n");
     for line in to_toml(&answer.request.preset).lines() {
         out.push_str(&format!("#   {line}\n"));
+    }
+    if !pins.is_empty() {
+        out.push_str(
+            "# pinned curves (dashed in the figure), named by what differs from these parameters\n",
+        );
     }
     match figure {
         Figure::Map(m) => {
@@ -90,13 +106,26 @@ pub fn csv(chart: Chart, answer: &Answer) -> Result<String, NoFigure> {
                 .collect();
             let header: Vec<String> = columns.iter().map(|c| field(c)).collect();
             out.push_str(&format!("curve,{}\n", header.join(",")));
-            for (p, (xc, yc)) in plots.iter().zip(places) {
+            let row = |name: &str, (x, y): (f64, f64), (xc, yc): (usize, usize)| {
+                let mut row = vec![String::new(); columns.len()];
+                row[xc] = format!("{x:e}");
+                row[yc] = format!("{y:e}");
+                format!("{},{}\n", field(name), row.join(","))
+            };
+            for (p, &place) in plots.iter().zip(&places) {
                 for s in p.series.iter().chain(&p.markers) {
-                    for (x, y) in &s.points {
-                        let mut row = vec![String::new(); columns.len()];
-                        row[xc] = format!("{x:e}");
-                        row[yc] = format!("{y:e}");
-                        out.push_str(&format!("{},{}\n", field(&s.name), row.join(",")));
+                    for &point in &s.points {
+                        out.push_str(&row(&s.name, point, place));
+                    }
+                }
+            }
+            for (pinned, name) in &pins {
+                for (p, &place) in pinned.iter().zip(&places) {
+                    for s in &p.series {
+                        let curve = format!("{name}: {}", s.name);
+                        for &point in &s.points {
+                            out.push_str(&row(&curve, point, place));
+                        }
                     }
                 }
             }
@@ -148,4 +177,23 @@ pub fn svg(
         scale,
     };
     draw_svg(&figure, &page).map_err(NoFigure::Error)
+}
+
+/// The SVG of the sweep chart's plots (no pins, the y axis as drawn) under `title`, with the
+/// parameters of `preset` (the ones the sweep was computed from) in its caption.
+pub fn sweep_svg(title: &str, preset: &Preset, plots: Vec<Plot>) -> Result<String, String> {
+    let page = Page {
+        title,
+        caption: caption(preset, 130),
+        pins: Vec::new(),
+        toggled: false,
+        scale: None,
+    };
+    draw_svg(&Figure::Plots(plots), &page)
+}
+
+/// The SVG of a regime map under `title`, with the parameters of `preset` (the ones the map was
+/// computed from) in its caption.
+pub fn map_svg(title: &str, preset: &Preset, spec: &MapSpec, map: &Map) -> Result<String, String> {
+    regime(spec, map, title, &caption(preset, 130))
 }

@@ -7,6 +7,7 @@
 pub mod contact;
 pub mod export;
 mod gaps;
+pub mod map_lines;
 pub mod palette;
 mod plane;
 pub mod range;

@@ -64,7 +64,7 @@ fn each_charts_csv_is_its_builders_figure_with_units_in_the_column_names() {
         let answer = complete(file);
         for chart in Chart::all(answer.request.preset.problem) {
             let figure = chart.build(&answer).unwrap();
-            let text = csv(chart, &answer).unwrap();
+            let text = csv(chart, &answer, Vec::new()).unwrap();
             let (header, rows) = table(&text);
             match &figure {
                 Figure::Map(m) => {
@@ -109,7 +109,7 @@ fn the_mu_star_chart_overlays_the_other_models_and_exports_them() {
     let chart = Chart::all(Problem::Plane)[2];
     assert_eq!(file_name(chart, Format::Csv), "wearlab-mu-against-load.csv");
     assert_eq!(file_name(chart, Format::Svg), "wearlab-mu-against-load.svg");
-    let text = csv(chart, &answer).unwrap();
+    let text = csv(chart, &answer, Vec::new()).unwrap();
     assert!(text.contains("\ncurve,P [N/m],mu* [-]\n"), "{text}");
     assert!(
         text.contains("# E = 3.00 GPa, nu = 0.35, h = 10.0 mm,"),
@@ -124,7 +124,7 @@ fn the_mu_star_chart_overlays_the_other_models_and_exports_them() {
 }
 
 /// Every text element of an SVG.
-fn texts(svg: &str) -> Vec<String> {
+pub(super) fn texts(svg: &str) -> Vec<String> {
     let doc = roxmltree::Document::parse(svg).expect("the SVG is well-formed XML");
     assert_eq!(doc.root_element().tag_name().name(), "svg");
     doc.descendants()

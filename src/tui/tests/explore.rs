@@ -12,13 +12,18 @@ use crate::tui::app::Mode;
 use crate::tui::sweep_state::View;
 
 /// Computes the explorer's requests among `commands` as its thread would (every map pass, then
-/// the end) and delivers the answers.
-pub(super) fn explored(app: &mut App, commands: &[Command]) {
-    explored_seen(app, commands, &mut |_| {});
+/// the end) and delivers the answers; returns the commands the deliveries give.
+pub(super) fn explored(app: &mut App, commands: &[Command]) -> Vec<Command> {
+    explored_seen(app, commands, &mut |_| {})
 }
 
 /// `explored`, showing the app to `seen` after each answer but the last (a map refining).
-pub(super) fn explored_seen(app: &mut App, commands: &[Command], seen: &mut dyn FnMut(&App)) {
+pub(super) fn explored_seen(
+    app: &mut App,
+    commands: &[Command],
+    seen: &mut dyn FnMut(&App),
+) -> Vec<Command> {
+    let mut out = Vec::new();
     for c in commands {
         let Command::Explore(generation, request) = c else {
             continue;
@@ -36,11 +41,12 @@ pub(super) fn explored_seen(app: &mut App, commands: &[Command], seen: &mut dyn 
         })
         .expect("not cancelled");
         for a in passes {
-            update(app, Msg::Explored(Box::new(a)));
+            out.extend(update(app, Msg::Explored(Box::new(a))));
             seen(app);
         }
-        update(app, Msg::Explored(Box::new(answer(done, true))));
+        out.extend(update(app, Msg::Explored(Box::new(answer(done, true)))));
     }
+    out
 }
 
 fn explore_commands(cmds: &[Command]) -> usize {

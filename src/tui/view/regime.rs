@@ -6,13 +6,14 @@
 //! coarse, each cell shows the nearest computed point.
 
 use crate::physics::Spacing;
-use crate::sweeps::map::{LineKind, Map, MapSpec};
+use crate::sweeps::map::{Map, MapSpec};
 use crate::units::format_si;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 
 use crate::tui::charts::Scale;
+pub use crate::tui::charts::map_lines::line_key;
 use crate::tui::charts::palette::level;
 use crate::tui::charts::range::bounds;
 use crate::tui::charts::ticks::ticks;
@@ -23,16 +24,6 @@ use crate::tui::view::theme::RenderOptions;
 const LEFT: u16 = 8;
 /// Columns of the bar and its labels.
 const BAR: u16 = 10;
-
-/// The letter of a line and what it means.
-pub fn line_key(kind: LineKind) -> (char, &'static str) {
-    match kind {
-        LineKind::ThetaZero => ('0', "theta = 0 line (mu* = mu on a half-plane)"),
-        LineKind::Validity(m) if m.name() == "wide" => ('W', "wide model's validity limit"),
-        LineKind::Validity(_) => ('N', "narrow (Winkler) model's validity limit"),
-        LineKind::CompleteContact => ('C', "complete contact lost"),
-    }
-}
 
 /// The fraction of an axis at which a value lies.
 fn frac(spacing: Spacing, [lo, hi]: [f64; 2], v: f64) -> f64 {

@@ -7,7 +7,6 @@
 
 use crate::engine::sweep_worker::SweepResult;
 use crate::phrase::Phrase;
-use crate::sweeps::groups::of_input;
 use crate::sweeps::{Opening, opening};
 use crate::tui::text_field::TextField;
 use crate::units::format_si;
@@ -21,7 +20,7 @@ use crate::tui::app::App;
 use crate::tui::charts::range::{self, frames};
 use crate::tui::charts::readout::{at, readout as read};
 use crate::tui::charts::{Figure, Plot, sweep};
-use crate::tui::sweep_shown::{shown, wanted};
+use crate::tui::sweep_shown::{shown, title, wanted};
 use crate::tui::sweep_state::View;
 use crate::tui::sweep_state::{Field, SweepForm};
 use crate::tui::view::chart::{self, Extras};
@@ -58,8 +57,8 @@ pub const SWEEP_HELP: &str = "A quantity against one input over the range chosen
     colour in a mark of its own that the legend names; where the verdict changes the x axis is \
     marked ('wide ok>', 'narrow fails>', 'complete>'), and the input's current value 'now'. x \
     shows a cursor (at now), [ ] { } move it, and the status reads every curve there. D puts the \
-    input's dimensionless group on the x axis where it has one. e says the wearlab sweep command \
-    of the same numbers; Tab goes back to the charts.";
+    input's dimensionless group on the x axis where it has one. E writes the figure as SVG, e says \
+    the wearlab sweep command of the same numbers; Tab goes back to the charts.";
 
 /// The help's text on the regime map (`?` while it is shown).
 pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours (viridis, or \
@@ -69,7 +68,8 @@ pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours
     of finite thickness the sign of mu* - mu, not of theta, says which dominates), W and N where the wide and the narrow model's validity checks change, C where \
     complete contact is lost; + is the preset's own point. x shows a \
     cursor, X (at the grid point nearest the preset's), [ ] move it along x, { } along y, and the status reads both \
-    inputs, the quantity, theta and the verdicts there. Tab goes back to the charts.";
+    inputs, the quantity, theta and the verdicts there. E writes the map as SVG; Tab goes back to the \
+    charts.";
 
 /// What the chart says instead of the preset's "Look at:" paragraph where the paragraph does not
 /// fit whole.
@@ -110,24 +110,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     };
     let shown = shown(app);
     let done = shown.is_some_and(|(a, current)| current && a.complete);
-    let what = match &want.job {
-        Opening::Curve(c) => format!(
-            "sweep: {} against {}",
-            c.quantity.symbol(),
-            match of_input(&app.doc.preset, c.axis.key.param().key) {
-                Some(g) if app.explore.dimensionless => {
-                    format!("{} (swept: {})", g.symbol(), c.axis.key.symbol())
-                }
-                _ => c.axis.key.symbol(),
-            }
-        ),
-        Opening::Map(m) => format!(
-            "regime map: {} over {} and {}",
-            m.quantity.symbol(),
-            m.x.key.symbol(),
-            m.y.key.symbol()
-        ),
-    };
+    let what = title(&app.doc.preset, &want.job, app.explore.dimensionless);
     let note = match shown {
         _ if done => String::new(),
         Some((a, true)) => match &a.explored {

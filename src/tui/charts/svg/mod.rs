@@ -2,15 +2,18 @@
 //! same figure, ranges, scales and ticks as the terminal, its pins included, the legend beside
 //! the plot, and the preset's name and parameters in a caption.
 
+mod legend;
 mod map;
+mod regime;
 
-use crate::units::format_si;
+pub use regime::regime;
+
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use crate::tui::charts::range::{Frame, bounds, clip, frames, plotted};
+use crate::tui::charts::range::{Frame, clip, frames, plotted};
 use crate::tui::charts::ticks::{Ticks, ticks};
 use crate::tui::charts::{Figure, Plot, Scale};
 
@@ -35,6 +38,9 @@ const COLOURS: [RGBColor; 7] = [
 ];
 
 pub(super) const GREY: RGBColor = RGBColor(120, 120, 120);
+
+/// The opacity of a curve's parts where its model's own check fails.
+const DIM: f64 = 0.35;
 
 fn colour(i: usize) -> RGBColor {
     COLOURS[i % COLOURS.len()]
@@ -68,27 +74,49 @@ pub struct Page<'a> {
 
 /// The SVG text of a figure.
 pub fn svg(figure: &Figure, page: &Page) -> Result<String, String> {
-    let caption_height = LINE * page.caption.len() as u32 + 16;
     let body = match figure {
         Figure::Plots(plots) => PLOT * plots.len() as u32,
         Figure::Map(_) => 520,
     };
+    document(page.title, &page.caption, body, |root, main| match figure {
+        Figure::Plots(plots) => {
+            let pinned: Vec<&[Plot]> = page.pins.iter().map(|p| p.0).collect();
+            let names: Vec<String> = page.pins.iter().map(|p| p.1.clone()).collect();
+            let fs = frames(plots, &pinned, page.toggled);
+            let areas = main.split_evenly((fs.len(), 1));
+            for (f, area) in fs.iter().zip(&areas) {
+                plot(root, area, f, &names)?;
+            }
+            Ok(())
+        }
+        Figure::Map(m) => map::map(root, main, m, page.scale),
+    })
+}
+
+/// An SVG page: the title on top, a body `body` pixels high drawn by `draw` (given the whole
+/// page and the body's area), the caption's lines under it.
+pub(super) fn document(
+    title: &str,
+    caption: &[String],
+    body: u32,
+    draw: impl FnOnce(&Area, &Area) -> Result<(), String>,
+) -> Result<String, String> {
+    let caption_height = LINE * caption.len() as u32 + 16;
     let height = 40 + body + caption_height;
     let mut text = String::new();
     {
         let root = SVGBackend::with_string(&mut text, (WIDTH, height)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let (title, rest) = root.split_vertically(40);
-        let (main, caption) = rest.split_vertically(body);
-        title
-            .draw(&Text::new(
-                page.title.to_string(),
-                (WIDTH as i32 / 2, 12),
-                font(20).pos(Pos::new(HPos::Center, VPos::Top)),
-            ))
-            .map_err(err)?;
-        for (i, line) in page.caption.iter().enumerate() {
-            caption
+        let (top, rest) = root.split_vertically(40);
+        let (main, bottom) = rest.split_vertically(body);
+        top.draw(&Text::new(
+            title.to_string(),
+            (WIDTH as i32 / 2, 12),
+            font(20).pos(Pos::new(HPos::Center, VPos::Top)),
+        ))
+        .map_err(err)?;
+        for (i, line) in caption.iter().enumerate() {
+            bottom
                 .draw(&Text::new(
                     line.clone(),
                     (16, 8 + (LINE * i as u32) as i32),
@@ -96,18 +124,7 @@ pub fn svg(figure: &Figure, page: &Page) -> Result<String, String> {
                 ))
                 .map_err(err)?;
         }
-        match figure {
-            Figure::Plots(plots) => {
-                let pinned: Vec<&[Plot]> = page.pins.iter().map(|p| p.0).collect();
-                let names: Vec<String> = page.pins.iter().map(|p| p.1.clone()).collect();
-                let fs = frames(plots, &pinned, page.toggled);
-                let areas = main.split_evenly((fs.len(), 1));
-                for (f, area) in fs.iter().zip(&areas) {
-                    plot(&root, area, f, &names)?;
-                }
-            }
-            Figure::Map(m) => map::map(&root, &main, m, page.scale)?,
-        }
+        draw(&root, &main)?;
         root.present().map_err(err)?;
     }
     Ok(text)
@@ -159,33 +176,17 @@ fn pieces(points: &[(f64, f64)], f: &Frame, ys: Scale) -> Vec<Vec<(f64, f64)>> {
     out
 }
 
-/// One legend line right of the plot: a sample drawn by `sample` at (x, y), then the text.
-fn entry(
-    root: &Area,
-    x: i32,
-    y: i32,
-    text: &str,
-    sample: impl FnOnce(i32, i32) -> Result<(), String>,
-) -> Result<(), String> {
-    sample(x, y)?;
-    root.draw(&Text::new(
-        text.to_string(),
-        (x + 30, y),
-        font(13).pos(Pos::new(HPos::Left, VPos::Center)),
-    ))
-    .map_err(err)
-}
-
-/// Tick marks and labels on both axes, at the pixels of the chart's coordinates.
+/// Tick marks and labels on both axes, at the pixels of the chart's coordinates; the axes meet
+/// at `origin` (plot coordinates).
 pub(super) fn axes(
     root: &Area,
     chart: &Chart2d,
-    f: &Frame,
+    origin: (f64, f64),
     x: &Ticks,
     y: &Ticks,
 ) -> Result<(), String> {
     for (pos, label) in &x.ticks {
-        let (px, py) = chart.backend_coord(&(*pos, f.y[0]));
+        let (px, py) = chart.backend_coord(&(*pos, origin.1));
         root.draw(&PathElement::new(vec![(px, py), (px, py + 6)], BLACK))
             .map_err(err)?;
         root.draw(&Text::new(
@@ -196,7 +197,7 @@ pub(super) fn axes(
         .map_err(err)?;
     }
     for (pos, label) in &y.ticks {
-        let (px, py) = chart.backend_coord(&(f.x[0], *pos));
+        let (px, py) = chart.backend_coord(&(origin.0, *pos));
         root.draw(&PathElement::new(vec![(px - 6, py), (px, py)], BLACK))
             .map_err(err)?;
         root.draw(&Text::new(
@@ -257,6 +258,15 @@ fn plot(root: &Area, area: &Area, f: &Frame, pin_names: &[String]) -> Result<(),
                 .map_err(err)?;
         }
     }
+    // where a model's own check fails: its curve paler there
+    for (i, s) in &p.dim {
+        for piece in pieces(&s.points, f, f.y_scale) {
+            let under = LineSeries::new(piece.clone(), WHITE.stroke_width(3));
+            chart.draw_series(under).map_err(err)?;
+            let pale = LineSeries::new(piece, colour(*i).mix(DIM).stroke_width(2));
+            chart.draw_series(pale).map_err(err)?;
+        }
+    }
     if let Some(m) = &p.markers {
         let dots = plotted(&m.points, xs, f.y_scale)
             .into_iter()
@@ -264,83 +274,6 @@ fn plot(root: &Area, area: &Area, f: &Frame, pin_names: &[String]) -> Result<(),
             .map(|q| Circle::new(q, 4, BLACK.filled()));
         chart.draw_series(dots).map_err(err)?;
     }
-    axes(root, &chart, f, &x, &y)?;
-    legend(root, &chart, f, pin_names)
-}
-
-/// The legend right of the plot: curves (those off the y range with their range), markers,
-/// reference lines, shaded ranges, pins.
-fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> Result<(), String> {
-    let p = f.plot;
-    let (right, top) = chart.backend_coord(&(f.x[1], f.y[1]));
-    let x = right + 16;
-    let mut y = top + 8;
-    let mut next = || {
-        y += 18;
-        y - 18
-    };
-    let line = |i: usize| {
-        move |x: i32, y: i32| {
-            root.draw(&PathElement::new(
-                vec![(x, y), (x + 22, y)],
-                colour(i).stroke_width(2),
-            ))
-            .map_err(err)
-        }
-    };
-    for (i, s) in p.series.iter().enumerate() {
-        let drawn = plotted(&s.points, p.x.scale, f.y_scale);
-        let text = if drawn.is_empty() {
-            format!("{}: no values to draw", s.name)
-        } else if !drawn.iter().any(|q| (f.y[0]..=f.y[1]).contains(&q.1)) {
-            let [lo, hi] = bounds(s.points.iter().map(|q| q.1));
-            let unit = p.y.unit;
-            format!(
-                "{}: off scale, {}..{}",
-                s.name,
-                format_si(lo, unit),
-                format_si(hi, unit)
-            )
-        } else {
-            s.name.clone()
-        };
-        entry(root, x, next(), &text, line(i))?;
-    }
-    if let Some(m) = &p.markers {
-        entry(root, x, next(), &m.name, |x, y| {
-            root.draw(&Circle::new((x + 11, y), 4, BLACK.filled()))
-                .map_err(err)
-        })?;
-    }
-    let grey_line = |x: i32, y: i32| {
-        root.draw(&PathElement::new(vec![(x, y), (x + 22, y)], GREY))
-            .map_err(err)
-    };
-    for m in &p.y_marks {
-        entry(root, x, next(), &m.label, grey_line)?;
-    }
-    for s in &p.shaded {
-        entry(root, x, next(), &s.label, |x, y| {
-            root.draw(&Rectangle::new(
-                [(x, y - 6), (x + 22, y + 6)],
-                GREY.mix(0.15).filled(),
-            ))
-            .map_err(err)
-        })?;
-    }
-    for (n, name) in pin_names.iter().enumerate().take(f.pins.len()) {
-        let dash = 2 + 3 * n as u32;
-        entry(root, x, next(), name, |x, y| {
-            // the pin's dashes: dash pixels on, 3 off
-            let style = colour(0).mix(0.5).stroke_width(1);
-            (0..22)
-                .step_by(dash as usize + 3)
-                .try_for_each(|d| {
-                    let end = (d + dash as i32).min(22);
-                    root.draw(&PathElement::new(vec![(x + d, y), (x + end, y)], style))
-                })
-                .map_err(err)
-        })?;
-    }
-    Ok(())
+    axes(root, &chart, (f.x[0], f.y[0]), &x, &y)?;
+    legend::legend(root, &chart, f, pin_names)
 }

@@ -1,0 +1,133 @@
+//! The legend right of a plot in the SVG: its curves, markers, reference lines, shaded ranges,
+//! the parts where a model fails, and the pins; every curve that the plot cannot show whole is
+//! named with its range ("off scale" wholly outside the y range, "partly off scale" where the
+//! frame cuts it), so that a figure never drops part of a curve without saying so.
+
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::{Area, Chart2d, DIM, GREY, colour, err, font};
+use crate::tui::charts::Series;
+use crate::tui::charts::range::{Frame, bounds, plotted};
+use crate::units::format_si;
+
+/// Pixels between two legend lines.
+const STEP: i32 = 18;
+
+/// The legend's lines of a curve: its name, and where the frame does not hold it whole a second
+/// line saying so with the curve's y range (the legend is too narrow for both on one line).
+pub fn curve_lines(s: &Series, f: &Frame) -> Vec<String> {
+    let drawn = plotted(&s.points, f.plot.x.scale, f.y_scale);
+    let inside = |q: &(f64, f64)| (f.y[0]..=f.y[1]).contains(&q.1);
+    let range = || {
+        let [lo, hi] = bounds(s.points.iter().map(|q| q.1));
+        let unit = f.plot.y.unit;
+        format!("{}..{}", format_si(lo, unit), format_si(hi, unit))
+    };
+    if drawn.is_empty() {
+        vec![format!("{}: no values to draw", s.name)]
+    } else if !drawn.iter().any(inside) {
+        vec![s.name.clone(), format!("off scale, {}", range())]
+    } else if !drawn.iter().all(inside) || drawn.len() < s.points.len() {
+        vec![s.name.clone(), format!("partly off scale, {}", range())]
+    } else {
+        vec![s.name.clone()]
+    }
+}
+
+/// Writes the legend's lines from `top`: the first beside a sample drawn by `sample`, the others
+/// under it; returns the y of the next entry.
+fn entry(
+    root: &Area,
+    (x, top): (i32, i32),
+    lines: &[String],
+    sample: impl FnOnce(i32, i32) -> Result<(), String>,
+) -> Result<i32, String> {
+    sample(x, top)?;
+    let mut y = top;
+    for line in lines {
+        root.draw(&Text::new(
+            line.clone(),
+            (x + 30, y),
+            font(13).pos(Pos::new(HPos::Left, VPos::Center)),
+        ))
+        .map_err(err)?;
+        y += STEP;
+    }
+    Ok(y)
+}
+
+/// A line sample 22 pixels long.
+fn line_sample(root: &Area, style: ShapeStyle) -> impl FnOnce(i32, i32) -> Result<(), String> {
+    move |x, y| {
+        root.draw(&PathElement::new(vec![(x, y), (x + 22, y)], style))
+            .map_err(err)
+    }
+}
+
+/// The legend right of the plot: curves, markers, reference lines, shaded ranges, the failing
+/// parts, pins (and the pins' curves the plot cannot show whole).
+pub fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> Result<(), String> {
+    let p = f.plot;
+    let (right, top) = chart.backend_coord(&(f.x[1], f.y[1]));
+    let x = right + 16;
+    let mut y = top + 8;
+    for (i, s) in p.series.iter().enumerate() {
+        let style = colour(i).stroke_width(2);
+        y = entry(root, (x, y), &curve_lines(s, f), line_sample(root, style))?;
+    }
+    if let Some(m) = &p.markers {
+        y = entry(root, (x, y), std::slice::from_ref(&m.name), |x, y| {
+            root.draw(&Circle::new((x + 11, y), 4, BLACK.filled()))
+                .map_err(err)
+        })?;
+    }
+    for m in &p.y_marks {
+        let grey = line_sample(root, GREY.into());
+        y = entry(root, (x, y), std::slice::from_ref(&m.label), grey)?;
+    }
+    if let Some((i, _)) = p.dim.first() {
+        let pale = line_sample(root, colour(*i).mix(DIM).stroke_width(2));
+        y = entry(root, (x, y), std::slice::from_ref(&p.dim_label), pale)?;
+    }
+    for s in &p.shaded {
+        y = entry(root, (x, y), std::slice::from_ref(&s.label), |x, y| {
+            root.draw(&Rectangle::new(
+                [(x, y - 6), (x + 22, y + 6)],
+                GREY.mix(0.15).filled(),
+            ))
+            .map_err(err)
+        })?;
+    }
+    for (n, (name, pin)) in pin_names.iter().zip(&f.pins).enumerate() {
+        let dash = 2 + 3 * n as u32;
+        let mut lines = vec![name.clone()];
+        // a pinned curve the frame cuts: named under its pin
+        for s in &pin.series {
+            let of = curve_lines(
+                s,
+                &Frame {
+                    plot: pin,
+                    ..f.clone()
+                },
+            );
+            match of.as_slice() {
+                [name, cut] => lines.push(format!("{name}: {cut}")),
+                [only] if *only != s.name => lines.push(only.clone()),
+                _ => {}
+            }
+        }
+        y = entry(root, (x, y), &lines, |x, y| {
+            // the pin's dashes: dash pixels on, 3 off
+            let style = colour(0).mix(0.5).stroke_width(1);
+            (0..22)
+                .step_by(dash as usize + 3)
+                .try_for_each(|d| {
+                    let end = (d + dash as i32).min(22);
+                    root.draw(&PathElement::new(vec![(x + d, y), (x + end, y)], style))
+                })
+                .map_err(err)
+        })?;
+    }
+    Ok(())
+}
