@@ -1,7 +1,8 @@
 //! `wearlab fit PRESET --data FILE --free KEY[,KEY...] [--set ...] [--write OUT.toml]`: the
 //! library's fit (`wearlab::fit`) of the free parameters to a data file (`wearlab::data`), as JSON
 //! on stdout: estimates, 95 % intervals, whether each is determined and why not, the residuals;
-//! `--write` saves the fitted preset atomically.
+//! `--write` saves the fitted preset atomically, as the explorer saves an edited preset: the
+//! preset file's text kept (comments, units, key order), only the values that changed rewritten.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -11,10 +12,12 @@ use serde_json::{Map, Value, json};
 use wearlab::data::{self, DataSet};
 use wearlab::fit::{self, Fit, FitError};
 use wearlab::physics::stop::Stop;
-use wearlab::preset::{self, Key, Preset};
+use wearlab::preset::{self, Key, Links, Origin, Preset};
 use wearlab::{finite, units};
 
-use super::{EXIT_INVALID, EXIT_OUTPUT, EXIT_UNSOLVABLE, finished, load_with, print, say, within};
+use super::{
+    EXIT_INVALID, EXIT_OUTPUT, EXIT_UNSOLVABLE, finished, load, print, say, settled, within,
+};
 
 /// What `wearlab fit` was asked.
 pub struct Request<'a> {
@@ -48,7 +51,11 @@ fn keys(preset: &Preset, list: &str) -> Result<Vec<Key>, String> {
 
 /// Runs `wearlab fit`.
 pub fn run(request: &Request) -> ExitCode {
-    let preset = match load_with(request.path, request.settings, request.unlock) {
+    let read = match load(request.path) {
+        Ok(p) => p,
+        Err(code) => return code,
+    };
+    let preset = match settled(request.path, &read, request.settings, request.unlock) {
         Ok(p) => p,
         Err(code) => return code,
     };
@@ -60,9 +67,15 @@ pub fn run(request: &Request) -> ExitCode {
         Ok(k) => k,
         Err(why) => return invalid(&why),
     };
+    // the file the preset was read from, whose text the written preset keeps
+    let origin = Origin {
+        path: request.path.to_path_buf(),
+        preset: read,
+    };
+    let write = request.write.map(|out| (out, &origin));
     let bounded = within(
         request.max_seconds,
-        |stop| answer(&preset, &data, &keys, request.write, stop),
+        |stop| answer(&preset, &data, &keys, write, stop),
         &|| {},
     );
     finished(bounded)
@@ -73,7 +86,7 @@ fn answer(
     preset: &Preset,
     data: &DataSet,
     keys: &[Key],
-    write: Option<&Path>,
+    write: Option<(&Path, &Origin)>,
     stop: Stop,
 ) -> Result<ExitCode, String> {
     let fitted = fit::fit_until(preset, data, keys, stop);
@@ -88,9 +101,9 @@ fn answer(
             return Ok(ExitCode::from(EXIT_UNSOLVABLE));
         }
     };
-    let report = json(data, &fitted, write);
-    if let Some(out) = write
-        && let Err(e) = preset::save(&fitted.preset, out)
+    let report = json(data, &fitted, write.map(|w| w.0));
+    if let Some((out, origin)) = write
+        && let Err(e) = preset::save_edited(&fitted.preset, Some(origin), out, Links::Follow)
     {
         say(&format!("error: cannot write {}: {e}", out.display()));
         return Ok(ExitCode::from(EXIT_OUTPUT));

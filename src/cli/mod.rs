@@ -70,7 +70,16 @@ pub fn load(path: &Path) -> Result<Preset, ExitCode> {
 /// The preset at `path` with the `--set` values applied; a value that changes a key the
 /// preset's lesson locks is refused (exit 2) unless `unlock` (`--unlock`, the instructor's).
 pub fn load_with(path: &Path, settings: &[String], unlock: bool) -> Result<Preset, ExitCode> {
-    let preset = load(path)?;
+    settled(path, &load(path)?, settings, unlock)
+}
+
+/// `preset`, read from `path`, with the `--set` values applied, as `load_with` gives it.
+pub fn settled(
+    path: &Path,
+    preset: &Preset,
+    settings: &[String],
+    unlock: bool,
+) -> Result<Preset, ExitCode> {
     let invalid = |why: String| {
         say(&format!("error: {why}"));
         ExitCode::from(EXIT_INVALID)

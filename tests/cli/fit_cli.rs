@@ -198,3 +198,73 @@ fn a_model_without_answer_exits_3_and_says_where() {
         "{err}"
     );
 }
+
+/// A lab preset as an instructor writes it by hand: comments, units, its own key order.
+const HAND_WRITTEN: &str = r#"# Week 3: the tribometer run, with a guess for mu
+schema = 1
+name = "Week 3: friction against load"
+description = "Fit mu to the run of friction-against-load.csv."
+problem = "plane"
+
+[plane]
+model = "wide"
+radius = "50 mm"       # the steel cylinder
+load = "5 kN/m"
+
+[material]
+youngs_modulus = "3 GPa"  # the coating
+poisson_ratio = 0.35
+thickness = "10 mm"
+
+[friction]
+coefficient = 0.2   # a guess: the fit finds it
+adhesion = 0.0
+
+[wear]
+coefficient = "2e-2 mm3/Nm"   # 2e-11 1/Pa
+"#;
+
+/// `--write` keeps the preset file's text: every line but the fitted value's as written, that
+/// one with its comment and every digit the fit found.
+#[test]
+fn the_written_preset_keeps_the_authors_text_and_changes_only_the_fitted_value() {
+    let dir = tempfile::tempdir().unwrap();
+    let lab = dir.path().join("week3.toml");
+    std::fs::write(&lab, HAND_WRITTEN).unwrap();
+    let fitted = dir.path().join("fitted.toml");
+    let (code, out, err) = run(&[
+        "fit",
+        lab.to_str().unwrap(),
+        "--data",
+        DATA,
+        "--free",
+        "friction.coefficient",
+        "--write",
+        fitted.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let mu = json["estimates"]["friction.coefficient"].as_f64().unwrap();
+    let text = std::fs::read_to_string(&fitted).unwrap();
+    let (before, after): (Vec<&str>, Vec<&str>) =
+        (HAND_WRITTEN.lines().collect(), text.lines().collect());
+    assert_eq!(before.len(), after.len(), "{text}");
+    let changed: Vec<usize> = (0..before.len())
+        .filter(|&i| before[i] != after[i])
+        .collect();
+    // line 18: the friction coefficient
+    assert_eq!(changed, [17], "{text}");
+    let (value, comment) = after[17].split_once('#').unwrap();
+    assert_eq!(comment, " a guess: the fit finds it");
+    let written: f64 = value
+        .trim()
+        .strip_prefix("coefficient = ")
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    assert_eq!(written, mu);
+    assert_eq!(json["written"], fitted.to_str().unwrap());
+    // the original is unchanged
+    assert_eq!(std::fs::read_to_string(&lab).unwrap(), HAND_WRITTEN);
+}
