@@ -51,6 +51,8 @@ pub enum SpatialChart {
     MuStar,
     /// c against kh.
     Dispersion,
+    /// The PSD of a height-map punch, as given and at t.
+    Spectrum,
 }
 
 impl SpatialChart {
@@ -62,6 +64,7 @@ impl SpatialChart {
             Self::History => "time history",
             Self::MuStar => "mu* against mean pressure",
             Self::Dispersion => "dispersion: drift velocity",
+            Self::Spectrum => "surface spectrum (PSD)",
         }
     }
 }

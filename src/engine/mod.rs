@@ -1,11 +1,11 @@
 //! The incremental engine behind the explorer: the library's pipeline stages
 //! (`plane::operating_point`, `strip_check::strip_check`, `sweep`, `spatial::evolutions`,
 //! `spatial::state_at`, `history`, `dispersion`, and on the period cell the running-in and
-//! mu*(pbar) of `spatial::partial`), each cached by the typed inputs it depends on, so an edit
-//! recomputes only what it touches; and two background workers on the newest request
-//! (`latest`): the solve worker (`Worker`), which answers in stages, what the status shows first,
-//! and the sweep worker (`sweep_worker`). Long work (the running-in, a sweep) reports progress and
-//! stops when a newer request arrives.
+//! mu*(pbar) of `spatial::partial`, the only stages of a height-map punch), each cached by the
+//! typed inputs it depends on, so an edit recomputes only what it touches; and two background
+//! workers on the newest request (`latest`): the solve worker (`Worker`), which answers in
+//! stages, what the status shows first, and the sweep worker (`sweep_worker`). Long work (the
+//! running-in, a sweep) reports progress and stops when a newer request arrives.
 
 mod cache;
 mod cell;
@@ -13,6 +13,7 @@ mod footprint;
 pub mod latest;
 mod output;
 mod solve_worker;
+mod surface;
 pub mod sweep_worker;
 mod validity;
 
@@ -38,6 +39,7 @@ pub use cache::{RUN_BYTES, STAGE_BYTES};
 pub use cell::{CellOutput, Progress};
 pub use output::{Answer, Output, PlaneOutput, Request, SpatialOutput, StageCounts};
 pub use solve_worker::Worker;
+pub use surface::SurfaceOutput;
 
 /// Points of the plane profile drawn by the explorer.
 pub const PROFILE_POINTS: usize = 201;
@@ -255,14 +257,7 @@ impl Engine {
             return;
         }
         if inputs.surface().is_some() {
-            deliver(
-                Output::Spatial(Err(SolveError::NoSolution(
-                    "the explorer does not draw a height-map punch (spatial.surface): \
-                     `wearlab solve` answers it"
-                        .into(),
-                ))),
-                true,
-            );
+            self.surface(request, &inputs, cancelled, stop, deliver);
             return;
         }
         let responses =

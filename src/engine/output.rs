@@ -12,6 +12,7 @@ use crate::physics::spatial::{SpatialState, pipeline};
 use crate::preset::Preset;
 
 use super::cell::CellOutput;
+use super::surface::SurfaceOutput;
 
 /// What the explorer asks the engine for.
 #[derive(Clone, Debug, PartialEq)]
@@ -79,6 +80,8 @@ pub enum Output {
     Plane(PlaneOutput),
     /// Spatial problem, or why its inputs cannot be solved.
     Spatial(Result<SpatialOutput, SolveError>),
+    /// Spatial problem of a height-map punch (`spatial.surface`), or why it cannot be solved.
+    Surface(Result<SurfaceOutput, SolveError>),
 }
 
 /// One delivery of the worker: the request it answers, what is known so far, and whether it is

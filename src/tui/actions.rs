@@ -12,6 +12,7 @@ use crate::tui::keys::Action;
 use crate::tui::lesson_keys;
 use crate::tui::lesson_state::{LessonState, invitation};
 use crate::tui::map_cursor;
+use crate::tui::surface_keys;
 use crate::tui::sweep_form_keys;
 use crate::tui::sweep_keys;
 use crate::tui::sweep_state::View;
@@ -125,8 +126,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::AddHarmonic | Action::RemoveHarmonic
             if app.doc.preset.spatial.surface.is_some() =>
         {
-            app.complain("the punch is a height map (spatial.surface): it has no harmonics");
-            Vec::new()
+            surface_keys::no_harmonics(app)
         }
         Action::AddHarmonic => add_harmonic(app),
         Action::RemoveHarmonic => remove_harmonic(app),

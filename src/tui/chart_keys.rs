@@ -227,14 +227,19 @@ pub fn keep_heat_scale(app: &mut App) {
     let Some(answer) = &app.solve.shown else {
         return;
     };
-    let Output::Spatial(Ok(out)) = &answer.output else {
-        return;
-    };
-    // the pressures the map draws: the closed form's, or the nodes' of the period cell
-    let pressure = match crate::tui::charts::contact::fields(out) {
-        Ok(Fields::Closed) => &out.state.field.pressure,
-        Ok(Fields::Nodes(state)) => &state.pressure,
-        Err(_) => return,
+    // the pressures the map draws: the closed form's, or the nodes' of the period cell or of a
+    // height map's grid
+    let pressure = match &answer.output {
+        Output::Spatial(Ok(out)) => match crate::tui::charts::contact::fields(out) {
+            Ok(Fields::Closed) => &out.state.field.pressure,
+            Ok(Fields::Nodes(state)) => &state.pressure,
+            Err(_) => return,
+        },
+        Output::Surface(Ok(out)) => match out.running_in().map(|c| &c.state) {
+            Some(Ok(state)) => &state.pressure,
+            _ => return,
+        },
+        _ => return,
     };
     let [lo, hi] = crate::tui::charts::range::bounds(pressure.iter().copied());
     let mut inputs = answer.request.preset.clone();

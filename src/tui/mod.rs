@@ -22,6 +22,7 @@ pub mod picker_keys;
 pub mod prompt_keys;
 #[cfg(unix)]
 pub mod signals;
+pub mod surface_keys;
 pub mod sweep_export;
 pub mod sweep_form_keys;
 pub mod sweep_keys;

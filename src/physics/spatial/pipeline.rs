@@ -214,8 +214,9 @@ fn on_the_cell(
     })
 }
 
-/// The statistics of the shape at t on the grid of a height map.
-fn surface_at(state: &State) -> SurfaceResult {
+/// The statistics, bearing-area curve and PSD of the shape of `state` on the grid of a height
+/// map (a profile's cell has ly = 0).
+pub fn surface_at(state: &State) -> SurfaceResult {
     let g = state.grid;
     SurfaceResult::of(&Surface {
         nx: g.nx,
@@ -331,7 +332,7 @@ fn closed_form(
 
 /// The sweep's mean pressures [Pa] (none when the range is outside `limits::MEAN_PRESSURE`, as
 /// in the closed-form sweep).
-fn sweep_pressures(at: &StateAt) -> Vec<f64> {
+pub fn sweep_pressures(at: &StateAt) -> Vec<f64> {
     match at
         .sweep
         .check(["pressure_min", "pressure_max"], &limits::MEAN_PRESSURE)

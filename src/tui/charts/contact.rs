@@ -74,12 +74,11 @@ pub fn stretched(values: &[f64], row_len: usize, ys: Vec<f64>, ly: f64) -> (Vec<
     (y, values.repeat(rows))
 }
 
-/// The pressure on the nodes, zero pressure (no contact) drawn apart. A 1-D shape (one node
-/// along y) is drawn stretched over the cell's extent in y, as the closed form is.
-pub fn map(out: &SpatialOutput, state: &State, caption: String) -> Map {
+/// The pressure on the nodes at the preset's time `t` [s], zero pressure (no contact) drawn
+/// apart. A 1-D shape (one node along y) is drawn stretched over `ly` [m], as the closed form is.
+pub fn map(t: f64, ly: f64, state: &State, caption: String) -> Map {
     let g = state.grid;
-    let (y, values) = stretched(&state.pressure, g.nx, g.ys(), out.state.cell.ly);
-    let t = out.state.solution.time;
+    let (y, values) = stretched(&state.pressure, g.nx, g.ys(), ly);
     let when = if state.time == t {
         String::new()
     } else {

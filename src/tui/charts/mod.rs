@@ -13,6 +13,7 @@ mod plane;
 pub mod range;
 pub mod readout;
 mod spatial;
+mod surface;
 pub mod svg;
 pub mod sweep;
 pub mod ticks;
@@ -236,6 +237,11 @@ impl SpatialChart {
                 overlays: true,
                 build: spatial::mu_star,
             },
+            Self::Spectrum => ChartSpec {
+                help: "The power spectral density C(q) of a height-map punch's surface, radially averaged over log bins of the wavenumber q = |(qx, qy)|, on log-log axes: as given (t = 0) and at the state shown. A self-affine surface falls as q^(-2(1+H)) between its roll-off and cutoff (a profile as q^(-(1+2H))). Wear takes the short waves (large q) first: the curve at t drops most at the right. A punch of harmonics has a line spectrum: each harmonic's amplitude A against |k|, as given (the line) and at t (the blocks).",
+                overlays: false,
+                build: spatial::spectrum,
+            },
             Self::Dispersion => ChartSpec {
                 help: "Drift velocity c of a wave against kh (k for a half-space) for wave vectors at 0, 45 and 75 degrees to the sliding line; the punch's harmonics are marked. c > 0 is along +x, with the friction on the layer; for nu > 1/4, waves with kh < X* drift backwards (X* marked where c changes sign). Where the three directions differ by less than a line width the legend says so ('one line') and a second plot draws the 45 and 75 degree curves' differences from the 0 degree one.",
                 overlays: false,
@@ -283,6 +289,8 @@ impl Chart {
             (Chart::Plane(c), Output::Plane(out)) => (c.spec().build)(preset, out),
             (Chart::Spatial(c), Output::Spatial(Ok(out))) => (c.spec().build)(preset, out),
             (Chart::Spatial(_), Output::Spatial(Err(e))) => Err(NoFigure::Error(e.to_string())),
+            (Chart::Spatial(c), Output::Surface(Ok(out))) => surface::build(c, preset, out),
+            (Chart::Spatial(_), Output::Surface(Err(e))) => Err(NoFigure::Error(e.to_string())),
             // the answer is for the other problem: the chart's own is on its way
             _ => Err(NoFigure::Solving),
         }

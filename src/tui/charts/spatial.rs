@@ -22,7 +22,7 @@ pub(super) fn pressure_map(_: &Preset, out: &SpatialOutput) -> Result<Figure, No
     );
     let f = &st.field;
     Ok(Figure::Map(match contact::fields(out)? {
-        Fields::Nodes(state) => contact::map(out, state, caption),
+        Fields::Nodes(state) => contact::map(st.solution.time, cell.ly, state, caption),
         Fields::Closed => {
             let (y, values) = contact::stretched(&f.pressure, f.n, f.y.clone(), cell.ly);
             Map {
@@ -48,15 +48,20 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
             (f.x.clone(), along(&f.pressure), along(&f.shape), f.y[row])
         }
     };
+    Ok(line_plots(&x, &p, &u, y))
+}
+
+/// p and U against x along the row at `y` [m], each crest marked in its legend.
+pub(super) fn line_plots(x: &[f64], p: &[f64], u: &[f64], y: f64) -> Figure {
     let y = format_si(y, "m");
     let x_axis = || axis("x", "m", Scale::Linear);
-    let (p, u) = (zip(&x, &p), zip(&x, &u));
+    let (p, u) = (zip(x, p), zip(x, u));
     let crest = |points: &[(f64, f64)]| {
         crest(points).map_or(String::new(), |c| {
             format!(", crest x = {}", format_si(c, "m"))
         })
     };
-    Ok(Figure::Plots(vec![
+    Figure::Plots(vec![
         Plot::new(
             x_axis(),
             axis("p", "Pa", Scale::Linear),
@@ -73,7 +78,7 @@ pub(super) fn line(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> 
                 points: u,
             }],
         ),
-    ]))
+    ])
 }
 
 pub(super) fn history(preset: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
@@ -279,4 +284,34 @@ fn sign_changes<'a>(x: &'a [f64], y: &'a [f64]) -> impl Iterator<Item = f64> + '
         .zip(y.windows(2))
         .filter(|(_, y)| y[0] * y[1] < 0.0)
         .map(|(x, y)| x[0] + (x[1] - x[0]) * y[0] / (y[0] - y[1]))
+}
+
+/// A punch of harmonics has a line spectrum: each harmonic's amplitude against its wavenumber
+/// |k|, as given and at t (a height map's chart draws its PSD instead).
+pub(super) fn spectrum(_: &Preset, out: &SpatialOutput) -> Result<Figure, NoFigure> {
+    let s = &out.state.solution;
+    let mut given: Vec<(f64, f64)> = (s.harmonics.iter())
+        .map(|h| (h.initial.wavenumber(), h.initial.amplitude.abs()))
+        .filter(|(k, a)| *k > 0.0 && *a > 0.0)
+        .collect();
+    let mut at: Vec<(f64, f64)> = (s.harmonics.iter())
+        .map(|h| (h.initial.wavenumber(), h.state.amplitude.abs()))
+        .filter(|(k, a)| *k > 0.0 && *a > 0.0)
+        .collect();
+    given.sort_by(|a, b| a.0.total_cmp(&b.0));
+    at.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut plot = Plot::new(
+        // a few harmonics span less than a decade or two: a linear |k| labels both ends
+        axis("|k|", "rad/m", Scale::Linear),
+        axis("A [m]", "", Scale::Log),
+        vec![Series {
+            name: "harmonics as given (t = 0)".into(),
+            points: given,
+        }],
+    );
+    plot.markers = Some(Series {
+        name: format!("t = {}", format_si(s.time, "s")),
+        points: at,
+    });
+    Ok(Figure::Plots(vec![plot]))
 }

@@ -25,6 +25,7 @@ mod save_prompt;
 mod screens;
 mod shape_form;
 mod stale;
+mod surfaces;
 mod sweep_export;
 mod ticks;
 mod update;

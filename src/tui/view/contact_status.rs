@@ -4,7 +4,6 @@
 
 use crate::engine::{CellOutput, Progress};
 use crate::phrase::Phrase;
-use crate::physics::spatial::SpatialSolution;
 use crate::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
 use crate::units::format_si;
 use ratatui::text::Line;
@@ -27,10 +26,12 @@ pub fn percent(fraction: f64) -> String {
 /// The head of the status for the state on the cell, and whether the state shown is partial
 /// (the harmonics' closed-form rates then hold only after complete contact) and whether `then`
 /// was said: with `then`, the time of complete contact ends in ", then:", heading the
-/// harmonics' rows (without, where no row fits under it).
+/// harmonics' rows (without, where no row fits under it). `mu` is the sliding friction
+/// coefficient, `wear_rate` k V [m/(Pa s)] of the inputs.
 pub fn head(
     c: &CellOutput,
-    closed: &SpatialSolution,
+    mu: f64,
+    wear_rate: f64,
     style: RenderOptions,
     width: usize,
     then: bool,
@@ -46,7 +47,6 @@ pub fn head(
         }
     };
     let o = &state.outputs;
-    let mu = closed.inputs.friction.coefficient;
     let (verdict, verdict_style) = if o.complete {
         ("complete contact".to_string(), style.ok())
     } else {
@@ -85,7 +85,7 @@ pub fn head(
             towards: None,
         } => Phrase::words("running in to complete contact:")
             .then(format!("t = {}", format_si(reached, "s"))),
-        Progress::Done { reached } => done(c, closed, reached, true),
+        Progress::Done { reached } => done(c, wear_rate, reached, true),
     };
     let complete_at = c.history.as_deref().ok().and_then(|h| h.time_to_complete);
     let done_at = match c.progress {
@@ -98,7 +98,7 @@ pub fn head(
     // the time-step error only where the line keeps to one row (the harmonics' rows under it
     // need the room)
     if let Some(reached) = done_at.filter(|_| running.to_string().chars().count() > width) {
-        running = done(c, closed, reached, false).ending(then);
+        running = done(c, wear_rate, reached, false).ending(then);
     }
     lines.extend(
         lines_of(&running, width)
@@ -111,7 +111,7 @@ pub fn head(
 /// The end of the running-in (its last stepped state at `reached` [s]), in words, with the
 /// estimate of its time-stepping error when `error` (relative: the values shown are that close
 /// to the exact running-in on this grid).
-fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64, error: bool) -> Phrase {
+fn done(c: &CellOutput, wear_rate: f64, reached: f64, error: bool) -> Phrase {
     let history = c.history.as_deref().ok();
     let complete_at = history.and_then(|h| h.time_to_complete);
     let error = history.and_then(|h| h.time_error).filter(|_| error);
@@ -123,15 +123,17 @@ fn done(c: &CellOutput, closed: &SpatialSolution, reached: f64, error: bool) -> 
             .then(format!("error < {e:.1e})")),
         None => p.ending(")"),
     };
+    if c.complete_from_start {
+        // a height map in complete contact from the start (harmonics show their closed form then)
+        return Phrase::words("complete from t = 0: every mode wears by its closed form");
+    }
     match complete_at {
         Some(t) => closing(
             Phrase::words("complete after")
                 .then(format!("t = {}", format_si(t, "s")))
                 .then("(simulated"),
         ),
-        None if closed.inputs.wear_rate() == 0.0 => {
-            Phrase::words("no wear: the contact stays as it is")
-        }
+        None if wear_rate == 0.0 => Phrase::words("no wear: the contact stays as it is"),
         None => closing(
             Phrase::words("still partial at")
                 .then(format!("t = {}:", format_si(reached, "s")))

@@ -12,6 +12,7 @@ use ratatui::text::Line;
 use crate::tui::app::App;
 use crate::tui::charts::contact;
 use crate::tui::view::status_values::{mu_star, number, per_output, prose, visible};
+use crate::tui::view::surface_status;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
 use crate::tui::view::wrapping::pack;
@@ -48,6 +49,8 @@ pub fn lines(
         style,
         |p, check| plane(p, check, style, width, height),
         |out| spatial(out, selected, style, width, height),
+        // a height map has no harmonics whose groups could be listed: its values as they are
+        |out| surface_status::lines(out, style, width),
     )
 }
 

@@ -22,6 +22,7 @@ pub mod raster;
 pub mod regime;
 pub mod status;
 pub mod status_values;
+pub mod surface_status;
 pub mod sweep;
 pub mod theme;
 pub mod validity_status;

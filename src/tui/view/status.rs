@@ -23,7 +23,7 @@ use crate::tui::view::status_values::{mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
 use crate::tui::view::wrapping::{pack, pack_within};
-use crate::tui::view::{contact_status, groups_status};
+use crate::tui::view::{contact_status, groups_status, surface_status};
 use crate::tui::view::{note, wrap};
 
 /// Draws the status of the shown result into `area`.
@@ -50,6 +50,7 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
                 style,
                 |p, check| plane(p, check, style, width, height),
                 |out| spatial(out, selected, style, width, height),
+                |out| surface_status::lines(out, style, width),
             )
         }
     };
@@ -189,7 +190,10 @@ fn spatial(
     let after = "after complete contact:";
     // the state on the period cell, unless the closed form holds from t = 0
     let head = |then| match contact::stepped(out) {
-        Some(c) => contact_status::head(c, s, style, width, then),
+        Some(c) => {
+            let mu = s.inputs.friction.coefficient;
+            contact_status::head(c, mu, s.inputs.wear_rate(), style, width, then)
+        }
         None => (closed(out, style, width), false, false),
     };
     let (mut lines, partial, mut said) = head(true);

@@ -1,7 +1,7 @@
 //! How the status panels write what they show: a failed solve in words, mu* and the
 //! dimensionless numbers, a sentence wrapped to the panel, and which harmonics fit.
 
-use crate::engine::{Output, SpatialOutput};
+use crate::engine::{Output, SpatialOutput, SurfaceOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::strip_check::StripCheck;
@@ -11,13 +11,14 @@ use ratatui::text::Line;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrapping::lines_of;
 
-/// The status lines of an output: a failed solve in words, else the lines `plane` or `spatial`
-/// make of it (the dimensional status and the dimensionless view differ only there).
+/// The status lines of an output: a failed solve in words, else the lines `plane`, `spatial` or
+/// `surface` make of it (the dimensional status and the dimensionless view differ only there).
 pub fn per_output(
     output: &Output,
     style: RenderOptions,
     plane: impl FnOnce(&OperatingPoint, Option<&StripCheck>) -> Vec<Line<'static>>,
     spatial: impl FnOnce(&SpatialOutput) -> Vec<Line<'static>>,
+    surface: impl FnOnce(&SurfaceOutput) -> Vec<Line<'static>>,
 ) -> Vec<Line<'static>> {
     match output {
         Output::Plane(out) => match &out.point {
@@ -26,6 +27,8 @@ pub fn per_output(
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
         Output::Spatial(Ok(out)) => spatial(out),
+        Output::Surface(Err(e)) => vec![Line::styled(e.to_string(), style.error())],
+        Output::Surface(Ok(out)) => surface(out),
     }
 }
 
