@@ -104,6 +104,9 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         say(&format!("error: {why}"));
         return ExitCode::from(EXIT_INVALID);
     }
+    let spinner = ProgressBar::hidden();
+    let start = Instant::now();
+    let tick = || show_after_a_second(&spinner, start);
     if let Some(list) = options.output.clone() {
         if let Some(t) = options.time {
             preset.spatial.time = t;
@@ -111,8 +114,9 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         let bounded = within(
             options.max_seconds,
             |stop| solve_output::answer(&preset, &list, format, stop),
-            &|| {},
+            &tick,
         );
+        spinner.finish_and_clear();
         return finished(bounded);
     }
     if options.write_surface.is_some() && preset.spatial.surface.is_none() {
@@ -134,12 +138,10 @@ pub fn run(path: &Path, format: Option<Format>, options: &Overrides) -> ExitCode
         write_surface: options.write_surface.as_deref(),
         sweep: options.sweep,
     };
-    let spinner = ProgressBar::hidden();
-    let start = Instant::now();
     let bounded = within(
         options.max_seconds,
         |stop| answer(&preset, &asked, stop),
-        &|| show_after_a_second(&spinner, start),
+        &tick,
     );
     spinner.finish_and_clear();
     finished(bounded)

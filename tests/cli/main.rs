@@ -12,6 +12,7 @@ mod fit_cli;
 mod hostile_cli;
 mod lesson_lock;
 mod max_seconds;
+mod progress;
 mod quantities;
 mod run;
 mod shapes_cli;

@@ -4,5 +4,6 @@
 mod engine;
 mod explore_cancel;
 mod explore_map;
+mod tui_monkey;
 mod tui_signals;
 mod tui_tmux;

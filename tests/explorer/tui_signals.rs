@@ -6,19 +6,21 @@
 #![cfg(target_os = "linux")]
 
 use std::fs::File;
-use std::io::Read;
+use std::io::{Read, Write};
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
 use std::os::unix::process::CommandExt;
-use std::process::{Command, ExitStatus, Stdio};
+use std::path::Path;
+use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 /// crossterm's DisableMouseCapture: SGR, urxvt, any-event, button-event and normal reporting off.
 const MOUSE_OFF: &[u8] = b"\x1b[?1006l\x1b[?1015l\x1b[?1003l\x1b[?1002l\x1b[?1000l";
 /// Show the cursor (DECTCEM set).
-const SHOW_CURSOR: &[u8] = b"\x1b[?25h";
+pub const SHOW_CURSOR: &[u8] = b"\x1b[?25h";
 /// Leave the alternate screen (xterm's private mode 1049 reset).
-const LEAVE_ALTERNATE: &[u8] = b"\x1b[?1049l";
+pub const LEAVE_ALTERNATE: &[u8] = b"\x1b[?1049l";
 /// Enter the alternate screen.
 const ENTER_ALTERNATE: &[u8] = b"\x1b[?1049h";
 
@@ -55,89 +57,145 @@ fn local_modes(master: &OwnedFd) -> libc::tcflag_t {
     t.c_lflag
 }
 
+/// The real binary running in a pty of the test's own: what it writes is collected as it comes.
+pub struct Explorer {
+    master: OwnedFd,
+    child: Child,
+    written: Arc<Mutex<Vec<u8>>>,
+    reader: JoinHandle<()>,
+    deadline: Instant,
+}
+
+impl Explorer {
+    /// Starts `wearlab ARGS` in `dir` (also its HOME) on an 80 x 24 pty and waits for its first
+    /// frame, checking that the terminal is in raw mode.
+    pub fn start(dir: &Path, args: &[&str]) -> Explorer {
+        let (master, slave) = pty();
+        let mut command = Command::new(assert_cmd::cargo::cargo_bin!("wearlab"));
+        command
+            .args(args)
+            .current_dir(dir)
+            .env("TERM", "xterm-256color")
+            .env("HOME", dir)
+            .env("XDG_DATA_HOME", dir)
+            .stdin(Stdio::from(slave.try_clone().unwrap()))
+            .stdout(Stdio::from(slave.try_clone().unwrap()))
+            .stderr(Stdio::from(slave));
+        // SAFETY: only async-signal-safe calls between fork and exec: a session of its own whose
+        // controlling terminal is the pty (stdin), as a shell in a terminal emulator would have.
+        unsafe {
+            command.pre_exec(|| {
+                if libc::setsid() < 0 || libc::ioctl(0, libc::TIOCSCTTY, 0) < 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                Ok(())
+            });
+        }
+        let child = command.spawn().unwrap();
+        // the slave's last copy outside the child goes with the command, so that reading the
+        // master ends when the child has exited
+        drop(command);
+        let written = Arc::new(Mutex::new(Vec::new()));
+        let reader = {
+            let written = Arc::clone(&written);
+            let mut file = File::from(master.try_clone().unwrap());
+            std::thread::spawn(move || {
+                let mut chunk = [0u8; 65536];
+                while let Ok(n) = file.read(&mut chunk) {
+                    if n == 0 {
+                        break;
+                    }
+                    written.lock().unwrap().extend_from_slice(&chunk[..n]);
+                }
+            })
+        };
+        let explorer = Explorer {
+            master,
+            child,
+            written,
+            reader,
+            deadline: Instant::now() + Duration::from_secs(30),
+        };
+        // the first frame ends with the key footer
+        while !explorer
+            .written
+            .lock()
+            .unwrap()
+            .windows(b"q quit".len())
+            .any(|w| w == b"q quit")
+        {
+            assert!(
+                Instant::now() < explorer.deadline,
+                "no first frame: {:?}",
+                String::from_utf8_lossy(&explorer.written.lock().unwrap())
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        assert_eq!(
+            local_modes(&explorer.master) & libc::ICANON,
+            0,
+            "the explorer runs in raw mode"
+        );
+        explorer
+    }
+
+    /// Types `bytes` (a key's escape sequence or text).
+    pub fn type_bytes(&self, bytes: &[u8]) {
+        let mut file = File::from(self.master.try_clone().unwrap());
+        file.write_all(bytes).unwrap();
+    }
+
+    /// Resizes the window to `cols` x `rows` (the kernel sends the explorer SIGWINCH).
+    pub fn resize(&self, cols: u16, rows: u16) {
+        let size = libc::winsize {
+            ws_row: rows,
+            ws_col: cols,
+            ws_xpixel: 0,
+            ws_ypixel: 0,
+        };
+        // SAFETY: TIOCSWINSZ reads a winsize from the pointer, on an open descriptor.
+        assert_eq!(
+            unsafe { libc::ioctl(self.master.as_raw_fd(), libc::TIOCSWINSZ, &size) },
+            0
+        );
+    }
+
+    /// True once the explorer has exited (its own keys may quit it).
+    pub fn exited(&mut self) -> bool {
+        self.child.try_wait().unwrap().is_some()
+    }
+
+    /// Sends `signal` unless it has exited already, and returns what it wrote, how it exited and
+    /// the terminal's local modes after.
+    pub fn end(mut self, signal: i32) -> (Vec<u8>, ExitStatus, libc::tcflag_t) {
+        if !self.exited() {
+            let pid = i32::try_from(self.child.id()).unwrap();
+            // SAFETY: a signal to the child this test started and has not reaped.
+            assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
+        }
+        let status = loop {
+            if let Some(status) = self.child.try_wait().unwrap() {
+                break status;
+            }
+            if Instant::now() > self.deadline + Duration::from_secs(30) {
+                let _ = self.child.kill();
+                panic!("signal {signal}: the explorer did not exit");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        };
+        self.reader.join().unwrap();
+        let modes = local_modes(&self.master);
+        let bytes = self.written.lock().unwrap().clone();
+        (bytes, status, modes)
+    }
+}
+
 /// What the explorer wrote until it exited, and how it exited, when `signal` arrived after its
 /// first frame.
 fn killed_by(signal: i32, mouse: bool) -> (Vec<u8>, ExitStatus, libc::tcflag_t) {
-    let (master, slave) = pty();
     let dir = tempfile::tempdir().unwrap();
-    let mut command = Command::new(assert_cmd::cargo::cargo_bin!("wearlab"));
-    if mouse {
-        command.arg("--mouse");
-    }
-    command
-        .current_dir(dir.path())
-        .env("TERM", "xterm-256color")
-        .env("HOME", dir.path())
-        .env("XDG_DATA_HOME", dir.path())
-        .stdin(Stdio::from(slave.try_clone().unwrap()))
-        .stdout(Stdio::from(slave.try_clone().unwrap()))
-        .stderr(Stdio::from(slave));
-    // SAFETY: only async-signal-safe calls between fork and exec: a session of its own whose
-    // controlling terminal is the pty (stdin), as a shell in a terminal emulator would have.
-    unsafe {
-        command.pre_exec(|| {
-            if libc::setsid() < 0 || libc::ioctl(0, libc::TIOCSCTTY, 0) < 0 {
-                return Err(std::io::Error::last_os_error());
-            }
-            Ok(())
-        });
-    }
-    let mut child = command.spawn().unwrap();
-    // the slave's last copy outside the child goes with the command, so that reading the master
-    // ends when the child has exited
-    drop(command);
-
-    let written = Arc::new(Mutex::new(Vec::new()));
-    let reader = {
-        let written = Arc::clone(&written);
-        let mut file = File::from(master.try_clone().unwrap());
-        std::thread::spawn(move || {
-            let mut chunk = [0u8; 65536];
-            while let Ok(n) = file.read(&mut chunk) {
-                if n == 0 {
-                    break;
-                }
-                written.lock().unwrap().extend_from_slice(&chunk[..n]);
-            }
-        })
-    };
-    let deadline = Instant::now() + Duration::from_secs(30);
-    // the first frame ends with the key footer
-    while !written
-        .lock()
-        .unwrap()
-        .windows(b"q quit".len())
-        .any(|w| w == b"q quit")
-    {
-        assert!(
-            Instant::now() < deadline,
-            "no first frame: {:?}",
-            String::from_utf8_lossy(&written.lock().unwrap())
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    assert_eq!(
-        local_modes(&master) & libc::ICANON,
-        0,
-        "the explorer runs in raw mode"
-    );
-    let pid = i32::try_from(child.id()).unwrap();
-    // SAFETY: a signal to the child this test started and has not reaped.
-    assert_eq!(unsafe { libc::kill(pid, signal) }, 0);
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if Instant::now() > deadline {
-            let _ = child.kill();
-            panic!("signal {signal}: the explorer did not exit");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    reader.join().unwrap();
-    let modes = local_modes(&master);
-    let bytes = written.lock().unwrap().clone();
-    (bytes, status, modes)
+    let args: &[&str] = if mouse { &["--mouse"] } else { &[] };
+    Explorer::start(dir.path(), args).end(signal)
 }
 
 fn check(signal: i32) {
