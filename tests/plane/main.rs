@@ -20,4 +20,5 @@ mod plane_surface;
 mod plane_validity;
 mod plane_wide;
 mod plane_yield;
+mod shape_validity;
 mod validity_study;

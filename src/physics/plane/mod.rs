@@ -19,6 +19,7 @@ pub mod operating_point;
 pub mod profile;
 pub mod scope;
 pub mod shape;
+pub mod shape_validity;
 pub mod sharp;
 pub mod spline;
 pub mod strip;

@@ -250,6 +250,8 @@ pub trait Punch {
     /// The points [m] where g'' jumps or is singular (the tip of a power punch, the ends of a
     /// flat face, the knots of a table): quadratures are split there.
     fn kinks(&self) -> Vec<f64>;
+    /// The x range [m] the shape is known on (a measured profile's); None when unbounded.
+    fn known_range(&self) -> Option<(f64, f64)>;
 }
 
 impl Punch for Shape {
@@ -263,6 +265,10 @@ impl Punch for Shape {
 
     fn kinks(&self) -> Vec<f64> {
         Shape::kinks(self)
+    }
+
+    fn known_range(&self) -> Option<(f64, f64)> {
+        self.range()
     }
 }
 

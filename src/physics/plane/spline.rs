@@ -64,6 +64,11 @@ impl Spline {
         (self.x[0], self.x[self.x.len() - 1])
     }
 
+    /// The knots x_i [m], increasing.
+    pub fn knots(&self) -> &[f64] {
+        &self.x
+    }
+
     /// (g, g', g'') at x: value [m], slope (dimensionless), curvature [1/m]. Beyond the range the
     /// end interval's cubic is continued: callers check the range first (`Shape::covers`).
     pub fn eval(&self, x: f64) -> (f64, f64, f64) {

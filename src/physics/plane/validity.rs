@@ -9,7 +9,7 @@ use crate::phrase::Phrase;
 use crate::physics::plane::criteria::{
     self, MU_STAR_TOLERANCE, STUDIED_KM, STUDIED_MU, STUDIED_NU, WIDTH_TOLERANCE,
 };
-use crate::physics::plane::{Model, PlaneSolution};
+use crate::physics::plane::{Model, PlaneSolution, shape_validity};
 
 /// How far a model is from the strip model of any thickness, relative.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -124,8 +124,6 @@ pub fn estimate(sol: &PlaneSolution) -> Validity {
         );
     }
     let l_over_r = l / inputs.radius();
-    // the largest slope of a shape is at a contact end: half (a+b)/R for the parabola
-    let slope = inputs.shape.slope(sol.b).max(-inputs.shape.slope(-sol.a));
     if inputs.shape.parabola_radius().is_some() && l_over_r > 0.1 {
         assumption(
             format!(
@@ -133,14 +131,9 @@ pub fn estimate(sol: &PlaneSolution) -> Validity {
             ),
             Phrase::whole(format!("(a+b)/R = {l_over_r:.3} > 0.1:")).then_words("slopes not small"),
         );
-    } else if inputs.shape.parabola_radius().is_none() && slope > 0.05 {
-        assumption(
-            format!(
-                "the punch slope |g'| = {slope:.3} at a contact end > 0.05: the punch slopes are \
-                 not small"
-            ),
-            Phrase::whole(format!("|g'| = {slope:.3} > 0.05:")).then_words("slopes not small"),
-        );
+    }
+    for (long, short) in shape_validity::warnings(sol) {
+        assumption(long, short);
     }
     Validity {
         ok: warnings.is_empty(),
