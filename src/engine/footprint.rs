@@ -10,6 +10,7 @@ use crate::physics::SolveError;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::sweep::{EnergySweep, Sweep};
+use crate::physics::plane::yield_onset::YieldCheck;
 use crate::physics::spatial::SpatialState;
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History};
@@ -80,6 +81,13 @@ impl Footprint for StripCheck {
             StripCheck::Estimated { why, .. } => why.len(),
             _ => 0,
         }
+    }
+}
+
+/// A yield check holds a few numbers and a static note.
+impl Footprint for Option<YieldCheck> {
+    fn bytes(&self) -> usize {
+        0
     }
 }
 

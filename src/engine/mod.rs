@@ -22,6 +22,7 @@ use std::time::Duration;
 
 use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::sweep::{EnergySweep, Sweep, energy_sweep, sweep};
+use crate::physics::plane::yield_onset::{Strength, YieldCheck};
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::history::{Dispersion, History, dispersion, history};
@@ -80,6 +81,7 @@ type Responses = Arc<(Vec<Evolution>, Arc<Dispersion>)>;
 pub struct Engine {
     points: Cache<(PlaneInputs, Model), Result<Arc<OperatingPoint>, SolveError>>,
     strip_checks: Cache<(PlaneInputs, Model), StripCheck>,
+    yield_checks: Cache<(PlaneInputs, Model, Strength), Option<YieldCheck>>,
     /// Keyed by the inputs at unit load: a sweep does not depend on the load.
     sweeps: Cache<(PlaneInputs, Model, SweepRange), Arc<Sweep>>,
     /// Keyed like the sweeps.
@@ -108,7 +110,8 @@ pub type Proceed = bool;
 
 impl Engine {
     /// An engine with empty caches, each bounded in entries and in bytes (`STAGE_BYTES`, the
-    /// running-ins `RUN_BYTES`): 8 operating points and their checks against the strip model, 6
+    /// running-ins `RUN_BYTES`): 8 operating points, their checks against the strip model and for
+    /// yield, 6
     /// sweeps (two settings of three models), 2 energy sweeps, 4 sets of harmonic responses, 4
     /// histories and 2 spatial states (a 512-point grid holds 6 MB); on the period cell 2
     /// running-ins, 4 contact states, 4 running-in histories and 4 mu*(pbar) curves.
@@ -116,6 +119,7 @@ impl Engine {
         Engine {
             points: Cache::new(8, STAGE_BYTES),
             strip_checks: Cache::new(8, STAGE_BYTES),
+            yield_checks: Cache::new(8, STAGE_BYTES),
             sweeps: Cache::new(6, STAGE_BYTES),
             energies: Cache::new(2, STAGE_BYTES),
             responses: Cache::new(4, STAGE_BYTES),
@@ -193,8 +197,11 @@ impl Engine {
             .filter(|m| *m != model && !(*m == Model::Narrow && inputs.material.is_half_space()))
             .filter(|_| request.overlays)
             .collect();
+        let strength = preset.strength;
+        let judged = (inputs.clone(), model, strength);
         let mut out = PlaneOutput {
             strip_check: self.strip_checks.get(&(inputs.clone(), model)),
+            yield_check: self.yield_checks.get(&judged).flatten(),
             point,
             sweep: self.sweeps.get(&(unloaded.clone(), model, range)),
             overlays: Vec::new(),
@@ -205,7 +212,8 @@ impl Engine {
             .iter()
             .map_while(|m| Some((*m, self.sweeps.get(&(unloaded.clone(), *m, range))?)))
             .collect();
-        let checked = out.strip_check.is_some() || out.point.is_err();
+        let yield_done = out.yield_check.is_some() || strength.yield_stress().is_none();
+        let checked = (out.strip_check.is_some() && yield_done) || out.point.is_err();
         if checked && out.sweep.is_some() && cached.len() == others.len() && energies_done {
             out.overlays = cached;
             deliver(Output::Plane(out), true);
@@ -216,8 +224,14 @@ impl Engine {
         }
         // the check against the strip model follows the point, before the slower sweeps
         if let (Ok(point), None) = (&out.point, &out.strip_check) {
-            out.strip_check = Some(self.strip_check(inputs, model, point));
+            out.strip_check = Some(self.strip_check(inputs.clone(), model, point));
             if !deliver(Output::Plane(out.clone()), false) {
+                return;
+            }
+        }
+        if let (Ok(point), None) = (&out.point, &out.yield_check) {
+            out.yield_check = self.yield_check(judged, point);
+            if out.yield_check.is_some() && !deliver(Output::Plane(out.clone()), false) {
                 return;
             }
         }

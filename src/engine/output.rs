@@ -6,6 +6,7 @@ use std::sync::Arc;
 use crate::physics::SolveError;
 use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::sweep::{EnergySweep, Sweep};
+use crate::physics::plane::yield_onset::YieldCheck;
 use crate::physics::plane::{Model, OperatingPoint};
 use crate::physics::spatial::history::{Dispersion, History};
 use crate::physics::spatial::{SpatialState, pipeline};
@@ -36,6 +37,9 @@ pub struct PlaneOutput {
     /// The point's model against the exact strip model; None until computed, and when there is
     /// no point.
     pub strip_check: Option<StripCheck>,
+    /// The point's largest von Mises stress against the strip's yield stress; None until
+    /// computed, without a point, and where the preset gives neither Y nor H.
+    pub yield_check: Option<YieldCheck>,
     /// The preset's model swept over the preset's loads; None until computed.
     pub sweep: Option<Arc<Sweep>>,
     /// The other models' sweeps, when asked for and computed.
@@ -105,6 +109,8 @@ pub struct StageCounts {
     pub operating_point: usize,
     /// Plane operating points checked against the strip model.
     pub strip_check: usize,
+    /// Plane operating points checked for yield (`plane::yield_onset::judge`).
+    pub yield_check: usize,
     /// Plane load sweeps.
     pub load_sweep: usize,
     /// Plane energy losses along the load sweep.

@@ -118,16 +118,17 @@ impl Key {
     }
 }
 
-/// Whether the form shows the parameter: the wear exponent and the shear cap in the plane
-/// problem (the spatial one takes the linear law without a cap), the reference pressure where
+/// Whether the form shows the parameter: the wear exponent, the shear cap, the yield strength
+/// and the hardness in the plane problem (the spatial one takes the linear law without a cap
+/// and has no yield check), the reference pressure where
 /// the wear law is not linear, a shape's parameters for that kind of punch.
 fn shown(p: &Param, preset: &Preset) -> bool {
     let plane = preset.problem == Problem::Plane;
     match p.key {
         "wear.exponent" | "friction.shear_strength" => plane,
         "wear.reference_pressure" => plane && preset.wear_exponent != 1.0,
-        "material.yield_strength" => plane && preset.strength.yield_strength.is_some(),
-        "material.hardness" => plane && preset.strength.hardness.is_some(),
+        // "none" until given: a student enters a hardness to have the yield checked
+        "material.yield_strength" | "material.hardness" => plane,
         // a height map is solved on its own grid
         "spatial.grid" => preset.spatial.surface.is_none(),
         key => shape_rows::applies(preset, key).is_ok(),

@@ -209,7 +209,7 @@ pub(crate) const QUANTITIES: &[Quantity] = &[
     plane("energy.wear_share", "wear loss/T", "", "the wear loss's share of the external work T, (psi - J)/T (2.7): 0 without wear, growing with k", wear_share).derived(),
     plane("validity.ok", "valid", "", "whether the model holds at this point (1 yes, 0 no): measured against the strip model where the study's estimate doubts it, as wearlab solve reports it", |p| yes(p.verdict().ok)).flag(),
     plane("validity.contact_width_over_thickness", "(a+b)/h", "", "contact width over the thickness, 0 for the half-plane: the wide model is the limit of small values, the narrow (Winkler) model of large ones", |p| Ok(p.validity.contact_width_over_thickness)).group(),
-    plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 when wear dominates, < 0 when friction does", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),
+    plane("mu_star_minus_mu", "mu*-mu", "", "deformation part of friction: > 0 where the pressure leans forwards (wear dominates; a thin strip also leans so under friction alone), < 0 where friction dominates", |p| Ok(p.solution.mu_star - p.solution.inputs.friction.coefficient)).derived(),
     plane("contact_width", "a+b", "m", "contact width", |p| Ok(p.solution.contact_width())).derived(),
     plane("max_pressure", "max q2", "Pa", "largest contact pressure", |p| Ok(p.max_pressure())).derived(),
     plane("tip_wear", "tip wear", "m", "wear per pass at the punch tip: k times the integral of q2 from the tip to the leading edge", |p| Ok(p.tip_wear())).derived(),

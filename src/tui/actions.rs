@@ -150,6 +150,12 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             sweep_keys::toggle_dimensionless(app);
             Vec::new()
         }
+        Action::GoTo if app.explore.view == Some(View::Map) || map_cursor::on_map(app) => {
+            app.complain(
+                "g sends the cursor of a chart with curves to a typed x; on a map [ ] { } move it",
+            );
+            Vec::new()
+        }
         Action::Cursor | Action::MoveCursor(_) if app.explore.view == Some(View::Map) => {
             sweep_keys::move_cell(app, action);
             Vec::new()
@@ -160,6 +166,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         }
         Action::Cursor
         | Action::MoveCursor(_)
+        | Action::GoTo
         | Action::Pin
         | Action::ClearPins
         | Action::Expand

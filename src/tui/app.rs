@@ -119,6 +119,8 @@ pub enum Mode {
     },
     /// Typing a file name to save to.
     SaveAs(TextField),
+    /// Typing the x the chart's cursor goes to (`g`).
+    GoTo(TextField),
     /// The file exists: overwrite?
     ConfirmOverwrite(SaveTarget),
     /// The export's file exists: overwrite? (the file, the text to write)

@@ -3,12 +3,14 @@
 
 use crate::engine::Output;
 
-use crate::tui::app::{App, Command, HeatScale, Pin};
+use crate::tui::app::{App, Command, HeatScale, Mode, Pin};
 use crate::tui::charts::contact::Fields;
 use crate::tui::charts::range::{Frame, constant, frames, plotted};
 use crate::tui::charts::{Figure, Plot, Scale};
 use crate::tui::keys::Action;
 use crate::tui::on_screen::on_screen;
+use crate::tui::text_field::TextField;
+use crate::units::{format_si, parse_si};
 
 /// Pins a chart keeps at most.
 pub const MAX_PINS: usize = 3;
@@ -40,6 +42,14 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             }
             None => app.say("x shows the cursor first"),
         },
+        Action::GoTo => {
+            if plots(app).is_empty() {
+                app.complain("g sends the cursor of a chart with curves (Tab to one)");
+            } else {
+                app.ui.message = None;
+                app.ui.mode = Mode::GoTo(TextField::default());
+            }
+        }
         Action::Pin => pin(app),
         Action::ClearPins => {
             let chart = app.ui.chart;
@@ -61,6 +71,58 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         }
         Action::LogY => log_y(app),
         _ => {}
+    }
+    Vec::new()
+}
+
+/// The x axis of the visible chart: its label, unit and scale, and the range it spans [plot
+/// coordinates]; None without curves.
+fn x_axis(app: &App) -> Option<(String, &'static str, Scale, [f64; 2])> {
+    let plots = plots(app);
+    let pins = pins(app);
+    let frames = frames(&plots, &pins, false);
+    let f = frames.first()?;
+    Some((f.plot.x.label.clone(), f.plot.x.unit, f.plot.x.scale, f.x))
+}
+
+/// The prompt of `g`: the x axis and the range it spans, with its unit ("cursor to x (-320 um ..
+/// 320 um, in m):").
+pub fn go_to_prompt(app: &App) -> String {
+    let Some((label, unit, scale, range)) = x_axis(app) else {
+        return "cursor to x:".into();
+    };
+    let [lo, hi] = range.map(|p| format_si(scale.value_at(p), unit));
+    let unit = if unit.is_empty() {
+        "a number".to_string()
+    } else {
+        format!("in {unit}")
+    };
+    format!("cursor to {label} ({lo} .. {hi}, {unit}):")
+}
+
+/// Puts the cursor at the x typed (`g`), read in the x axis' unit with an SI prefix as any typed
+/// value; refused where it is off the chart (the prompt stays for a correction).
+pub fn go_to(app: &mut App, text: String) -> Vec<Command> {
+    let Some((label, unit, scale, [lo, hi])) = x_axis(app) else {
+        app.ui.mode = Mode::Normal;
+        app.complain("the chart has no curves now: the cursor stays");
+        return Vec::new();
+    };
+    let x = match parse_si(&text, unit) {
+        Ok(x) => x,
+        Err(why) => {
+            app.complain(why);
+            return Vec::new();
+        }
+    };
+    let at = scale.to_plot(x).map(|p| (p - lo) / (hi - lo));
+    match at {
+        Some(at) if (0.0..=1.0).contains(&at) && hi > lo => {
+            app.ui.cursor = Some(at);
+            app.ui.mode = Mode::Normal;
+            app.say(format!("cursor at {label} = {}", format_si(x, unit)));
+        }
+        _ => app.complain(format!("{label} = {} is off the chart", format_si(x, unit))),
     }
     Vec::new()
 }

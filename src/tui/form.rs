@@ -104,11 +104,23 @@ pub fn show(preset: &Preset, row: &Row) -> String {
     if let Some(text) = param.fixed() {
         return text(preset);
     }
+    if not_given(preset, param.key) {
+        return "none".into();
+    }
     let v = get(preset, row);
     match param.choices() {
         Some(names) => names[v as usize % names.len()].to_string(),
         None if param.is_whole() => format!("{v}"),
         None => format_si(v, param.unit),
+    }
+}
+
+/// True for a yield strength or hardness the preset does not give (no yield check).
+fn not_given(preset: &Preset, key: &str) -> bool {
+    match key {
+        "material.yield_strength" => preset.strength.yield_strength.is_none(),
+        "material.hardness" => preset.strength.hardness.is_none(),
+        _ => false,
     }
 }
 

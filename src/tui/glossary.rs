@@ -10,15 +10,16 @@ pub type Entry = (&'static str, &'static str, &'static str);
 
 /// The plane problem's status symbols.
 #[rustfmt::skip]
-pub const PLANE: [Entry; 9] = [
+pub const PLANE: [Entry; 10] = [
     ("a, b", "m", "contact zone [-a, b] around the punch tip; b is the leading edge (the punch moves to +x)"),
-    ("theta", "-", "exponent shift of the pressure at the contact edges (wide and strip models; eq. 4.5), from gamma = pi chi mu/m - k: > 0 where friction shifts the edges more than wear, < 0 where wear does. On a half-plane its sign is which effect dominates; on a strip of finite thickness that is said by mu* - mu and a - b (> 0 and a < b: wear dominates)"),
+    ("theta", "-", "exponent shift of the pressure at the contact edges (wide and strip models; eq. 4.5), from gamma = pi chi mu/m - k: > 0 where friction shifts the edges more than wear, < 0 where wear does. On a half-plane without adhesion its sign is which effect dominates; on a strip of finite thickness the line 'mu* - mu = ..., a < b: ...' says it"),
     ("Q2", "N/m", "normal contact force, the integral of the pressure q2 over the contact"),
     ("psi", "N/m", "deformation component of friction, the integral of q2 g'(x) (eq. 2.2); > 0 adds to friction"),
     ("mu*", "-", "total friction coefficient (T - tau0 (a+b))/P = mu + [(1 + mu^2) psi + mu Delta_g tau0]/P (eq. 3.13): the friction force T less the adhesive part tau0 (a+b), over the load P (T/P only without adhesion)"),
     ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
     ("I-J residual", "-", "|I - J| over the gross work: how well the solution meets the energy identity I = J (eq. 2.9); small is good"),
     ("(a+b)/h", "-", "contact width over strip thickness: wide model for << 1, narrow (Winkler) for >> 1, strip for any"),
+    ("mu* - mu = ..., a < b: wear dominates", "-", "which effect dominates, read from the solution: wear tilts the pressure forwards (a < b, mu* > mu), friction backwards (a > b, mu* < mu); 'not wear (k = 0)' where it leans forwards without wear (the friction of a thin strip, or the punch's shape), 'the two signs disagree' where mu* - mu and a - b point different ways, 'neither dominates' where mu* = mu and a = b (to 1e-9)"),
     ("valid / !", "", "whether the model holds at this operating point, or why not"),
 ];
 

@@ -81,6 +81,8 @@ pub enum Action {
     Cursor,
     /// Move the cursor (`[ ] { }`).
     MoveCursor(CursorMove),
+    /// Send the chart's cursor to an x typed in the x axis' unit (`g`).
+    GoTo,
     /// Pin the visible chart's curves.
     Pin,
     /// Clear the visible chart's pins.
@@ -250,8 +252,8 @@ pub const BINDINGS: [Binding; 23] = [
     binding(
         &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(CursorMove::Back)),
           (ch(']'), Action::MoveCursor(CursorMove::Forward)), (ch('{'), Action::MoveCursor(CursorMove::LongBack)),
-          (ch('}'), Action::MoveCursor(CursorMove::LongForward))],
-        "x, [ ], { }", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten; the status gives x and every curve's value there; on the pressure map x shows a cell cursor X at the map's middle, [ ] move it a grid point along x, { } along y, and the status gives x, y and p there (it stays while time plays, p follows)",
+          (ch('}'), Action::MoveCursor(CursorMove::LongForward)), (ch('g'), Action::GoTo)],
+        "x, [ ], { }, g", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten, g sends it to an x you type in the x axis' unit (150um, 20 kN/m; a plain number is in the unit itself: m, N/m); the status gives x and every curve's value there, '(interpolated)' after x where the cursor is between the data points of a curve it reads; on the pressure map x shows a cell cursor X at the map's middle, [ ] move it a grid point along x, { } along y, and the status gives x, y and p there (it stays while time plays, p follows)",
         ("x", "cursor", "", 7), None,
     ),
     binding(

@@ -21,7 +21,9 @@ pub fn parameters(preset: &Preset) -> Vec<Key> {
         .into_iter()
         .filter(|k| {
             let p = k.param();
-            p.limit().is_some() && !p.is_whole() && !p.key.contains(".sweep.")
+            // the strength changes no quantity a sweep draws
+            let strength = matches!(p.key, "material.yield_strength" | "material.hardness");
+            p.limit().is_some() && !p.is_whole() && !p.key.contains(".sweep.") && !strength
         })
         .collect()
 }

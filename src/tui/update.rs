@@ -146,6 +146,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         },
         Mode::Editing(buffer) => text_key(app, key, buffer, Mode::Editing, accept_value),
         Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
+        Mode::GoTo(buffer) => text_key(app, key, buffer, Mode::GoTo, chart_keys::go_to),
         Mode::Choosing(selected) => {
             let choices = app.row().param().choices().unwrap_or_default();
             match prompt_keys::prompt_action(Prompt::List, &key) {
@@ -270,6 +271,7 @@ fn text_key(
         Some(PromptAction::Cancel) => {
             let what = match app.ui.mode {
                 Mode::SaveAs(_) => "not saved",
+                Mode::GoTo(_) => "the cursor stays",
                 _ => "edit cancelled",
             };
             app.ui.mode = Mode::Normal;

@@ -8,6 +8,7 @@
 
 pub mod checks;
 pub mod criteria;
+pub mod dominance;
 pub mod energy;
 mod found;
 pub mod general;
@@ -28,6 +29,7 @@ pub mod sweep;
 pub mod validity;
 pub mod wide;
 pub mod yield_onset;
+mod yield_phrase;
 
 use serde::{Deserialize, Serialize};
 
@@ -237,8 +239,9 @@ pub struct PlaneSolution {
     pub b: f64,
     /// Exponent shift theta of the wide solution (4.5), in (-1/2, 1/2), from gamma of (4.3): > 0
     /// where friction shifts the edge exponents more than wear, < 0 where wear does. On the
-    /// half-plane its sign is which effect dominates (a > b and mu* < mu for > 0); on a strip of
-    /// finite thickness the thickness term moves the balance and the sign of mu* - mu says it.
+    /// half-plane without adhesion its sign is which effect dominates (a > b and mu* < mu where
+    /// it is positive); on a strip of finite thickness the thickness term moves the balance and
+    /// the solution's signs say it (`dominance`).
     /// None for the narrow model.
     pub theta: Option<f64>,
     /// gamma = pi chi mu / m - k [1/Pa] of (4.3) (without k for a nonlinear wear law, which does

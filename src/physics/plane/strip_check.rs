@@ -102,9 +102,10 @@ impl StripCheck {
         }
     }
 
-    /// The same in at most 46 columns where a deviation is outside the tolerances, for a status
-    /// too small for the long line and the reasons: "off exact strip: width 227 %, mu*-mu 12 %"
-    /// ("est. off ..." for an estimate). None where `describe` is the only form.
+    /// The same in at most 46 columns, for a status too small for the long line: "off exact
+    /// strip: width 227 %, mu*-mu 12 %" outside the tolerances ("est. off ..." for an estimate),
+    /// "within 0.1 % of the exact strip solution" (the larger of the two deviations) inside
+    /// them. None where `describe` is the only form.
     pub fn describe_short(&self) -> Option<Phrase> {
         let short = |x: f64| {
             let percent = 100.0 * x;
@@ -115,6 +116,14 @@ impl StripCheck {
             }
         };
         let (lead, d) = match self {
+            StripCheck::Measured(d) if d.within_tolerance() => {
+                let larger = d.contact_width.max(d.mu_star_minus_mu);
+                return Some(
+                    Phrase::words("within")
+                        .then(within(larger))
+                        .then_words("of the exact strip solution"),
+                );
+            }
             StripCheck::Measured(d) if !d.within_tolerance() => ("off exact strip", d),
             StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),
             _ => return None,

@@ -64,11 +64,20 @@ pub fn at(series: &Series, x: f64, xs: Scale, ys: Scale) -> Option<f64> {
     })
 }
 
+/// Whether plot coordinate `x` lies on one of a curve's points (to a millionth of the x range
+/// `span`), not between two.
+fn on_a_point(series: &Series, x: f64, xs: Scale, span: f64) -> bool {
+    plotted(&series.points, xs, Scale::Linear)
+        .iter()
+        .any(|p| (p.0 - x).abs() <= 1e-6 * span)
+}
+
 /// What the readout says of a curve that has no point at the cursor (it ends before, or its model
 /// has no answer there).
 const NO_VALUE: &str = "no value here";
 
-/// The readout at `cursor` (a fraction of the x range): "x = ...", then "name = value" for every
+/// The readout at `cursor` (a fraction of the x range): "x = ...", then "(interpolated)" where a
+/// value read lies between two data points of its curve, then "name = value" for every
 /// curve of every plot (its short name), tagged where the cursor is on a dim part of it, as the
 /// legend names them ("mu* wide = 0.429323 (fails)", "(partial)" for the spatial contact), and for
 /// the pins' curves "[n] name = value"; "name: no value here" off a curve's ends.
@@ -84,6 +93,7 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
         x_axis.label,
         format_si(x_axis.scale.value_at(xp), x_axis.unit)
     )];
+    let mut between = false;
     for f in frames {
         let unit = f.plot.y.unit;
         let span = (f.y_scale == Scale::Linear).then_some(f.y[1] - f.y[0]);
@@ -101,6 +111,12 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
                     }
                 })
         };
+        between |= (f
+            .plot
+            .series
+            .iter()
+            .chain(f.pins.iter().flat_map(|p| &p.series)))
+        .any(|s| read(s).is_some() && !on_a_point(s, xp, f.plot.x.scale, hi - lo));
         items.extend((f.plot.series.iter().enumerate()).map(|(i, s)| {
             let name = short_name(&s.name);
             read(s).map_or(format!("{name}: {NO_VALUE}"), |v| {
@@ -113,6 +129,9 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
                 read(s).map_or(format!("{name}: {NO_VALUE}"), |v| format!("{name} = {v}"))
             }));
         }
+    }
+    if between {
+        items.insert(1, "(interpolated)".into());
     }
     items
 }

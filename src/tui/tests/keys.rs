@@ -10,7 +10,7 @@ use crate::tui::keys::{Action, BINDINGS, CursorMove, footer, lookup};
 use crate::tui::prompt_keys::{Prompt, prompt_footer};
 
 /// Every action, for the test that each one is bound.
-const ACTIONS: [Action; 32] = [
+const ACTIONS: [Action; 33] = [
     Action::PrevField,
     Action::NextField,
     Action::Nudge {
@@ -30,6 +30,7 @@ const ACTIONS: [Action; 32] = [
         large: true,
     },
     Action::Edit,
+    Action::GoTo,
     Action::NextChart,
     Action::PrevChart,
     Action::SwitchProblem,

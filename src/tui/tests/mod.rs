@@ -9,6 +9,7 @@ mod bytes;
 mod charts;
 mod explore;
 mod files;
+mod go_to;
 mod groups;
 mod kept_save;
 mod keys;
@@ -32,6 +33,7 @@ mod update;
 mod validity;
 mod warned;
 mod widgets;
+mod yielding;
 
 use std::time::{Duration, Instant};
 

@@ -9,7 +9,7 @@ use crate::physics::plane::operating_point::operating_point;
 use crate::tui::view::{layout, validity_status};
 
 /// The status panel of the screen, one string per row.
-fn status(app: &App, w: u16, h: u16) -> String {
+pub(super) fn status(app: &App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     terminal.draw(|f| view(app, PLAIN, f)).unwrap();
     let area = layout::areas(terminal.backend().buffer().area, false, false)

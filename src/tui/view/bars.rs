@@ -18,7 +18,7 @@ use crate::tui::view::{wrap, wrap_within};
 pub fn prompt(mode: &Mode) -> Option<Prompt> {
     match mode {
         Mode::Normal => None,
-        Mode::Editing(_) | Mode::SaveAs(_) => Some(Prompt::Text),
+        Mode::Editing(_) | Mode::SaveAs(_) | Mode::GoTo(_) => Some(Prompt::Text),
         Mode::Choosing(_) => Some(Prompt::List),
         Mode::Picker { .. } => Some(Prompt::Picker),
         Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
@@ -47,6 +47,20 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
                 format!("save as: {} {goes}", buffer.shown()),
                 Style::default(),
             )
+        }
+        Mode::GoTo(buffer) => {
+            // the axis and its range first; a typed x refused says why after the text
+            let mut text = format!(
+                "{} {}",
+                crate::tui::chart_keys::go_to_prompt(app),
+                buffer.shown()
+            );
+            let mut look = Style::default();
+            if let Some(m) = app.ui.message.as_ref().filter(|m| m.error) {
+                text = format!("{text}  ! {}", m.text);
+                look = style.error();
+            }
+            (text, look)
         }
         Mode::ConfirmOverwrite(target) => (
             format!("{} exists: overwrite? y/n", target.path.display()),

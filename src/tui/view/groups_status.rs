@@ -5,13 +5,12 @@
 use crate::engine::{Output, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
-use crate::physics::plane::strip_check::StripCheck;
 use crate::sweeps::groups::{self, Group};
 use ratatui::text::Line;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status_values::{mu_star, number, per_output, prose, visible};
+use crate::tui::view::status_values::{Checks, mu_star, number, per_output, prose, visible};
 use crate::tui::view::surface_status;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
@@ -47,7 +46,7 @@ pub fn lines(
     per_output(
         output,
         style,
-        |p, check| plane(p, check, style, width, height),
+        |p, checks| plane(p, checks, style, width, height),
         |out| spatial(out, selected, style, width, height),
         // a height map has no harmonics whose groups could be listed: its values as they are
         |out| surface_status::lines(out, style, width),
@@ -56,7 +55,7 @@ pub fn lines(
 
 fn plane(
     p: &OperatingPoint,
-    check: Option<&StripCheck>,
+    checks: Checks,
     style: RenderOptions,
     width: usize,
     height: usize,
@@ -66,7 +65,7 @@ fn plane(
     let items: Vec<String> = (groups::plane(s, &p.validity).iter())
         .map(|g| item(g, mu))
         .collect();
-    with_validity(&items, p, check, style, width, height)
+    with_validity(&items, p, checks, style, width, height)
 }
 
 fn spatial(

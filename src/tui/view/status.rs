@@ -5,7 +5,6 @@
 use crate::engine::{Answer, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
-use crate::physics::plane::strip_check::StripCheck;
 use crate::physics::plane::{OperatingPoint, Shape};
 use crate::units::format_si;
 use ratatui::Frame;
@@ -19,7 +18,7 @@ use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot};
 use crate::tui::on_screen::OnScreen;
-use crate::tui::view::status_values::{mu_star, number, per_output, visible};
+use crate::tui::view::status_values::{Checks, mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
 use crate::tui::view::wrapping::{pack, pack_within};
@@ -48,7 +47,7 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
             per_output(
                 &answer.output,
                 style,
-                |p, check| plane(p, check, style, width, height),
+                |p, checks| plane(p, checks, style, width, height),
                 |out| spatial(out, selected, style, width, height),
                 |out| surface_status::lines(out, style, width),
             )
@@ -98,7 +97,7 @@ fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<Phrase>> {
 
 fn plane(
     p: &OperatingPoint,
-    check: Option<&StripCheck>,
+    checks: Checks,
     style: RenderOptions,
     width: usize,
     height: usize,
@@ -126,7 +125,7 @@ fn plane(
         ]
         .map(Phrase::from),
     );
-    with_validity(&items, p, check, style, width, height)
+    with_validity(&items, p, checks, style, width, height)
 }
 
 /// The punch's shape in a few words, each value with its name and unit a piece that a line

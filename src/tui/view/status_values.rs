@@ -5,24 +5,28 @@ use crate::engine::{Output, SpatialOutput, SurfaceOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::strip_check::StripCheck;
+use crate::physics::plane::yield_onset::YieldCheck;
 use crate::units::format_si;
 use ratatui::text::Line;
 
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrapping::lines_of;
 
+/// The checks of a plane point that the status shows: against the strip model and for yield.
+pub type Checks<'a> = (Option<&'a StripCheck>, Option<&'a YieldCheck>);
+
 /// The status lines of an output: a failed solve in words, else the lines `plane`, `spatial` or
 /// `surface` make of it (the dimensional status and the dimensionless view differ only there).
 pub fn per_output(
     output: &Output,
     style: RenderOptions,
-    plane: impl FnOnce(&OperatingPoint, Option<&StripCheck>) -> Vec<Line<'static>>,
+    plane: impl FnOnce(&OperatingPoint, Checks) -> Vec<Line<'static>>,
     spatial: impl FnOnce(&SpatialOutput) -> Vec<Line<'static>>,
     surface: impl FnOnce(&SurfaceOutput) -> Vec<Line<'static>>,
 ) -> Vec<Line<'static>> {
     match output {
         Output::Plane(out) => match &out.point {
-            Ok(p) => plane(p, out.strip_check.as_ref()),
+            Ok(p) => plane(p, (out.strip_check.as_ref(), out.yield_check.as_ref())),
             Err(e) => vec![Line::styled(e.to_string(), style.error())],
         },
         Output::Spatial(Err(e)) => vec![Line::styled(e.to_string(), style.error())],

@@ -1,11 +1,14 @@
 //! The validity part of the plane status: whether the shown model holds (the reasons in a few
-//! words when it does not), and how far it is from the exact strip model, measured by the engine
-//! after the operating point (`plane::strip_check::StripCheck`). Every word and number comes from
-//! the library; this module only lays them out.
+//! words when it does not), which effect dominates (`plane::dominance`), and how far the model is
+//! from the exact strip model, measured by the engine after the operating point
+//! (`plane::strip_check::StripCheck`). Every word and number comes from the library; this module
+//! only lays them out.
 
 use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
+use crate::physics::plane::dominance::Dominance;
 use crate::physics::plane::strip_check::StripCheck;
+use crate::physics::plane::yield_onset::YieldCheck;
 use ratatui::text::Line;
 
 use crate::tui::view::status_values::{number, prose};
@@ -14,13 +17,28 @@ use crate::tui::view::wrap_within;
 use crate::tui::view::wrapping::pack;
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
-/// the verdict when the model holds, the check against the strip model once it has come (how
+/// the verdict when the model holds, which effect dominates (after the verdict, so that a
+/// crowded status keeps the verdict; under a model that does not hold, last and only where it
+/// fits whole), the check against the strip model once it has come (how
 /// far off), then every warning in a few words (why), each after "! "; warnings that do not fit
 /// are counted ("! +2 more (a taller window shows them)"), never cut; a verdict or check that
 /// does not fit ends in "…" after its last whole clause or word (`wrap_within`).
 pub fn lines(
     p: &OperatingPoint,
     check: Option<&StripCheck>,
+    style: RenderOptions,
+    width: usize,
+    room: usize,
+) -> Vec<Line<'static>> {
+    judged(p, check, None, style, width, room)
+}
+
+/// As `lines`, with the yield check's line after the verdict where the preset gives Y or H (in
+/// the error style where the strip yields).
+fn judged(
+    p: &OperatingPoint,
+    check: Option<&StripCheck>,
+    yielding: Option<&YieldCheck>,
     style: RenderOptions,
     width: usize,
     room: usize,
@@ -40,6 +58,26 @@ pub fn lines(
             where_.then_words(&format!("{} model holds", model.name())),
             style.ok(),
         ));
+    }
+    head.extend(yielding.map(|y| {
+        let look = if y.yields == Some(true) {
+            style.error()
+        } else {
+            style.ok()
+        };
+        (y.phrase(), look)
+    }));
+    // which effect dominates, read from the shown model's solution: beside a verdict that it
+    // holds, before the check; where it does not hold, only in a row left after the reasons
+    let dominance = (
+        Dominance::of(&p.solution).describe(),
+        ratatui::style::Style::default(),
+    );
+    let mut last = None;
+    if v.ok {
+        head.push(dominance);
+    } else {
+        last = Some(dominance);
     }
     let warnings: Vec<Vec<Line>> = v
         .reasons
@@ -79,6 +117,12 @@ pub fn lines(
     let room = room.saturating_sub(lines.len());
     if total <= room {
         lines.extend(warnings.into_iter().flatten());
+        if let Some((text, look)) = last {
+            let fits = prose(&text, width, look);
+            if fits.len() <= room - total {
+                lines.extend(fits);
+            }
+        }
         return lines;
     }
     // whole warnings while one line is left for the count of the others
@@ -105,13 +149,13 @@ pub fn lines(
 pub fn with_validity<P: Clone + Into<Phrase>>(
     items: &[P],
     p: &OperatingPoint,
-    check: Option<&StripCheck>,
+    (check, yielding): (Option<&StripCheck>, Option<&YieldCheck>),
     style: RenderOptions,
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
     let mut out: Vec<Line> = pack(items, width, "").into_iter().map(Line::from).collect();
     let room = height.saturating_sub(out.len());
-    out.extend(lines(p, check, style, width, room));
+    out.extend(judged(p, check, yielding, style, width, room));
     out
 }
