@@ -7,6 +7,7 @@ pub mod data;
 pub mod engine;
 pub mod finite;
 pub mod fit;
+pub mod materials;
 pub mod phrase;
 pub mod physics;
 pub mod preset;

@@ -154,6 +154,9 @@ pub const SHEAR_STRENGTH: Limit =
 pub const YIELD_STRENGTH: Limit = range("1e3 <= Y <= 1e11 (Pa)", 1e3, 1e11);
 /// Indentation hardness H [Pa] of the strip.
 pub const HARDNESS: Limit = range("1e3 <= H <= 1e12 (Pa)", 1e3, 1e12);
+/// Archard's wear coefficient K = k H [-]: a fraction of the contacts that make a wear particle
+/// (Archard (1953) measured 1e-7 to 1e-2).
+pub const ARCHARD: Limit = range("0 <= K <= 1", 0.0, 1.0);
 /// Load per unit length P [N/m], also the ends of the load sweep.
 pub const LINE_LOAD: Limit = range("1e-9 <= P <= 1e12 (N/m)", 1e-9, 1e12);
 /// Number of sweep points.

@@ -10,7 +10,6 @@ use toml::Spanned;
 
 use crate::physics::limits::{self, Limit};
 use crate::physics::plane::Shape;
-use crate::physics::plane::yield_onset::Strength;
 use crate::physics::{Friction, Material, Spacing, SweepRange};
 use crate::preset::file::{FilePlane, FilePreset};
 use crate::preset::written::{self, Written};
@@ -127,31 +126,7 @@ pub fn parse_with_warnings(
     let material = file
         .material
         .ok_or_else(|| ck.error(None, "missing section [material] (every preset needs it)"))?;
-    let mat = material.get_ref();
-    let material = Material {
-        youngs_modulus: ck.value(
-            &mat.youngs_modulus,
-            "material.youngs_modulus",
-            &limits::YOUNGS_MODULUS,
-        )?,
-        poisson_ratio: ck.value(
-            &mat.poisson_ratio,
-            "material.poisson_ratio",
-            &limits::POISSON_RATIO,
-        )?,
-        thickness: ck.value(&mat.thickness, "material.thickness", &limits::THICKNESS)?,
-    };
-    let optional = |v: &Option<Spanned<Written>>, key: &str, limit: &Limit| {
-        v.as_ref().map(|v| ck.value(v, key, limit)).transpose()
-    };
-    let strength = Strength {
-        yield_strength: optional(
-            &mat.yield_strength,
-            "material.yield_strength",
-            &limits::YIELD_STRENGTH,
-        )?,
-        hardness: optional(&mat.hardness, "material.hardness", &limits::HARDNESS)?,
-    };
+    let (material, strength) = ck.material(&material)?;
     let friction = match &file.friction {
         Some(f) => Friction {
             coefficient: ck.value(&f.coefficient, "friction.coefficient", &limits::FRICTION)?,
@@ -162,10 +137,7 @@ pub fn parse_with_warnings(
             adhesion: 0.0,
         },
     };
-    let wear = match &file.wear {
-        Some(w) => ck.value(&w.coefficient, "wear.coefficient", &limits::WEAR)?,
-        None => 0.0,
-    };
+    let wear = ck.wear_coefficient(file.wear.as_ref(), strength)?;
     let laws = ck.laws(file.wear.as_ref(), file.friction.as_ref())?;
     let problem = *file.problem.get_ref();
     let missing = |section: &str, keys: &str| {

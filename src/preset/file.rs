@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
+use crate::materials::{self, MATERIALS};
 use crate::physics::Spacing;
 use crate::physics::plane::{Model, Shape};
 use crate::preset::explore_section::Explore;
@@ -21,8 +22,13 @@ use crate::sweeps::axis::Axis;
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileMaterial {
-    pub(super) youngs_modulus: Spanned<Written>,
-    pub(super) poisson_ratio: Spanned<Written>,
+    /// A material of the bundled table, whose values fill those not written.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) name: Option<Spanned<String>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) youngs_modulus: Option<Spanned<Written>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) poisson_ratio: Option<Spanned<Written>>,
     pub(super) thickness: Spanned<Written>,
     /// Absent: no yield check (unless the hardness is given).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -46,8 +52,12 @@ pub(super) struct FileFriction {
 #[derive(Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileWear {
-    #[serde(default = "zero")]
-    pub(super) coefficient: Spanned<Written>,
+    /// Absent with `archard_coefficient` absent too: no wear.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) coefficient: Option<Spanned<Written>>,
+    /// Archard's K = k H, in place of `coefficient`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) archard_coefficient: Option<Spanned<Written>>,
     /// Absent: 1, the linear law.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) exponent: Option<Spanned<Written>>,
@@ -201,8 +211,14 @@ pub fn to_toml(preset: &Preset) -> String {
         description: preset.description.clone(),
         problem: plain(preset.problem),
         material: Some(plain(FileMaterial {
-            youngs_modulus: num(preset.material.youngs_modulus),
-            poisson_ratio: num(preset.material.poisson_ratio),
+            name: materials::matching(
+                preset.material.youngs_modulus,
+                preset.material.poisson_ratio,
+                preset.strength,
+            )
+            .map(|i| plain(MATERIALS[i].name.to_string())),
+            youngs_modulus: Some(num(preset.material.youngs_modulus)),
+            poisson_ratio: Some(num(preset.material.poisson_ratio)),
             thickness: num(preset.material.thickness),
             yield_strength: preset.strength.yield_strength.map(num),
             hardness: preset.strength.hardness.map(num),
@@ -216,7 +232,8 @@ pub fn to_toml(preset: &Preset) -> String {
                 .then(|| num(preset.shear_strength)),
         }),
         wear: Some(FileWear {
-            coefficient: num(preset.wear),
+            coefficient: Some(num(preset.wear)),
+            archard_coefficient: None,
             exponent: (preset.wear_exponent != 1.0).then(|| num(preset.wear_exponent)),
             reference_pressure: preset.reference_pressure.map(num),
         }),

@@ -129,6 +129,7 @@ fn shown(p: &Param, preset: &Preset) -> bool {
         "wear.reference_pressure" => plane && preset.wear_exponent != 1.0,
         // "none" until given: a student enters a hardness to have the yield checked
         "material.yield_strength" | "material.hardness" => plane,
+        "wear.archard_coefficient" => preset.strength.hardness.is_some(),
         // a height map is solved on its own grid
         "spatial.grid" => preset.spatial.surface.is_none(),
         key => shape_rows::applies(preset, key).is_ok(),
@@ -303,6 +304,13 @@ impl Preset {
         }
         if let (Some(map), "spatial.grid") = (&self.spatial.surface, key.param().key) {
             return Err(grid_beside_map(&map.surface));
+        }
+        if key.param().key == "wear.archard_coefficient" && self.strength.hardness.is_none() {
+            return Err(
+                "wear.archard_coefficient is K = k H: give material.hardness (or a material.name \
+                 with a hardness) first"
+                    .into(),
+            );
         }
         shape_rows::applies(self, key.param().key)?;
         Ok(key)

@@ -15,6 +15,8 @@ mod law_rules;
 mod lesson;
 #[cfg(test)]
 mod lesson_tests;
+mod material_check;
+mod material_rows;
 mod params;
 mod plausible;
 mod profile_csv;

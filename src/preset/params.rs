@@ -6,11 +6,12 @@
 //! Harmonic keys count from 0 (`spatial.harmonics.0.*` is the first harmonic, "harmonic 1" in
 //! messages and in the explorer), like the `harmonics` array of `wearlab solve`'s JSON.
 
+use crate::materials;
 use crate::physics::Spacing;
 use crate::physics::limits::{self, Limit};
 use crate::physics::plane::Model;
 use crate::physics::spatial::harmonic::Harmonic;
-use crate::preset::{Preset, Problem, shape_rows};
+use crate::preset::{Preset, Problem, material_rows, shape_rows};
 
 /// How a parameter's value is read and written.
 #[derive(Clone, Copy, Debug)]
@@ -230,6 +231,7 @@ const fn choice(
 /// Every parameter, in the order of the preset file.
 #[rustfmt::skip]
 pub const PARAMS: &[Param] = &[
+    choice("material.name", ["material", "material from the table (sets E, nu, Y, H)"], &materials::CHOICES, material_rows::name_index, material_rows::set_name),
     number("material.youngs_modulus", ["E", "Young's modulus"], "Pa", limits::YOUNGS_MODULUS, 1e9, |p| p.material.youngs_modulus, |p, v| p.material.youngs_modulus = v),
     number("material.poisson_ratio", ["nu", "Poisson's ratio"], "", limits::POISSON_RATIO, 0.3, |p| p.material.poisson_ratio, |p, v| p.material.poisson_ratio = v),
     number("material.thickness", ["h", "thickness of the strip / layer"], "m", limits::THICKNESS, 1e-3, |p| p.material.thickness, |p, v| p.material.thickness = v),
@@ -239,6 +241,7 @@ pub const PARAMS: &[Param] = &[
     number("friction.adhesion", ["tau0", "adhesive shear stress"], "Pa", limits::ADHESION, 1e4, |p| p.friction.adhesion, |p, v| p.friction.adhesion = v),
     number("friction.shear_strength", ["tau_max", "shear strength capping the friction stress"], "Pa", limits::SHEAR_STRENGTH, 1e7, |p| p.shear_strength, |p, v| p.shear_strength = v),
     number("wear.coefficient", ["k", "wear coefficient"], "1/Pa", limits::WEAR, 1e-15, |p| p.wear, |p, v| p.wear = v),
+    number("wear.archard_coefficient", ["K", "Archard's wear coefficient (k = K/H)"], "", limits::ARCHARD, 1e-4, material_rows::archard, material_rows::set_archard),
     number("wear.exponent", ["n", "exponent of the wear law"], "", limits::WEAR_EXPONENT, 2.0, |p| p.wear_exponent, |p, v| p.wear_exponent = v),
     number("wear.reference_pressure", ["p0", "reference pressure of the wear law"], "Pa", limits::REFERENCE_PRESSURE, 1e6, |p| p.reference_pressure.unwrap_or(0.0), |p, v| p.reference_pressure = Some(v)),
     choice("plane.model", ["model", "plane model"], MODELS, |p| model_index(p.plane.model), |p, i| { p.plane.model = Model::ALL[i]; Ok(()) }),

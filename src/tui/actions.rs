@@ -354,7 +354,13 @@ fn add_harmonic(app: &mut App) -> Vec<Command> {
         ));
         return Vec::new();
     }
-    let (first, last) = (harmonics[0], harmonics[n - 1]);
+    let (Some(&first), Some(&last)) = (harmonics.first(), harmonics.last()) else {
+        app.complain(
+            "the punch is a height map (spatial.surface): + adds a harmonic to a punch made of \
+             harmonics",
+        );
+        return Vec::new();
+    };
     // fewer than MAX_HARMONICS wave vectors are taken, so one of MAX_HARMONICS multiples is
     // free unless out of range
     let added = (2..=MAX_HARMONICS as u32 + 1).find_map(|m| {

@@ -23,7 +23,8 @@ pub enum Step {
 
 /// The nudge of each parameter, by preset key (`N` for the harmonic's index).
 #[rustfmt::skip]
-pub const STEPS: [(&str, Step); 39] = [
+pub const STEPS: [(&str, Step); 41] = [
+    ("material.name", Step::Choice),
     ("material.youngs_modulus", Step::Log { seed: 1e9 }),
     ("material.poisson_ratio", Step::Linear { step: 0.01 }),
     ("material.thickness", Step::Log { seed: 1e-3 }),
@@ -33,6 +34,7 @@ pub const STEPS: [(&str, Step); 39] = [
     ("friction.adhesion", Step::Log { seed: 1e4 }),
     ("friction.shear_strength", Step::Log { seed: 1e7 }),
     ("wear.coefficient", Step::Log { seed: 1e-15 }),
+    ("wear.archard_coefficient", Step::Log { seed: 1e-4 }),
     ("wear.exponent", Step::Linear { step: 0.1 }),
     ("wear.reference_pressure", Step::Log { seed: 1e6 }),
     ("plane.model", Step::Choice),

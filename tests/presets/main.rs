@@ -5,6 +5,7 @@ mod explore_section;
 mod general_presets;
 mod hostile_save;
 mod kept_text;
+mod materials;
 mod params;
 mod preset_fuzz;
 mod preset_multibyte;

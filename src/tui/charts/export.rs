@@ -7,6 +7,7 @@ use crate::engine::Answer;
 use crate::preset::{Preset, to_toml};
 use crate::sweeps::map::{Map, MapSpec};
 
+use crate::materials;
 use crate::tui::charts::svg::{Page, regime, svg as draw_svg};
 use crate::tui::charts::{Axis, Chart, Figure, NoFigure, Plot};
 use crate::tui::form;
@@ -135,9 +136,13 @@ pub fn csv(
 }
 
 /// The caption of a figure: the preset's name, then its parameters as the form shows them
-/// (with units), in lines of at most `width` characters.
+/// (with units; the material's name only where it is one of the table's), in lines of at most
+/// `width` characters.
 pub fn caption(preset: &Preset, width: usize) -> Vec<String> {
-    let rows = form::rows(preset);
+    let rows: Vec<_> = form::rows(preset)
+        .into_iter()
+        .filter(|r| form::show(preset, r) != materials::CUSTOM)
+        .collect();
     let items: Vec<String> = rows
         .iter()
         .enumerate()

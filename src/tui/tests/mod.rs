@@ -16,6 +16,7 @@ mod keys;
 mod legend;
 mod lesson;
 mod map_cursor;
+mod material_form;
 mod monkey;
 mod partial;
 mod picker;
