@@ -72,7 +72,7 @@ fn bad_settings_are_exit_2_naming_key_value_and_what_is_allowed() {
         ),
         (
             "material.thikness=1",
-            "error: material.thikness=1: unknown key 'material.thikness': the keys of a plane preset are material.youngs_modulus,",
+            "error: material.thikness=1: unknown key 'material.thikness': the keys of a plane preset are material.name, material.youngs_modulus,",
         ),
         (
             "friction.coefficient=abc",
