@@ -139,8 +139,8 @@ fn a_session_in_tmux() {
     // (no Escape followed at once by another key: the two may read as Alt-key)
     keys(&["?"]);
     wait_footer(PLANE_80);
-    // model is the eleventh row (E nu h Y H, mu tau0 tau_max, k n, model)
-    for _ in 0..10 {
+    // model is the twelfth row (material E nu h Y H, mu tau0 tau_max, k n, model)
+    for _ in 0..11 {
         keys(&["j"]);
     }
     keys(&["Enter"]);

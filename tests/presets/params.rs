@@ -74,7 +74,7 @@ fn the_keys_of_each_problem_cover_the_sections_it_solves() {
     for key in Key::all(&spatial) {
         assert_eq!(Key::parse(&key.to_string()), Ok(key));
     }
-    assert_eq!(PARAMS.len(), 39);
+    assert_eq!(PARAMS.len(), 41);
 }
 
 #[test]

@@ -99,7 +99,7 @@ fn broken_files_name_path_line_and_reason() {
     assert_eq!(
         error_of(&unknown),
         format!(
-            "lab/broken.toml:{}: unknown key \"rate\"; allowed here: one of \"coefficient\", \"exponent\", \"reference_pressure\"",
+            "lab/broken.toml:{}: unknown key \"rate\"; allowed here: one of \"coefficient\", \"archard_coefficient\", \"exponent\", \"reference_pressure\"",
             line_of(&unknown, "rate")
         )
     );
