@@ -355,11 +355,7 @@ fn add_harmonic(app: &mut App) -> Vec<Command> {
         return Vec::new();
     }
     let (Some(&first), Some(&last)) = (harmonics.first(), harmonics.last()) else {
-        app.complain(
-            "the punch is a height map (spatial.surface): + adds a harmonic to a punch made of \
-             harmonics",
-        );
-        return Vec::new();
+        return surface_keys::no_harmonics(app);
     };
     // fewer than MAX_HARMONICS wave vectors are taken, so one of MAX_HARMONICS multiples is
     // free unless out of range
