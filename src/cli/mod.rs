@@ -101,22 +101,7 @@ pub fn settled(
 
 /// Prints the result, after the last check that it holds only finite numbers.
 pub fn print(text: &str, guard: Result<(), finite::NonFinite>) -> ExitCode {
-    if let Err(e) = guard {
-        say(&format!("error: {e}"));
-        return ExitCode::from(EXIT_UNSOLVABLE);
-    }
-    if stdout_at_start::closed() {
-        say("error: cannot write the result to stdout: it is closed");
-        return ExitCode::from(EXIT_OUTPUT);
-    }
-    let mut out = io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            say(&format!("error: cannot write the result to stdout: {e}"));
-            ExitCode::from(EXIT_OUTPUT)
-        }
-    }
+    print_streamed(guard, |out| out.write_all(text.as_bytes()))
 }
 
 /// Writes the result through `write` as it is produced, after the last check that it holds only
