@@ -10,7 +10,8 @@ use super::*;
 use crate::tui::charts::{Chart, Figure, NoFigure, SpatialChart};
 use crate::tui::view::popups::help_lines;
 
-fn on(app: &App, chart: SpatialChart) -> App {
+/// The app showing `chart`, solved.
+pub(super) fn on(app: &App, chart: SpatialChart) -> App {
     let mut app = app.clone();
     app.ui.chart = Chart::Spatial(chart);
     // the mu*(pbar) chart asks for its curve

@@ -6,16 +6,9 @@
 use crate::engine::{Output, Progress};
 use ratatui::crossterm::event::KeyCode;
 
+use super::partial::on;
 use super::*;
 use crate::tui::charts::{Chart, Figure, SpatialChart};
-
-fn on(app: &App, chart: SpatialChart) -> App {
-    let mut app = app.clone();
-    app.ui.chart = Chart::Spatial(chart);
-    let cmds = app.start();
-    settle(&mut app, cmds);
-    app
-}
 
 /// (q, C) pairs of a spectrum curve.
 type Points = Vec<(f64, f64)>;
