@@ -39,6 +39,8 @@ fn harmonics(count: usize, (d, e): (usize, usize)) -> SpatialInputs {
             adhesion: 0.0,
         },
         wear: 1e-12,
+        wear_exponent: 1.0,
+        reference_pressure: 1.0,
         sliding_speed: 0.1,
         mean_pressure: 2e6,
         shape: PunchShape::Harmonics(harmonics),

@@ -57,6 +57,9 @@ pub struct CellOutput {
     pub complete_from_start: bool,
     /// mu* against the mean pressure for the shape at t; None until computed or when not asked.
     pub load_curve: Option<Result<Arc<LoadCurve>, SolveError>>,
+    /// Why the running-in is simulated whatever the contact, in words (`SpatialInputs::simulated`: a
+    /// nonlinear wear law; None for the linear one).
+    pub simulated: Option<String>,
 }
 
 impl CellOutput {
@@ -191,6 +194,7 @@ impl Engine {
             progress: run.progress(ask.time),
             complete_from_start: pipeline::complete_from_start(run.running_in.complete_from),
             load_curve,
+            simulated: key.inputs.simulated(),
         })
     }
 
@@ -242,6 +246,7 @@ impl Engine {
                     },
                     complete_from_start: false,
                     load_curve: None,
+                    simulated: ask.key.inputs.simulated(),
                 };
                 stopped = !deliver(output, false);
                 if stopped {

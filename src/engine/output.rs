@@ -67,13 +67,14 @@ pub struct SpatialOutput {
 
 impl SpatialOutput {
     /// True when the closed form of the harmonics holds at t (`pipeline::closed_form_holds`):
-    /// the contact complete from t = 0 on and at t. Every chart and status asks this.
+    /// the linear wear law, the contact complete from t = 0 on and at t. Every chart and status asks this.
     pub fn closed_form_holds(&self) -> bool {
         let from_start = match (&self.cell, self.complete_at_start) {
             (Ok(c), _) => c.complete_from_start,
             (Err(_), at_start) => at_start.unwrap_or(false),
         };
-        pipeline::closed_form_holds(from_start, self.state.contact.complete)
+        let inputs = &self.state.solution.inputs;
+        pipeline::closed_form_holds(inputs, from_start, self.state.contact.complete)
     }
 }
 

@@ -118,15 +118,17 @@ impl Key {
     }
 }
 
-/// Whether the form shows the parameter: the wear exponent, the shear cap, the yield strength
-/// and the hardness in the plane problem (the spatial one takes the linear law without a cap
-/// and has no yield check), the reference pressure where
-/// the wear law is not linear, a shape's parameters for that kind of punch.
+/// Whether the form shows the parameter: the shear cap, the yield strength and the hardness in
+/// the plane problem (the spatial one takes friction without a cap and has no yield check), the
+/// wear exponent in the plane problem and where a spatial preset gives one, the reference
+/// pressure where the wear law is not linear, a shape's parameters for that kind of punch.
 fn shown(p: &Param, preset: &Preset) -> bool {
     let plane = preset.problem == Problem::Plane;
     match p.key {
-        "wear.exponent" | "friction.shear_strength" => plane,
-        "wear.reference_pressure" => plane && preset.wear_exponent != 1.0,
+        // in the spatial form only where the preset gives one (its closed form is the linear law's)
+        "wear.exponent" => plane || preset.wear_exponent != 1.0,
+        "friction.shear_strength" => plane,
+        "wear.reference_pressure" => preset.wear_exponent != 1.0,
         // "none" until given: a student enters a hardness to have the yield checked
         "material.yield_strength" | "material.hardness" => plane,
         "wear.archard_coefficient" => preset.strength.hardness.is_some(),

@@ -6,7 +6,7 @@ use crate::preset::{Preset, Problem};
 
 /// The rules between the laws' values, for the file and for `--set`: a nonlinear wear law needs
 /// its reference pressure; the shear strength exceeds the adhesion; the spatial problem takes
-/// the linear law without a cap.
+/// friction without a cap.
 pub(super) fn check(p: &Preset) -> Result<(), String> {
     if p.wear_exponent != 1.0 && p.reference_pressure.is_none() {
         return Err(format!(
@@ -23,10 +23,10 @@ pub(super) fn check(p: &Preset) -> Result<(), String> {
             limits::show(p.friction.adhesion)
         ));
     }
-    if p.problem == Problem::Spatial && (p.wear_exponent != 1.0 || p.shear_strength.is_finite()) {
+    if p.problem == Problem::Spatial && p.shear_strength.is_finite() {
         return Err(
-            "the spatial problem takes the linear wear law without a shear cap: remove \
-                    wear.exponent and friction.shear_strength, or solve problem = \"plane\""
+            "the spatial problem takes friction without a shear cap: remove \
+                    friction.shear_strength, or solve problem = \"plane\""
                 .into(),
         );
     }

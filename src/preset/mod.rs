@@ -182,6 +182,8 @@ impl Preset {
             material: self.material,
             friction: self.friction,
             wear: self.wear,
+            wear_exponent: self.wear_exponent,
+            reference_pressure: self.reference_pressure.unwrap_or(1.0),
             sliding_speed: self.spatial.sliding_speed,
             mean_pressure: self.spatial.mean_pressure,
             shape: match &self.spatial.surface {

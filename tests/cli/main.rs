@@ -20,4 +20,5 @@ mod solve_output;
 mod surface_cli;
 mod surface_set_cli;
 mod surface_statistics_cli;
+mod wear_law_cli;
 mod yield_cli;

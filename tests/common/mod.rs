@@ -103,6 +103,8 @@ pub fn spatial(
             adhesion: tau0,
         },
         wear: k,
+        wear_exponent: 1.0,
+        reference_pressure: 1.0,
         sliding_speed: 1.0,
         mean_pressure: pbar,
         shape: wearlab::physics::spatial::PunchShape::Harmonics(harmonics),

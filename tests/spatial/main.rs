@@ -15,6 +15,7 @@ mod spatial_props;
 mod spatial_running_in;
 mod spatial_stop;
 mod spatial_time_steps;
+mod spatial_wear_law;
 mod surface;
 mod surface_area_load;
 mod surface_egg_box;

@@ -43,6 +43,8 @@ fn inputs(
             adhesion: 0.0,
         },
         wear: k,
+        wear_exponent: 1.0,
+        reference_pressure: 1.0,
         sliding_speed: 1.0,
         mean_pressure: pbar,
         shape: PunchShape::Harmonics(harmonics),

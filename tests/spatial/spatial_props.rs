@@ -123,6 +123,8 @@ fn spatial_inputs() -> impl Strategy<Value = SpatialInputs> {
                     adhesion: tau0,
                 },
                 wear: k,
+                wear_exponent: 1.0,
+                reference_pressure: 1.0,
                 sliding_speed: v,
                 mean_pressure: pbar,
                 shape: PunchShape::Harmonics(harmonics),

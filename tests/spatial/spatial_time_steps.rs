@@ -13,6 +13,7 @@ use common::cosine;
 use wearlab::physics::spatial::SpatialInputs;
 use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::partial::active_set::{ContactProblem, solve};
+use wearlab::physics::spatial::partial::operator::Diagonal;
 use wearlab::physics::spatial::partial::running_in::{RunningIn, run_in};
 use wearlab::physics::spatial::partial::state::Outputs;
 use wearlab::physics::stop::Stop;
@@ -158,7 +159,7 @@ fn bdf2(setup: &Setup, dt: f64, steps: usize, each: &mut Each) {
             shape: &base,
             mean_pressure: pbar,
             adhesion: inputs.friction.adhesion,
-            diagonal: c,
+            diagonal: Diagonal::Uniform(c),
             stop: Stop::Never,
         };
         let sol = solve(&mut op, &problem, None).unwrap();

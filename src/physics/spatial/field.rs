@@ -166,6 +166,8 @@ mod tests {
                 adhesion: 0.0,
             },
             wear: 1e-11,
+            wear_exponent: 1.0,
+            reference_pressure: 1.0,
             sliding_speed: 0.5,
             mean_pressure: 3e6,
             shape: PunchShape::Harmonics(harmonics),

@@ -19,6 +19,7 @@ pub mod result;
 mod separable;
 pub mod state;
 pub mod surface;
+mod wear_law;
 
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -38,6 +39,11 @@ pub struct SpatialInputs {
     pub friction: Friction,
     /// Wear coefficient k [1/Pa] (the same k as the plane problem).
     pub wear: f64,
+    /// Exponent n of the wear law W' = -k V p (p/p0)^(n-1) (dimensionless, in [1, 4]); 1 is the
+    /// paper's linear law (1.2).
+    pub wear_exponent: f64,
+    /// Reference pressure p0 [Pa] of the wear law, > 0; plays no part when n = 1.
+    pub reference_pressure: f64,
     /// Sliding speed V [m/s], >= 0.
     pub sliding_speed: f64,
     /// Mean pressure pbar [Pa] (load per unit area), > 0.
@@ -82,6 +88,7 @@ impl SpatialInputs {
     /// (`Surface::new`).
     pub fn validate(&self) -> Result<(), SolveError> {
         validate_common(&self.material, &self.friction, self.wear)?;
+        self.wear_law().validate()?;
         limits::check_all(&[
             (&limits::SPEED, "sliding_speed", self.sliding_speed),
             (&limits::MEAN_PRESSURE, "mean_pressure", self.mean_pressure),

@@ -1,8 +1,10 @@
 //! The spatial problem at time t, decided once (docs/physics/spatial.md,
-//! docs/physics/spatial-partial.md): when the contact is complete at t = 0 and at t, the closed
-//! form of the harmonics holds; otherwise, on a period cell, the punch is worn through the
-//! running-in (`partial::running_in`) and every output comes from the contact solution at t;
-//! without a period cell (incommensurate wavenumbers) partial contact has no answer.
+//! docs/physics/spatial-partial.md): when the wear law is linear and the contact is complete at
+//! t = 0 and at t, the closed form of the harmonics holds; otherwise, on a period cell, the punch
+//! is worn through the running-in (`partial::running_in`) and every output comes from the
+//! contact solution at t;
+//! a nonlinear wear law is simulated there to t even in complete contact; without a period cell
+//! (incommensurate wavenumbers) partial contact and a nonlinear wear law have no answer.
 //!
 //! `solve` answers `wearlab solve` and every spatial sweep point; the explorer's engine steps the
 //! same running-in progressively and its charts ask `closed_form_holds` what they draw.
@@ -12,9 +14,7 @@ use std::ops::ControlFlow;
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::{
-    MAX_STEPS, Stopped, cancelled_or, run_in_until,
-};
+use crate::physics::spatial::partial::running_in::{MAX_STEPS, Stopped, cancelled_or, run_in_to};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::result::{
@@ -32,10 +32,14 @@ pub fn complete_from_start(complete_from: Option<f64>) -> bool {
     complete_from == Some(0.0)
 }
 
-/// True when the closed form of the harmonics holds at t: the contact is complete from t = 0 on
-/// and the closed form's contact is complete at t.
-pub fn closed_form_holds(complete_from_start: bool, complete_at_t: bool) -> bool {
-    complete_from_start && complete_at_t
+/// True when the closed form of the harmonics holds at t: the wear law of `inputs` is linear
+/// (n = 1), the contact is complete from t = 0 on and the closed form's contact is complete at t.
+pub fn closed_form_holds(
+    inputs: &SpatialInputs,
+    complete_from_start: bool,
+    complete_at_t: bool,
+) -> bool {
+    inputs.linear_wear() && complete_from_start && complete_at_t
 }
 
 /// The complete-contact check of the harmonics as given, at t = 0, on the cell of `closed` (the
@@ -98,11 +102,15 @@ pub fn solve_until(
         Ok(setup) => on_the_cell(&setup, Some(&closed), at, probes, pressures, stop),
         Err(why) => {
             let initial = contact_at_start(inputs, &evolutions, &closed);
-            if closed_form_holds(initial.complete, closed.contact.complete) {
+            if closed_form_holds(inputs, initial.complete, closed.contact.complete) {
                 return Ok(closed_form(inputs, closed, probes, sweep));
             }
-            // the closed form does not hold: the contact is lost at t = 0 or at t
-            let lost = closed.contact.failure().or(initial.failure());
+            // the closed form does not hold: a nonlinear wear law, or the contact is lost at
+            // t = 0 or at t
+            let lost = inputs
+                .simulated()
+                .or(closed.contact.failure())
+                .or(initial.failure());
             let lost = lost.unwrap_or_default();
             // a coarse grid stays an input error (exit 2), no period cell has no answer (exit 3)
             Err(Stopped::Failed(match why {
@@ -123,12 +131,17 @@ fn on_the_cell(
     pressures: Option<Vec<f64>>,
     stop: Stop,
 ) -> Result<SpatialResult, Stopped> {
-    let run = run_in_until(setup, at.time_tolerance, stop)?;
+    let run = run_in_to(setup, at.time_tolerance, at.time, stop)?;
     if run.step_bound_reached() {
+        let partial = if setup.inputs.linear_wear() {
+            " with the contact still partial"
+        } else {
+            ""
+        };
         return Err(Stopped::Failed(SolveError::NoSolution(format!(
-            "the running-in reached its bound of {MAX_STEPS} time steps at t = {:.6e} s with the \
-             contact still partial: the time tolerance {:.1e} asks for more steps than that \
-             (raise spatial.time_tolerance)",
+            "the running-in reached its bound of {MAX_STEPS} time steps at t = {:.6e} s{partial}: \
+             the time tolerance {:.1e} asks for more steps than that (raise \
+             spatial.time_tolerance)",
             run.end_time(),
             at.time_tolerance
         ))));
@@ -139,6 +152,7 @@ fn on_the_cell(
     let o = state.outputs;
     // a height map's state at t, when given, is complete (`RunningIn::state_at`)
     let from_start = closed_form_holds(
+        &setup.inputs,
         complete_from_start(run.complete_from),
         closed.is_none_or(|c| c.contact.complete),
     );
@@ -202,9 +216,12 @@ fn on_the_cell(
         mean_gap: o.mean_gap,
         harmonics_hold: if from_start {
             "now"
-        } else {
+        } else if setup.inputs.linear_wear() {
             "after complete contact"
+        } else {
+            "for n = 1 only"
         },
+        running_in: setup.inputs.simulated(),
         harmonics: closed.map_or_else(Vec::new, |c| harmonics(&c.solution)),
         contact,
         probes,
@@ -290,6 +307,7 @@ fn closed_form(
         max_pressure: f.pressure.iter().copied().fold(0.0, f64::max),
         mean_gap: 0.0,
         harmonics_hold: "now",
+        running_in: None,
         harmonics: harmonics(sol),
         contact: ContactResult {
             complete: true,

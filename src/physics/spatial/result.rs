@@ -208,8 +208,13 @@ pub struct SpatialResult {
     pub max_pressure: f64,
     /// The mean gap <gap> [m] (0 in complete contact).
     pub mean_gap: f64,
-    /// When the per-harmonic closed form holds: "now", or "after complete contact".
+    /// When the per-harmonic closed form holds: "now", "after complete contact", or "for n = 1
+    /// only" (a nonlinear wear law).
     pub harmonics_hold: &'static str,
+    /// Why the running-in is simulated on the grid whatever the contact, in words (a nonlinear
+    /// wear law; absent from the JSON for the linear one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub running_in: Option<String>,
     /// Per harmonic.
     pub harmonics: Vec<HarmonicResult>,
     /// The contact.

@@ -26,8 +26,13 @@ pub fn fields(out: &SpatialOutput) -> Result<Fields<'_>, NoFigure> {
     if out.closed_form_holds() {
         return Ok(Fields::Closed);
     }
+    let simulated = out.state.solution.inputs.simulated();
     match &out.cell {
         Ok(c) => c.state.as_deref().map(Fields::Nodes).map_err(error),
+        Err(why) if simulated.is_some() => Err(NoFigure::Error(format!(
+            "{}; the simulation needs a period cell: {why}",
+            simulated.unwrap_or_default()
+        ))),
         // complete at t but not at t = 0: the closed form at t is not what the wear made of a
         // partial contact
         Err(why) if out.state.contact.complete => Err(NoFigure::Error(format!(

@@ -23,8 +23,9 @@ pub fn percent(fraction: f64) -> String {
     }
 }
 
-/// The head of the status for the state on the cell, and whether the state shown is partial
-/// (the harmonics' closed-form rates then hold only after complete contact) and whether `then`
+/// The head of the status for the state on the cell, and whether the harmonics' closed-form
+/// rates do not hold now (the state shown is partial: they hold after complete contact; a
+/// nonlinear wear law, whose words end the head: they hold for n = 1 only) and whether `then`
 /// was said: with `then`, the time of complete contact ends in ", then:", heading the
 /// harmonics' rows (without, where no row fits under it). `mu` is the sliding friction
 /// coefficient, `wear_rate` k V [m/(Pa s)] of the inputs.
@@ -92,7 +93,9 @@ pub fn head(
         Progress::Done { reached } => Some(reached),
         Progress::Running { .. } => None,
     };
-    let said = then && !o.complete && done_at.is_some() && complete_at.is_some();
+    // a nonlinear wear law: the harmonics' closed form never holds, so nothing follows "then"
+    let said =
+        then && !o.complete && done_at.is_some() && complete_at.is_some() && c.simulated.is_none();
     let then = if said { ", then:" } else { "" };
     let mut running = running.ending(then);
     // the time-step error only where the line keeps to one row (the harmonics' rows under it
@@ -100,12 +103,16 @@ pub fn head(
     if let Some(reached) = done_at.filter(|_| running.to_string().chars().count() > width) {
         running = done(c, wear_rate, reached, false).ending(then);
     }
+    // a nonlinear wear law says why it is simulated right after where it stands
+    if let Some(note) = &c.simulated {
+        running = running.ending(";").then_words(note);
+    }
     lines.extend(
         lines_of(&running, width)
             .into_iter()
             .map(|l| Line::styled(l, style.heading())),
     );
-    (lines, !o.complete, said)
+    (lines, !o.complete || c.simulated.is_some(), said)
 }
 
 /// The end of the running-in (its last stepped state at `reached` [s]), in words, with the
@@ -134,6 +141,21 @@ fn done(c: &CellOutput, wear_rate: f64, reached: f64, error: bool) -> Phrase {
                 .then("(simulated"),
         ),
         None if wear_rate == 0.0 => Phrase::words("no wear: the contact stays as it is"),
+        // a nonlinear wear law complete from t = 0, stepped to the end of its stepping
+        None if c.simulated.is_some()
+            && !c
+                .history
+                .as_deref()
+                .is_ok_and(|h| h.min_pressure_complete.first().is_some_and(|m| *m < 0.0)) =>
+        {
+            let to = Phrase::words("simulated to").then(format!("t = {}", format_si(reached, "s")));
+            match error {
+                Some(e) => to
+                    .then_words("(time-step")
+                    .then(format!("error < {e:.1e})")),
+                None => to,
+            }
+        }
         None => closing(
             Phrase::words("still partial at")
                 .then(format!("t = {}:", format_si(reached, "s")))

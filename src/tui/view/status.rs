@@ -183,10 +183,15 @@ fn spatial(
         "{:>3} {k_label:<10}{:<10}{:<12}{}",
         "n", "1/beta", "c", "phi"
     );
-    // while partial, the closed-form rates are what each harmonic does once contact is complete:
+    // while partial, the closed-form rates are what each harmonic does once contact is complete
+    // (under a nonlinear wear law, what it would do under the linear one):
     // said by the line of the time of complete contact (", then:"), else on a line of its own
     // above the header (never after the header, where it read as phi's)
-    let after = "after complete contact:";
+    let after = if s.inputs.linear_wear() {
+        "after complete contact:"
+    } else {
+        "closed form (n = 1 only):"
+    };
     // the state on the period cell, unless the closed form holds from t = 0
     let head = |then| match contact::stepped(out) {
         Some(c) => {
@@ -273,6 +278,9 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
         let mut items = vec![format!("complete contact, {p_min}")];
         items.extend(bound);
         (items, style.ok())
+    } else if let Some(note) = s.inputs.simulated() {
+        // a nonlinear wear law: the closed form does not hold, the cell below says why not solved
+        (vec![note], style.error())
     } else if c.complete {
         // complete at t by the closed form, but not at t = 0: not what the wear made of it
         let lost = "contact lost at t = 0: the closed form at t does not hold";
@@ -293,7 +301,11 @@ fn closed(out: &SpatialOutput, style: RenderOptions, width: usize) -> Vec<Line<'
             .map(|l| Line::styled(l, verdict)),
     );
     if let (Err(why), false) = (&out.cell, out.closed_form_holds()) {
-        let why = format!("partial contact is not solved: {why}");
+        let why = if s.inputs.linear_wear() {
+            format!("partial contact is not solved: {why}")
+        } else {
+            format!("the running-in is not simulated: {why}")
+        };
         lines.extend(
             wrap(&why, width)
                 .into_iter()

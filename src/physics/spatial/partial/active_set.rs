@@ -2,9 +2,10 @@
 //! (docs/physics/spatial-partial.md section 3).
 //!
 //! For a contact set C, the bordered non-symmetric system
-//!   (K + c)_CC p_C + d 1 = U_C + tau0 T[1_C]_C,   sum p_C = N pbar,
-//! is solved matrix-free with p/pbar and d/(pbar max A) as unknowns, the load row scaled to unit
-//! norm and the full-cell inverse (K + c)^-1 as right preconditioner. Then
+//!   (K + D)_CC p_C + d 1 = U_C + tau0 T[1_C]_C,   sum p_C = N pbar,
+//! (D a diagonal: uniform c, or per node) is solved matrix-free with p/pbar and d/(pbar max A) as
+//! unknowns, the load row scaled to unit norm and the full-cell inverse (K + c)^-1 (c the mean of
+//! D) as right preconditioner. Then
 //!   C <- {i in C: p_i > 0} u {i not in C: gap_i < 0},
 //! until C repeats. A set seen before is a cycle: the state of the cycle with the smallest natural
 //! residual is kept and the cycle reported. The first sets are solved to a loose tolerance; once
@@ -19,7 +20,7 @@
 
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::gmres::{Preconditioned, gmres};
-use crate::physics::spatial::partial::operator::Operator;
+use crate::physics::spatial::partial::operator::{Diagonal, Operator};
 use crate::physics::spatial::partial::zone_ends;
 use crate::physics::stop::{STOPPED, Stop};
 
@@ -37,7 +38,7 @@ const LINEAR_TOLERANCE: f64 = 1e-13;
 /// to `LINEAR_TOLERANCE` reproduces it.
 const LOOSE_TOLERANCE: f64 = 1e-6;
 
-/// One contact problem: the shape and the load, with the operator K + c.
+/// One contact problem: the shape and the load, with the operator K + D.
 #[derive(Clone, Copy, Debug)]
 pub struct ContactProblem<'a> {
     /// U [m] at the nodes (zero mean).
@@ -46,8 +47,9 @@ pub struct ContactProblem<'a> {
     pub mean_pressure: f64,
     /// tau0 [Pa], acting only in contact.
     pub adhesion: f64,
-    /// c [m/Pa] >= 0 added to K (c dt k_w in an implicit wear step; 0 for a plain contact).
-    pub diagonal: f64,
+    /// D [m/Pa] >= 0 added to K (c dt k_w in an implicit wear step; uniform 0 for a plain
+    /// contact). Complete contact is returned without iterating only for a uniform D.
+    pub diagonal: Diagonal<'a>,
     /// Asked before every active-set iteration and every product of its linear solve: when it
     /// says so, the solve ends with the error `stop::STOPPED`.
     pub stop: Stop<'a>,
@@ -58,7 +60,7 @@ pub struct ContactProblem<'a> {
 pub struct ContactSolution {
     /// p [Pa] at the nodes.
     pub pressure: Vec<f64>,
-    /// d [m]: the rigid offset of the problem with K + c (the mean gap when c = 0).
+    /// d [m]: the rigid offset of the problem with K + D (the mean gap when D = 0).
     pub offset: f64,
     /// True when p_cc >= 0 at every node and the closed form was returned.
     pub complete: bool,
@@ -87,7 +89,7 @@ impl ContactSolution {
 struct Bordered<'a> {
     op: &'a mut Operator,
     active: &'a [usize],
-    diagonal: f64,
+    diagonal: Diagonal<'a>,
     scale: f64,
     full: Vec<f64>,
     image: Vec<f64>,
@@ -106,7 +108,8 @@ impl Preconditioned for Bordered<'_> {
     fn apply(&mut self, x: &[f64], y: &mut [f64]) {
         let n = self.active.len();
         self.extend(&x[..n]);
-        self.op.apply(&self.full, &mut self.image, self.diagonal);
+        self.op
+            .apply_diagonal(&self.full, &mut self.image, self.diagonal);
         for (k, &i) in self.active.iter().enumerate() {
             y[k] = self.image[i] / self.scale + x[n];
         }
@@ -116,7 +119,8 @@ impl Preconditioned for Bordered<'_> {
     fn precondition(&mut self, r: &[f64], z: &mut [f64]) {
         let n = self.active.len();
         self.extend(&r[..n]);
-        self.op.inverse(&self.full, &mut self.image, self.diagonal);
+        self.op
+            .inverse(&self.full, &mut self.image, self.diagonal.mean());
         for (k, &i) in self.active.iter().enumerate() {
             z[k] = self.image[i] * self.scale;
         }
@@ -137,17 +141,18 @@ fn bits(set: &[bool]) -> Vec<u64> {
         .collect()
 }
 
-/// p_cc = pbar + (K + c)^-1 [U] at the nodes: the complete-contact pressure (tau0 drops out).
+/// p_cc = pbar + (K + c)^-1 [U] at the nodes (c the mean of D): the complete-contact pressure
+/// (tau0 drops out) for a uniform D, a first guess for a nodal one.
 pub fn complete_pressure(op: &mut Operator, prob: &ContactProblem) -> Vec<f64> {
     let mut p = vec![0.0; prob.shape.len()];
-    op.inverse(prob.shape, &mut p, prob.diagonal);
+    op.inverse(prob.shape, &mut p, prob.diagonal.mean());
     p.iter_mut().for_each(|v| *v += prob.mean_pressure);
     p
 }
 
 /// Solves the contact problem by the primal–dual active set, starting from `start` (a previous
 /// contact set) or from {p_cc > 0}. Complete contact (min p_cc >= 0) returns p_cc without
-/// iterating.
+/// iterating when D is uniform; a nodal D starts from every node in contact.
 pub fn solve(
     op: &mut Operator,
     prob: &ContactProblem,
@@ -156,11 +161,13 @@ pub fn solve(
     let n = prob.shape.len();
     let pbar = prob.mean_pressure;
     let p_cc = complete_pressure(op, prob);
-    if p_cc.iter().all(|p| *p >= 0.0) {
+    let c = prob.diagonal.mean();
+    let uniform = matches!(prob.diagonal, Diagonal::Uniform(_));
+    if uniform && p_cc.iter().all(|p| *p >= 0.0) {
         return Ok(ContactSolution {
             pressure: p_cc,
             // the mean of the rows: c pbar + d = <U> = 0 (written so that c = 0 gives +0)
-            offset: 0.0 - prob.diagonal * pbar,
+            offset: 0.0 - c * pbar,
             complete: true,
             iterations: 0,
             linear_iterations: 0,
@@ -169,14 +176,15 @@ pub fn solve(
             residual: 0.0,
         });
     }
-    let scale = op.multipliers.max_normal() + prob.diagonal;
+    let scale = op.multipliers.max_normal() + c;
     let gap_scale = pbar * scale;
     let mut set: Vec<bool> = match start {
         Some(s) if s.iter().any(|v| *v) => s.to_vec(),
+        _ if !uniform => vec![true; n],
         _ => p_cc.iter().map(|p| *p > 0.0).collect(),
     };
     let mut pressure = p_cc;
-    let mut offset = 0.0 - prob.diagonal * pbar;
+    let mut offset = 0.0 - c * pbar;
     let mut seen: Vec<Vec<u64>> = Vec::new();
     let mut best: Option<ContactSolution> = None;
     // the set of the state `best` and the iterations since `best` last improved
@@ -248,7 +256,7 @@ pub fn solve(
         }
         offset = x[m] * gap_scale;
         // gap = d - U + (K + c) p - tau0 T[1_C]
-        op.apply(&pressure, &mut gap, prob.diagonal);
+        op.apply_diagonal(&pressure, &mut gap, prob.diagonal);
         for i in 0..n {
             gap[i] += offset - prob.shape[i] - lift[i];
         }

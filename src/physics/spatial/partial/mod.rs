@@ -24,7 +24,7 @@ use crate::physics::spatial::SpatialInputs;
 use crate::physics::spatial::harmonic::{Harmonic, evolution};
 use crate::physics::spatial::partial::active_set::{ContactProblem, solve};
 use crate::physics::spatial::partial::grid::Grid;
-use crate::physics::spatial::partial::operator::{Multipliers, Operator};
+use crate::physics::spatial::partial::operator::{Diagonal, Multipliers, Operator};
 use crate::physics::spatial::partial::state::{State, Work, evaluate};
 use crate::physics::spatial::surface;
 use crate::physics::stop::Stop;
@@ -116,9 +116,10 @@ impl Setup {
     }
 
     /// The contact state of the zero-mean shape `shape` [m] at time `time` [s] (which sets the
-    /// mean wear k_w pbar t), starting the active set from `start` when given; the active set
-    /// asks `stop` before every iteration (its error is then `stop::STOPPED`). Refused when the
-    /// vertical force P is not positive (slopes far beyond the small-slope theory).
+    /// mean wear k_w pbar t of the linear law), starting the active set from `start` when given;
+    /// the active set asks `stop` before every iteration (its error is then `stop::STOPPED`).
+    /// Refused when the vertical force P is not positive (slopes far beyond the small-slope
+    /// theory).
     pub fn state(
         &self,
         op: &mut Operator,
@@ -127,7 +128,22 @@ impl Setup {
         start: Option<&[bool]>,
         stop: Stop,
     ) -> Result<State, SolveError> {
-        let state = self.unchecked_state(op, shape, time, start, stop)?;
+        let mean_wear = self.inputs.wear_rate() * self.inputs.mean_pressure * time;
+        self.worn_state(op, shape, time, mean_wear, start, stop)
+    }
+
+    /// As [`Setup::state`] with the mean wear depth <W> [m] given (a nonlinear wear law's, from
+    /// its running-in).
+    pub fn worn_state(
+        &self,
+        op: &mut Operator,
+        shape: Vec<f64>,
+        time: f64,
+        mean_wear: f64,
+        start: Option<&[bool]>,
+        stop: Stop,
+    ) -> Result<State, SolveError> {
+        let state = self.unchecked_worn(op, shape, time, mean_wear, start, stop)?;
         let p = state.outputs.normal_force;
         if p.is_nan() || p <= 0.0 {
             return Err(SolveError::NoSolution(format!(
@@ -147,18 +163,30 @@ impl Setup {
         start: Option<&[bool]>,
         stop: Stop,
     ) -> Result<State, SolveError> {
+        let mean_wear = self.inputs.wear_rate() * self.inputs.mean_pressure * time;
+        self.unchecked_worn(op, shape, time, mean_wear, start, stop)
+    }
+
+    fn unchecked_worn(
+        &self,
+        op: &mut Operator,
+        shape: Vec<f64>,
+        time: f64,
+        mean_wear: f64,
+        start: Option<&[bool]>,
+        stop: Stop,
+    ) -> Result<State, SolveError> {
         let pbar = self.inputs.mean_pressure;
         let friction = self.inputs.friction;
         let problem = ContactProblem {
             shape: &shape,
             mean_pressure: pbar,
             adhesion: friction.adhesion,
-            diagonal: 0.0,
+            diagonal: Diagonal::Uniform(0.0),
             stop,
         };
         let sol = solve(op, &problem, start)?;
         let (outputs, gap) = evaluate(op, &shape, pbar, &friction, &sol, sol.offset);
-        let mean_wear = self.inputs.wear_rate() * pbar * time;
         // W >= 0 exactly (each BE/BDF2 increment of W is >= 0, section 5): the max only removes
         // the round-off of the subtraction (~1e-16 of U)
         let wear = self

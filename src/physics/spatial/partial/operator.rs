@@ -19,6 +19,25 @@ use crate::physics::spatial::partial::grid::Grid;
 
 type C64 = Complex<f64>;
 
+/// A diagonal [m/Pa] added to K: c dt k_w in an implicit wear step.
+#[derive(Clone, Copy, Debug)]
+pub enum Diagonal<'a> {
+    /// The same c >= 0 at every node (0 for a plain contact; the linear wear law's step).
+    Uniform(f64),
+    /// c_i >= 0 at node i (a Newton iterate of the step of a nonlinear wear law).
+    Nodal(&'a [f64]),
+}
+
+impl Diagonal<'_> {
+    /// Its mean over the nodes [m/Pa]: the uniform stand-in of the preconditioner.
+    pub fn mean(&self) -> f64 {
+        match self {
+            Diagonal::Uniform(c) => *c,
+            Diagonal::Nodal(c) => c.iter().sum::<f64>() / c.len() as f64,
+        }
+    }
+}
+
 /// The multipliers at every spectral node, stored column by column: index kx ny + j for
 /// kx = 0..=nx/2 (real FFT along x) and j = 0..ny (complex FFT along y).
 #[derive(Clone, Debug, PartialEq)]
@@ -238,6 +257,19 @@ impl Operator {
         self.fft.filter(p, out, |i| kernel[i]);
         if c != 0.0 {
             out.iter_mut().zip(p).for_each(|(o, p)| *o += c * p);
+        }
+    }
+
+    /// out = (K + D)[p] [m] for p [Pa] with the diagonal D (uniform or per node).
+    pub fn apply_diagonal(&mut self, p: &[f64], out: &mut [f64], d: Diagonal) {
+        match d {
+            Diagonal::Uniform(c) => self.apply(p, out, c),
+            Diagonal::Nodal(c) => {
+                self.apply(p, out, 0.0);
+                out.iter_mut()
+                    .zip(p.iter().zip(c))
+                    .for_each(|(o, (p, c))| *o += c * p);
+            }
         }
     }
 

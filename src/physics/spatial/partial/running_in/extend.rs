@@ -7,7 +7,7 @@ use std::ops::ControlFlow;
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::running_in::{
-    MAX_TRIES, RunningIn, Sample, Snapshot, Stepper, Stepping, Trial,
+    MAX_TRIES, RunningIn, Sample, Snapshot, Stepper, Stepping, Trial, nonlinear, stepper,
 };
 use crate::physics::spatial::partial::state::{State, evaluate};
 use crate::physics::stop::Stop;
@@ -37,7 +37,6 @@ impl RunningIn {
             None,
             stop,
         )?;
-        let (pbar, k_w) = (setup.inputs.mean_pressure, setup.inputs.wear_rate());
         Ok(RunningIn {
             setup: setup.clone(),
             stepping,
@@ -45,14 +44,16 @@ impl RunningIn {
                 time: 0.0,
                 outputs: first.outputs,
                 time_error: 0.0,
+                mean_wear: 0.0,
             }],
             time_to_complete: None,
-            complete_from: first.outputs.complete.then_some(0.0),
+            // the closed form holds from a complete start under the linear law only
+            complete_from: (first.outputs.complete && setup.inputs.linear_wear()).then_some(0.0),
             rejected: 0,
             end_shape: setup.initial_shape.clone(),
             end_previous: None,
             end_contact: first.contact(),
-            end_slope: first.pressure.iter().map(|p| -k_w * (p - pbar)).collect(),
+            end_slope: stepper::slope(setup, &first.pressure),
             next_step: stepping.map_or(0.0, |s| s.first),
             snapshots: vec![Snapshot {
                 step: 0,
@@ -75,8 +76,9 @@ impl RunningIn {
 
     /// Steps the wear on until the last stepped state is at time `until` [s] or later, or the
     /// running-in is [finished](RunningIn::finished). `progress` gets the running-in after every
-    /// step that leaves the contact partial; `ControlFlow::Break` stops after that step, and a
-    /// later call goes on from there (the steps are the same as in one call).
+    /// step that leaves the contact partial (every step of a nonlinear wear law);
+    /// `ControlFlow::Break` stops after that step, and a later call goes on from there (the steps
+    /// are the same as in one call).
     pub fn extend(
         &mut self,
         until: f64,
@@ -110,6 +112,7 @@ impl RunningIn {
         stepper.slope = Some(std::mem::take(&mut self.end_slope));
         stepper.stop = stop;
         let scale = rms(&setup.initial_shape);
+        let linear = setup.inputs.linear_wear();
         let mut result = Ok(());
         while !self.finished() && self.end_time() < until && !stop.now() {
             let (trial, error) = match self.try_step(&mut stepper, &stepping, scale) {
@@ -128,15 +131,22 @@ impl RunningIn {
                 trial.mean_gap,
             );
             let time = trial.time;
+            let mean_wear =
+                nonlinear::mean_wear(&setup, &self.samples, time, &trial.solution.pressure);
             stepper.accept(trial);
             let time_error = self.samples.last().expect("t = 0 is sampled").time_error + error;
+            let was_partial = self.time_to_complete.is_none() && !self.samples[0].outputs.complete;
             self.samples.push(Sample {
                 time,
                 outputs,
                 time_error,
+                mean_wear,
             });
-            if outputs.complete {
+            if outputs.complete && was_partial {
                 self.time_to_complete = Some(self.zero_of_min_pressure());
+            }
+            if outputs.complete && linear {
+                // the closed form of every mode holds from here on
                 self.complete_from = Some(time);
                 break;
             }
@@ -175,7 +185,9 @@ impl RunningIn {
             if time <= now {
                 break;
             }
-            let trial = match stepper.trial(time) {
+            let trial = match nonlinear::resolved(&self.setup, time, scale)
+                .and_then(|()| stepper.trial(time))
+            {
                 Ok(trial) => trial,
                 Err(why) => {
                     (self.next_step, self.rejected) = before;
@@ -246,10 +258,12 @@ impl RunningIn {
     pub fn end_state(&self) -> Result<State, SolveError> {
         let setup = &self.setup;
         let shape = self.end_shape.clone();
-        setup.state(
+        let mean_wear = self.samples.last().expect("t = 0 is sampled").mean_wear;
+        setup.worn_state(
             &mut setup.operator(),
             shape,
             self.end_time(),
+            mean_wear,
             Some(&self.end_contact),
             Stop::Never,
         )

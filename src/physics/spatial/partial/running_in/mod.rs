@@ -8,8 +8,14 @@
 //! complete is the zero of m(t) = min over the nodes of p_cc(U(t)), interpolated by the quadratic
 //! through the last three steps; from the first complete step on, every Fourier mode of the worn
 //! shape follows the closed form U^(t) = U^(t1) exp(-k_w (t - t1)/(A - i mu sx B)).
+//!
+//! That closed form holds for the linear wear law only. A nonlinear law (n != 1, the punch
+//! receding at k_w F(p)) is stepped on the grid through complete contact too ([`nonlinear`]), to
+//! the end of its stepping, its mean wear <W> stepped alongside; its time to complete contact is
+//! still the first zero of m(t).
 
 mod extend;
+pub mod nonlinear;
 pub mod stepper;
 
 use std::ops::ControlFlow;
@@ -22,6 +28,7 @@ use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::state::{Outputs, State};
 use crate::physics::stop::{STOPPED, Stop};
 
+pub use nonlinear::run_in_to;
 pub use stepper::{Stepper, Trial};
 
 /// The running-in is stepped over at most this many decay times 1/beta_min of the slowest
@@ -61,7 +68,8 @@ pub struct Stepping {
     /// The local error allowed per step, relative to the rms of U(0), per decay time 1/beta_min
     /// (the preset's `spatial.time_tolerance`).
     pub tolerance: f64,
-    /// beta_min [1/s]: the closed-form decay rate of the slowest harmonic.
+    /// beta_min [1/s]: the closed-form decay rate of the slowest harmonic, times F'(pbar) for a
+    /// nonlinear wear law (its rate linearised about the mean pressure).
     pub rate: f64,
     /// The first step [s].
     pub first: f64,
@@ -76,20 +84,22 @@ pub struct Stepping {
 
 impl Stepping {
     /// The stepping of `setup` with `tolerance`, from the closed-form decay rates beta of the
-    /// shape's modes ([`Setup::decay_rates`]): a first step of `tolerance`/beta_max, over at most
-    /// 100/beta_min and `MAX_STEPS` steps; None without wear.
+    /// shape's modes ([`Setup::decay_rates`]) times F'(pbar) = n (pbar/p0)^(n-1) (1 for the
+    /// linear law): a first step of `tolerance`/beta_max, over at most 100/beta_min (of the
+    /// smaller of the two rates) and `MAX_STEPS` steps; None without wear.
     pub fn of(setup: &Setup, tolerance: f64) -> Option<Stepping> {
         let rates = setup.decay_rates();
-        let fastest = rates.iter().copied().fold(0.0, f64::max);
+        let factor = setup.inputs.worn_pressure_slope(setup.inputs.mean_pressure);
+        let fastest = rates.iter().copied().fold(0.0, f64::max) * factor;
         let slowest = rates.iter().copied().fold(f64::INFINITY, f64::min);
-        if rates.is_empty() || slowest <= 0.0 || !fastest.is_finite() {
+        if rates.is_empty() || slowest <= 0.0 || !fastest.is_finite() || factor <= 0.0 {
             return None;
         }
         Some(Stepping {
             tolerance,
-            rate: slowest,
+            rate: slowest * factor,
             first: tolerance / fastest,
-            horizon: HORIZON_DECAY_TIMES / slowest,
+            horizon: HORIZON_DECAY_TIMES / (slowest * factor.min(1.0)),
             max_steps: MAX_STEPS,
             memory: SNAPSHOT_VALUES,
         })
@@ -116,6 +126,8 @@ pub struct Sample {
     /// The sum of the steps' local error estimates up to t, relative to the rms of U(0): the
     /// estimated time-stepping error of the state at t (0 at t = 0).
     pub time_error: f64,
+    /// The mean wear depth <W> [m] at t (k_w pbar t for the linear law).
+    pub mean_wear: f64,
 }
 
 /// The running-in of one setup: the stepped history, the time to complete contact, and what is
@@ -313,6 +325,14 @@ impl RunningIn {
             return setup.state(&mut op, setup.initial_shape.clone(), t, None, stop);
         }
         let end = self.end_time();
+        if t > end && !setup.inputs.linear_wear() {
+            return Err(SolveError::NoSolution(format!(
+                "the running-in of the wear law n = {} is simulated up to t = {end:.6e} s (after \
+                 {} steps); ask for t <= {end:.6e} s",
+                setup.inputs.wear_exponent,
+                self.samples.len() - 1,
+            )));
+        }
         if t > end {
             return Err(SolveError::NoSolution(format!(
                 "contact is still partial at t = {end:.6e} s, where the running-in stops (after \
@@ -340,11 +360,17 @@ impl RunningIn {
         while stepper.step < k {
             stepper.advance(self.samples[stepper.step + 1].time)?;
         }
-        let shape = if t > self.samples[k].time {
-            stepper.trial(t)?.shape
+        let (shape, mean_wear) = if t > self.samples[k].time {
+            let trial = stepper.trial(t)?;
+            if !trial.converged {
+                return Err(nonlinear::unconverged(t));
+            }
+            let samples = &self.samples[..=k];
+            let mean_wear = nonlinear::mean_wear(setup, samples, t, &trial.solution.pressure);
+            (trial.shape, mean_wear)
         } else {
-            stepper.current.clone()
+            (stepper.current.clone(), self.samples[k].mean_wear)
         };
-        setup.state(&mut op, shape, t, Some(&stepper.contact), stop)
+        setup.worn_state(&mut op, shape, t, mean_wear, Some(&stepper.contact), stop)
     }
 }

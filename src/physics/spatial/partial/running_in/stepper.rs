@@ -5,7 +5,8 @@
 //!     U_{k+1} = ((1 + w)^2 U_k - w^2 U_{k-1})/(1 + 2w) - c k_w (p_{k+1} - pbar)
 //! (Hairer, Norsett, Wanner, Solving ODEs I, section III.5, the variable-step BDF; w = 1 gives
 //! the constant-step (4 U_k - U_{k-1})/3 - (2/3) h k_w (p - pbar)). (U_{k+1}, p_{k+1}) then
-//! solves the true contact problem for U_{k+1}.
+//! solves the true contact problem for U_{k+1}. A nonlinear wear law (n != 1) replaces p - pbar by
+//! F(p) - <F(p)> and solves the step by Newton's method ([`super::nonlinear`]).
 //!
 //! The local error is estimated by comparison with a predictor (Milne's device, Hairer, Norsett,
 //! Wanner, section III.7): the quadratic through U_{k-1} at t_{k-1} and U_k at t_k with the slope
@@ -17,7 +18,8 @@
 use crate::physics::SolveError;
 use crate::physics::spatial::partial::Setup;
 use crate::physics::spatial::partial::active_set::{ContactProblem, ContactSolution, solve};
-use crate::physics::spatial::partial::operator::Operator;
+use crate::physics::spatial::partial::operator::{Diagonal, Operator};
+use crate::physics::spatial::partial::running_in::nonlinear;
 use crate::physics::stop::Stop;
 
 /// The implicit stepper at step k: t_{k-1} and U_{k-1}, t_k and U_k, its contact set and slope.
@@ -52,6 +54,9 @@ pub struct Trial {
     pub solution: ContactSolution,
     /// The mean gap [m] of the true problem for U_{k+1}.
     pub mean_gap: f64,
+    /// False when the Newton iterates of a nonlinear wear law did not converge: the step is
+    /// refused.
+    pub converged: bool,
 }
 
 impl<'a> Stepper<'a> {
@@ -98,11 +103,21 @@ impl<'a> Stepper<'a> {
                 (base, h * (1.0 + w) / d * k_w)
             }
         };
+        if !inputs.linear_wear() {
+            let step = nonlinear::step(self, &base, c)?;
+            return Ok(Trial {
+                time,
+                shape: step.shape,
+                solution: step.solution,
+                mean_gap: step.mean_gap,
+                converged: step.converged,
+            });
+        }
         let problem = ContactProblem {
             shape: &base,
             mean_pressure: pbar,
             adhesion: inputs.friction.adhesion,
-            diagonal: c,
+            diagonal: Diagonal::Uniform(c),
             stop: self.stop,
         };
         let solution = solve(&mut self.op, &problem, Some(&self.contact))?;
@@ -117,12 +132,16 @@ impl<'a> Stepper<'a> {
             shape,
             solution,
             mean_gap,
+            converged: true,
         })
     }
 
     /// The local error estimate of `trial` as a vector [m] (None without the slope U'_k).
     pub fn local_error(&self, trial: &Trial) -> Option<Vec<f64>> {
         let slope = self.slope.as_ref()?;
+        if !trial.converged {
+            return Some(vec![f64::INFINITY; slope.len()]);
+        }
         let h = trial.time - self.time;
         let u1 = &self.current;
         Some(match &self.previous {
@@ -157,14 +176,24 @@ impl<'a> Stepper<'a> {
     /// The step to `time` taken: its contact solution and mean gap [m].
     pub fn advance(&mut self, time: f64) -> Result<(ContactSolution, f64), SolveError> {
         let trial = self.trial(time)?;
+        if !trial.converged {
+            return Err(nonlinear::unconverged(time));
+        }
         let out = (trial.solution.clone(), trial.mean_gap);
         self.accept(trial);
         Ok(out)
     }
 }
 
-/// U' = -k_w (p - pbar) [m/s] for the pressure p [Pa].
-fn slope(setup: &Setup, pressure: &[f64]) -> Vec<f64> {
-    let (pbar, k_w) = (setup.inputs.mean_pressure, setup.inputs.wear_rate());
-    pressure.iter().map(|p| -k_w * (p - pbar)).collect()
+/// U' = -k_w (F(p) - <F(p)>) [m/s] for the pressure p [Pa] (F(p) = p, <F(p)> = pbar for the
+/// linear law).
+pub(super) fn slope(setup: &Setup, pressure: &[f64]) -> Vec<f64> {
+    let inputs = &setup.inputs;
+    let (pbar, k_w) = (inputs.mean_pressure, inputs.wear_rate());
+    if inputs.linear_wear() {
+        return pressure.iter().map(|p| -k_w * (p - pbar)).collect();
+    }
+    let worn: Vec<f64> = pressure.iter().map(|p| inputs.worn_pressure(*p)).collect();
+    let mean = worn.iter().sum::<f64>() / worn.len() as f64;
+    worn.iter().map(|f| -k_w * (f - mean)).collect()
 }
