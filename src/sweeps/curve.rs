@@ -11,7 +11,8 @@
 use rayon::prelude::*;
 
 use crate::physics::SolveError;
-use crate::physics::plane::Model;
+use crate::physics::plane::sweep_verdicts::holds_along;
+use crate::physics::plane::{Model, PlaneSolution};
 use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
@@ -153,8 +154,35 @@ pub fn solve_at_until(
     point::solve_until(&preset, stop).map_err(|e| SolveError::from(e).to_string())
 }
 
-/// The quantity at a point, the verdict there and the swept input's group.
-type Answer = (Result<f64, String>, Option<bool>, Option<f64>);
+/// What decides the verdict at a point: a plane solution (judged along the series,
+/// `sweep_verdicts::holds_along`), or the spatial contact's completeness.
+enum Judge {
+    Plane(Box<PlaneSolution>),
+    Spatial(bool),
+}
+
+/// The quantity at a point, what decides the verdict there and the swept input's group.
+type Answer = (Result<f64, String>, Option<Judge>, Option<f64>);
+
+/// The verdicts of one series' points, in order (`holds`, the plane's judged along the series).
+fn verdicts(judges: &[Option<&Judge>]) -> Vec<Option<bool>> {
+    let plane: Vec<Option<PlaneSolution>> = judges
+        .iter()
+        .map(|j| match j {
+            Some(Judge::Plane(s)) => Some(s.as_ref().clone()),
+            _ => None,
+        })
+        .collect();
+    let along = holds_along(&plane);
+    judges
+        .iter()
+        .zip(along)
+        .map(|(j, plane)| match j {
+            Some(Judge::Spatial(complete)) => Some(*complete),
+            _ => plane,
+        })
+        .collect()
+}
 
 /// Computes the curve; None when `stop` said so before it finished (a point being solved then
 /// ends within one step of its running-in).
@@ -172,11 +200,17 @@ pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -
         .collect();
     let answer = |solved: Result<Point, String>| -> Answer {
         match solved {
-            Ok(p) => (
-                spec.quantity.value(&p),
-                Some(holds(&p)),
-                group.and_then(|g| g.value(&p).ok()),
-            ),
+            Ok(p) => {
+                let judge = match &p {
+                    Point::Plane(pp) => Judge::Plane(Box::new(pp.solution.clone())),
+                    Point::Spatial(sp) => Judge::Spatial(sp.result.contact.complete),
+                };
+                (
+                    spec.quantity.value(&p),
+                    Some(judge),
+                    group.and_then(|g| g.value(&p).ok()),
+                )
+            }
             Err(why) => (Err(why), None, None),
         }
     };
@@ -207,7 +241,7 @@ pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -
     let mut series = Vec::new();
     for (m, model) in models.iter().enumerate() {
         let own = &answers[m * x.len()..(m + 1) * x.len()];
-        let holds: Vec<Option<bool>> = own.iter().map(|a| a.1).collect();
+        let holds = verdicts(&own.iter().map(|a| a.1.as_ref()).collect::<Vec<_>>());
         let changes = changes(preset, &spec.axis, &x, &holds, *model, stop)?;
         series.push(Series {
             model: *model,

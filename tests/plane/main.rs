@@ -21,4 +21,5 @@ mod plane_validity;
 mod plane_wide;
 mod plane_yield;
 mod shape_validity;
+mod sweep_verdicts;
 mod validity_study;

@@ -26,6 +26,7 @@ pub mod spline;
 pub mod strip;
 pub mod strip_check;
 pub mod sweep;
+pub mod sweep_verdicts;
 pub mod validity;
 pub mod wide;
 pub mod yield_onset;

@@ -3,6 +3,7 @@
 //! the study's estimates of `validity` (docs/models.md, "Validity").
 
 use crate::phrase::Phrase;
+use crate::physics::SolveError;
 use crate::physics::plane::criteria::MU_STAR_FLOOR;
 use crate::physics::plane::validity::{Aspect, Deviation, Reason, Validity, estimate, percentages};
 use crate::physics::plane::{Model, PlaneSolution, solve};
@@ -32,6 +33,22 @@ pub enum StripCheck {
 /// The shown solution against the strip model: measured when the strip model is cheap (a contact
 /// at most CHEAP_STRIP_WIDTH thicknesses wide), else estimated by the study's formulas.
 pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
+    measured_with(sol, || solve(&sol.inputs, Model::Strip))
+}
+
+/// Whether `strip_check` runs the strip model for this solution (a wide or narrow model on a
+/// strip, a contact at most CHEAP_STRIP_WIDTH thicknesses wide).
+fn runs_strip(sol: &PlaneSolution) -> bool {
+    let h = sol.inputs.material.thickness;
+    sol.model != Model::Strip && h.is_finite() && sol.contact_width() / h <= CHEAP_STRIP_WIDTH
+}
+
+/// `strip_check` with the strip solution at the same inputs from `strip` (called only where
+/// `runs_strip`).
+fn measured_with(
+    sol: &PlaneSolution,
+    strip: impl FnOnce() -> Result<PlaneSolution, SolveError>,
+) -> StripCheck {
     let h = sol.inputs.material.thickness;
     let lambda = sol.contact_width() / h;
     let estimated = |why: String| StripCheck::Estimated {
@@ -49,7 +66,7 @@ pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
             "the exact strip model is not run beyond (a+b)/h = {CHEAP_STRIP_WIDTH:.0}"
         ));
     }
-    let strip = match solve(&sol.inputs, Model::Strip) {
+    let strip = match strip() {
         Ok(strip) => strip,
         Err(e) => return estimated(format!("the exact strip model has no answer here: {e}")),
     };
@@ -145,10 +162,16 @@ impl StripCheck {
 /// the general strip solver's (other shapes and laws) up to seconds.
 pub fn verdict(sol: &PlaneSolution) -> Validity {
     let estimated = estimate(sol);
-    if estimated.ok || !sol.inputs.is_classical() {
+    if !measures(sol, &estimated) {
         return estimated;
     }
     judged(&estimated, &strip_check(sol), sol.model)
+}
+
+/// Whether `verdict` measures the solution against the strip model: the estimate doubts it, the
+/// inputs are the parabola's with the linear laws, and the strip model is cheap there.
+pub(crate) fn measures(sol: &PlaneSolution, estimated: &Validity) -> bool {
+    !estimated.ok && sol.inputs.is_classical() && runs_strip(sol)
 }
 
 /// The verdict on an operating point whose model was checked against the strip model (`check`

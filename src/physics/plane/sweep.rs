@@ -5,7 +5,7 @@ use serde::Serialize;
 use crate::physics::plane::energy::wear_loss;
 use crate::physics::plane::wide::{self, WideConstants};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, solve_narrow, strip};
-use crate::physics::plane::{checks, general, scope, sharp, strip_check};
+use crate::physics::plane::{checks, general, scope, sharp, sweep_verdicts};
 use crate::physics::{SweepRange, limits};
 
 /// The sweep; entries are None where the model has no solution at that load.
@@ -21,7 +21,8 @@ pub struct Sweep {
     pub b: Vec<Option<f64>>,
     /// Q2 [N/m].
     pub normal_force: Vec<Option<f64>>,
-    /// Whether the model holds at the point (`strip_check::verdict`, as at the operating point).
+    /// Whether the model holds at the point (`strip_check::verdict`, as at the operating point;
+    /// measured along the sweep by `sweep_verdicts::holds_along`).
     pub valid: Vec<Option<bool>>,
 }
 
@@ -114,10 +115,7 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
         a: pick(|s| s.a),
         b: pick(|s| s.b),
         normal_force: pick(|s| s.normal_force),
-        valid: solutions
-            .iter()
-            .map(|s| s.as_ref().map(|s| strip_check::verdict(s).ok))
-            .collect(),
+        valid: sweep_verdicts::holds_along(solutions),
         load,
     }
 }
