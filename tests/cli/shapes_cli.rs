@@ -179,3 +179,39 @@ fn sharp_corners_are_answered_with_null_energies_and_the_reason() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("singular at both corners"), "{err}");
 }
+
+#[test]
+fn a_repeated_x_in_a_profile_is_refused_at_its_row() {
+    let csv = "x [m],g [m]\n-1e-3,1e-6\n0,0\n0,1e-7\n1e-3,1e-6\n";
+    let (code, _, err) = solve(PRESET, csv, &[]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("worn.csv:4: x = 0 m does not exceed the previous row's x = 0 m"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_tenth_power_punch_of_a_tiny_radius_is_answered_in_words_in_bounded_time() {
+    // g = (R/n)(|x|/R)^n with n = 10 and R = 1 nm: the slope (|x|/R)^9 passes 1 within 1 nm of
+    // the tip, so no contact that carries 1e4 N/m keeps linear elasticity's small slopes; every
+    // model must end in words (exit 2 or 3), never a panic, a NaN or a hang (each run is killed
+    // after `solve`'s 60 s)
+    let power = PRESET.replace(
+        "shape = { kind = \"table\", file = \"worn.csv\" }",
+        "shape = { kind = \"power\", radius = 1.0e-9, exponent = 10.0 }",
+    );
+    for model in ["wide", "narrow", "strip"] {
+        let preset = power.replace("model = \"narrow\"", &format!("model = \"{model}\""));
+        let start = std::time::Instant::now();
+        let (code, out, err) = solve(&preset, "", &[]);
+        let took = start.elapsed();
+        assert!(matches!(code, Some(2 | 3)), "{model}: {code:?} {out} {err}");
+        assert!(
+            !err.contains("panicked") && !err.contains("NaN"),
+            "{model}: {err}"
+        );
+        assert!(err.trim().len() > 20, "{model}: {err}");
+        assert!(took < Duration::from_secs(30), "{model}: {took:?}");
+    }
+}

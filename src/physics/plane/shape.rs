@@ -250,6 +250,11 @@ pub trait Punch {
     /// The points [m] where g'' jumps or is singular (the tip of a power punch, the ends of a
     /// flat face, the knots of a table): quadratures are split there.
     fn kinks(&self) -> Vec<f64>;
+    /// Whether g' is a polynomial in x (a parabola's), which the collocation takes exactly at
+    /// its points.
+    fn slope_is_polynomial(&self) -> bool {
+        false
+    }
     /// The x range [m] the shape is known on (a measured profile's); None when unbounded.
     fn known_range(&self) -> Option<(f64, f64)>;
 }
@@ -265,6 +270,10 @@ impl Punch for Shape {
 
     fn kinks(&self) -> Vec<f64> {
         Shape::kinks(self)
+    }
+
+    fn slope_is_polynomial(&self) -> bool {
+        matches!(self, Shape::Parabola { .. })
     }
 
     fn known_range(&self) -> Option<(f64, f64)> {

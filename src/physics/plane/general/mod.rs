@@ -9,7 +9,9 @@
 //! collocation is solved by Newton (`system`), then the width by Brent's method on P (`width`).
 
 pub mod answer;
+pub mod nonlinear;
 pub mod pressure;
+pub mod projection;
 pub mod system;
 pub mod width;
 

@@ -13,12 +13,13 @@
 //! of the nonlinear terms (Pi and F are piecewise smooth), each row divided by its largest entry
 //! before LU, steps halved while the residual grows.
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::physics::plane::general::Problem;
 use crate::physics::plane::general::pressure::Pressure;
+use crate::physics::plane::general::projection::SlopeProjection;
+use crate::physics::plane::general::{Problem, nonlinear};
 use crate::physics::plane::strip::collocation::Rules;
 
 /// Newton iterations at one width.
@@ -38,6 +39,8 @@ pub struct Discretisation {
     cauchy: DMatrix<f64>,
     /// w(xi_k) l_i(xi_k): q2 at xi_k is this times phi.
     to_points: DMatrix<f64>,
+    /// The projection of a slope that is not a polynomial, built when first needed.
+    projection: OnceLock<SlopeProjection>,
 }
 
 impl Discretisation {
@@ -57,7 +60,24 @@ impl Discretisation {
             rules,
             cauchy,
             to_points,
+            projection: OnceLock::new(),
         }
+    }
+
+    /// g' and dg'/ds at the collocation points for the shift s at width l: the values there, or
+    /// where g' is not a polynomial its projection (`projection`), split at the punch's kinks.
+    fn slopes(&self, problem: &Problem, s: f64, l: f64) -> [Vec<f64>; 2] {
+        let (half, shape) = (0.5 * l, problem.shape);
+        let at = |t: f64| {
+            let x = (s + t) * half;
+            [shape.slope(x), shape.curvature(x, 1e-7 * l) * half]
+        };
+        if shape.slope_is_polynomial() {
+            let values: Vec<[f64; 2]> = self.rules.points().iter().map(|&t| at(t)).collect();
+            return [0, 1].map(|j| values.iter().map(|v| v[j]).collect());
+        }
+        let kinks: Vec<f64> = shape.kinks().iter().map(|x| x / half - s).collect();
+        self.projection().project(&kinks, at)
     }
 
     /// The number of nodes N.
@@ -73,6 +93,12 @@ impl Discretisation {
     /// The rules.
     pub fn rules(&self) -> &Arc<Rules> {
         &self.rules
+    }
+
+    /// The projection onto the polynomials through the collocation points.
+    pub fn projection(&self) -> &SlopeProjection {
+        self.projection
+            .get_or_init(|| SlopeProjection::new(self.rules.points(), self.rules.theta()))
     }
 }
 
@@ -153,9 +179,7 @@ fn residual(
     jacobian: Option<&mut DMatrix<f64>>,
 ) -> DVector<f64> {
     let n = d.len();
-    let (m, half) = (problem.m(), 0.5 * l);
-    let (friction, wear) = (&problem.friction, &problem.wear);
-    let pi_chi = std::f64::consts::PI * problem.material.chi();
+    let m = problem.m();
     let weights = d.rules.weights();
     let phi = DVector::from_iterator(n, u.y.iter().zip(weights).map(|(y, w)| m * y / w));
     let q = &d.to_points * &phi;
@@ -163,18 +187,17 @@ fn residual(
     let pressure = (c12 != 0.0).then(|| u.pressure(d, problem, l));
     let q1 = pressure.as_ref().map_or(0.0, |p| problem.friction_force(p));
     let constant = c12 * q1 / m;
-    let (k1, mu, tau0) = (
-        problem.linear_wear(),
-        friction.coefficient(),
-        friction.adhesion(),
-    );
-    let points = d.rules.points();
+    let [slope, slope_ds] = d.slopes(problem, u.s, l);
+    let (nl, dnl) = if problem.friction.shear_strength.is_finite() {
+        let p = u.pressure(d, problem, l);
+        let parts = (d.rules.bary(), d.rules.weights());
+        nonlinear::projected(problem, d.projection(), &p, parts)
+    } else {
+        nonlinear::at_points(problem, &d.to_points, weights, &q)
+    };
     let mut r = &at.linear * &u.y + &at.constant;
     for k in 0..=n {
-        let x = (u.s + points[k]) * half;
-        let nl =
-            pi_chi / m * (friction.shear(q[k]) - mu * q[k] - tau0) - (wear.rate(q[k]) - k1 * q[k]);
-        r[k] += nl + constant + problem.shape.slope(x);
+        r[k] += nl[k] + constant + slope[k];
     }
     if let Some(jac) = jacobian {
         jac.view_mut((0, 0), (n + 1, n)).copy_from(&at.linear);
@@ -182,16 +205,14 @@ fn residual(
             .as_ref()
             .map(|p| problem.friction_force_gradient(p, d));
         for k in 0..=n {
-            let dnl = pi_chi / m * (friction.shear_slope(q[k]) - mu) - (wear.rate_slope(q[k]) - k1);
             for i in 0..n {
-                let mut entry = jac[(k, i)] + dnl * d.to_points[(k, i)] * m / weights[i];
+                let mut entry = jac[(k, i)] + dnl[(k, i)];
                 if let Some(g) = &dq1 {
                     entry += c12 / m * g[i];
                 }
                 jac[(k, i)] = entry;
             }
-            let x = (u.s + points[k]) * half;
-            jac[(k, n)] = problem.shape.curvature(x, 1e-7 * l) * half;
+            jac[(k, n)] = slope_ds[k];
         }
     }
     r
