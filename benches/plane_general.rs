@@ -1,8 +1,10 @@
 //! The general plane solver (docs/physics/plane-general.md): one operating point of the wide model
 //! for a power punch (n = 3) with the wear law n = 2 and a shear cap, on the half-plane and on a
-//! 1 mm strip, and one with the linear laws on a flat punch with rounded edges. Case: E = 1e10 Pa,
-//! nu = 0.3, R = 0.05 m, mu = 0.3, tau0 = 1e5 Pa, k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m.
-//! Measured in CPU time (see benches/strip.rs).
+//! 1 mm strip, and one with the linear laws on a flat punch with rounded edges; the same power
+//! punch on the narrow model (a 0.1 mm layer, with the cap) and on the exact strip (0.1 mm, no
+//! cap: the strip refuses one; (a+b)/h = 16, printed). Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m,
+//! mu = 0.3, tau0 = 1e5 Pa, k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m. Measured in CPU time (see
+//! benches/strip.rs).
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -50,16 +52,37 @@ fn operating_points(c: &mut Criterion<CpuTime>) {
         (
             "power_capped_half_plane",
             inputs(f64::INFINITY, power.clone(), 2.0, 2e6),
+            Model::Wide,
         ),
-        ("power_capped_1mm", inputs(1e-3, power, 2.0, 2e6)),
+        (
+            "power_capped_1mm",
+            inputs(1e-3, power.clone(), 2.0, 2e6),
+            Model::Wide,
+        ),
         (
             "rounded_flat_half_plane",
             inputs(f64::INFINITY, flat, 1.0, f64::INFINITY),
+            Model::Wide,
+        ),
+        (
+            "power_capped_narrow",
+            inputs(1e-4, power.clone(), 2.0, 2e6),
+            Model::Narrow,
+        ),
+        (
+            "power_strip_0.1mm",
+            inputs(1e-4, power, 2.0, f64::INFINITY),
+            Model::Strip,
         ),
     ];
-    for (name, at) in cases {
+    for (name, at, model) in cases {
+        let once = solve(&at, model).unwrap();
+        println!(
+            "general_point/{name}: (a+b)/h = {:.2}",
+            once.contact_width() / at.material.thickness
+        );
         c.bench_function(&format!("general_point/{name}"), |b| {
-            b.iter(|| solve(black_box(&at), Model::Wide).unwrap())
+            b.iter(|| solve(black_box(&at), model).unwrap())
         });
     }
 }
