@@ -12,7 +12,7 @@ use crate::physics::spatial::{validate_grid, validate_harmonics};
 use crate::preset::params::{Access, PARAMS, Param};
 use crate::preset::surface_set::{SURFACE_PREFIX, grid_beside_map};
 use crate::preset::{Preset, Problem};
-use crate::preset::{law_rules, shape_rows};
+use crate::preset::{law_rules, shape_rows, surface_rows};
 use crate::units::parse_si;
 
 const HARMONIC_PREFIX: &str = "spatial.harmonics.";
@@ -134,8 +134,16 @@ fn shown(p: &Param, preset: &Preset) -> bool {
         "wear.archard_coefficient" => preset.strength.hardness.is_some(),
         // a height map is solved on its own grid
         "spatial.grid" => preset.spatial.surface.is_none(),
+        _ if p.surface_name().is_some() => {
+            surface_rows::applies(preset, p.surface_name().unwrap_or_default()).is_ok()
+        }
         key => shape_rows::applies(preset, key).is_ok(),
     }
+}
+
+/// The last part of a surface's key (`hurst`).
+fn surface_name(key: Key) -> &'static str {
+    key.param().surface_name().unwrap_or_default()
 }
 
 /// The refusal of a value that the preset file gives and nothing here sets.
@@ -177,8 +185,19 @@ impl Preset {
             Access::Number { get, .. } => get(self),
             Access::Harmonic { get, .. } => get(&self.spatial.harmonics[self.harmonic_of(key)?]),
             Access::Choice { get, .. } => get(self) as f64,
+            Access::Surface { .. } => surface_rows::value(self, surface_name(key))?,
             Access::Fixed { .. } => return Err(fixed(key)),
         })
+    }
+
+    /// The text of a value that is shown and not set (a measured profile's file and range, a
+    /// height-map file's name, grid and lengths); None for a value the form sets.
+    pub fn fixed_text(&self, key: Key) -> Option<String> {
+        match key.param().access {
+            Access::Fixed { show } => Some(show(self)),
+            Access::Surface { .. } => surface_rows::text(self, surface_name(key)),
+            _ => None,
+        }
     }
 
     /// Writes one value checked against its own limit (a choice by index), without the rules
@@ -203,6 +222,7 @@ impl Preset {
                 }
                 set(self, value as usize)?;
             }
+            Access::Surface { .. } => surface_rows::set(self, surface_name(key), value)?,
             Access::Fixed { .. } => return Err(fixed(key)),
         }
         Ok(())
@@ -313,6 +333,9 @@ impl Preset {
                  with a hardness) first"
                     .into(),
             );
+        }
+        if let Some(name) = key.param().surface_name() {
+            surface_rows::applies(self, name)?;
         }
         shape_rows::applies(self, key.param().key)?;
         Ok(key)

@@ -27,6 +27,7 @@ mod shape_rows;
 mod spatial_check;
 mod surface_file;
 mod surface_key;
+mod surface_rows;
 mod surface_set;
 mod text_edit;
 mod wording;
@@ -57,6 +58,7 @@ pub use params::{Access, PARAMS, Param};
 pub use plausible::warnings;
 pub use save_edited::{Origin, save_edited, saved_text, with_data_files_of};
 pub use save_path::{SaveTarget, resolve_save_path};
+pub use surface_rows::from_file as surface_from_file;
 
 /// The schema version this build reads and writes.
 pub const SCHEMA: i64 = 1;

@@ -11,7 +11,8 @@ use crate::physics::Spacing;
 use crate::physics::limits::{self, Limit};
 use crate::physics::plane::Model;
 use crate::physics::spatial::harmonic::Harmonic;
-use crate::preset::{Preset, Problem, material_rows, shape_rows};
+use crate::physics::spatial::surface;
+use crate::preset::{Preset, Problem, material_rows, shape_rows, surface_rows};
 
 /// How a parameter's value is read and written.
 #[derive(Clone, Copy, Debug)]
@@ -47,6 +48,13 @@ pub enum Access {
         /// Writes the index (< names.len()); Err says why that choice cannot be made here.
         set: fn(&mut Preset, usize) -> Result<(), String>,
     },
+    /// A key of the punch's height map (`spatial.surface.NAME`, `surface_rows`): a generated
+    /// surface's number, set by generating the surface again with the checks of `--set`; a
+    /// height-map file's name, grid and lengths, shown and not set.
+    Surface {
+        /// A typical magnitude: where a nudge from 0 starts.
+        typical: f64,
+    },
     /// A text the preset file gives that is shown but cannot be set here (a measured profile's
     /// file and x range).
     Fixed {
@@ -76,7 +84,7 @@ impl Param {
     pub fn limit(&self) -> Option<&Limit> {
         match &self.access {
             Access::Number { limit, .. } | Access::Harmonic { limit, .. } => Some(limit),
-            Access::Choice { .. } | Access::Fixed { .. } => None,
+            Access::Choice { .. } | Access::Fixed { .. } | Access::Surface { .. } => None,
         }
     }
 
@@ -84,7 +92,9 @@ impl Param {
     /// from 0 starts.
     pub fn typical(&self) -> Option<f64> {
         match self.access {
-            Access::Number { typical, .. } | Access::Harmonic { typical, .. } => Some(typical),
+            Access::Number { typical, .. }
+            | Access::Harmonic { typical, .. }
+            | Access::Surface { typical } => Some(typical),
             Access::Choice { .. } | Access::Fixed { .. } => None,
         }
     }
@@ -105,9 +115,21 @@ impl Param {
         }
     }
 
-    /// True for a number that is a count (points, grid).
+    /// True for a number that is a count (points, grid) or a surface's seed.
     pub fn is_whole(&self) -> bool {
-        self.limit().is_some_and(Limit::is_whole)
+        match self.access {
+            Access::Surface { .. } => matches!(self.surface_name(), Some("grid" | "seed")),
+            _ => self.limit().is_some_and(Limit::is_whole),
+        }
+    }
+
+    /// The last part of a surface's key (`hurst` of `spatial.surface.hurst`); None for the
+    /// other parameters.
+    pub fn surface_name(&self) -> Option<&'static str> {
+        match self.access {
+            Access::Surface { .. } => self.key.strip_prefix(surface_rows::PREFIX),
+            _ => None,
+        }
     }
 
     /// The problem it belongs to, from its section (`plane.`, `spatial.`); None for both.
@@ -126,6 +148,9 @@ impl Param {
 
     /// What may be written, in words: the limit's text, or the choices.
     pub fn allowed(&self) -> String {
+        if let Some(name) = self.surface_name() {
+            return surface::allowed(name).into();
+        }
         match (self.limit(), self.choices()) {
             (Some(limit), _) => limit.allowed.to_string(),
             (None, Some(names)) => format!("one of {}", names.join(", ")),
@@ -212,6 +237,21 @@ const fn fixed(
     }
 }
 
+const fn rough(
+    key: &'static str,
+    [symbol, label]: [&'static str; 2],
+    unit: &'static str,
+    typical: f64,
+) -> Param {
+    Param {
+        key,
+        symbol,
+        label,
+        unit,
+        access: Access::Surface { typical },
+    }
+}
+
 const fn choice(
     key: &'static str,
     [symbol, label]: [&'static str; 2],
@@ -267,6 +307,16 @@ pub const PARAMS: &[Param] = &[
     number("spatial.sweep.pressure_max", ["pbar max", "largest mean pressure of the mu*(pbar) curve"], "Pa", limits::MEAN_PRESSURE, 1e8, |p| p.spatial.sweep.max, |p, v| p.spatial.sweep.max = v),
     number("spatial.sweep.points", ["points", "points of the mu*(pbar) curve"], "", limits::SWEEP_POINTS, 60.0, |p| p.spatial.sweep.points as f64, |p, v| p.spatial.sweep.points = v as usize),
     choice("spatial.sweep.scale", ["scale", "spacing of the mu*(pbar) curve"], SCALES, |p| scale_index(p.spatial.sweep.spacing), |p, i| { p.spatial.sweep.spacing = scale(i); Ok(()) }),
+    rough("spatial.surface.file", ["file", "the height map's file"], "", 0.0),
+    rough("spatial.surface.hurst", ["H", "Hurst exponent of the self-affine spectrum"], "", 0.8),
+    rough("spatial.surface.rms_height", ["h rms", "rms height the surface is scaled to"], "m", 1e-6),
+    rough("spatial.surface.rms_slope", ["slope", "rms slope along x the surface is scaled to"], "", 0.1),
+    rough("spatial.surface.rolloff_wavelength", ["lam_r", "roll-off wavelength (flat spectrum above it)"], "m", 1e-4),
+    rough("spatial.surface.cutoff_wavelength", ["lam_s", "cutoff wavelength (no shorter waves)"], "m", 1e-5),
+    rough("spatial.surface.length_x", ["Lx", "cell length along the sliding line"], "m", 1e-3),
+    rough("spatial.surface.length_y", ["Ly", "cell width across it (0: a profile)"], "m", 1e-3),
+    rough("spatial.surface.grid", ["grid", "nodes per side of the surface's grid"], "", 256.0),
+    rough("spatial.surface.seed", ["seed", "seed of the random phases"], "", 1.0),
     wave("spatial.harmonics.N.amplitude", ["A", "amplitude of the harmonic"], "m", limits::AMPLITUDE, 1e-7, |h| h.amplitude, |h, v| h.amplitude = v),
     wave("spatial.harmonics.N.wavenumber_x", ["wx", "wavenumber along the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_x, |h, v| h.wavenumber_x = v),
     wave("spatial.harmonics.N.wavenumber_y", ["wy", "wavenumber across the sliding line"], "rad/m", limits::WAVENUMBER, 1e3, |h| h.wavenumber_y, |h, v| h.wavenumber_y = v),

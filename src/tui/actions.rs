@@ -49,7 +49,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             app.ui.expanded = false;
             let row = app.row();
             match row.param().choices() {
-                None if row.param().fixed().is_some() => {
+                None if app.doc.preset.fixed_text(row).is_some() => {
                     if let Err(why) = form::set(&app.doc.preset, &row, 0.0) {
                         app.complain(why);
                     }
@@ -129,6 +129,17 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
             surface_keys::no_harmonics(app)
         }
         Action::AddHarmonic => add_harmonic(app),
+        Action::NewSeed => match surface_keys::new_seed(&app.doc.preset) {
+            Ok((next, change, said)) => {
+                let commands = apply(app, next, change);
+                app.say(said);
+                commands
+            }
+            Err(why) => {
+                app.complain(why);
+                Vec::new()
+            }
+        },
         Action::RemoveHarmonic => remove_harmonic(app),
         Action::Open => vec![Command::ListPresets],
         Action::Save => {

@@ -3,7 +3,7 @@
 //! only the explorer needs: how Left/Right nudge each parameter. A new parameter is one entry of
 //! the registry and one of `STEPS`.
 
-use crate::preset::{Key, Preset, Problem};
+use crate::preset::{Key, Preset, Problem, surface_from_file};
 use crate::units::{clean, format_si};
 
 /// How Left/Right change a number.
@@ -23,7 +23,7 @@ pub enum Step {
 
 /// The nudge of each parameter, by preset key (`N` for the harmonic's index).
 #[rustfmt::skip]
-pub const STEPS: [(&str, Step); 41] = [
+pub const STEPS: [(&str, Step); 51] = [
     ("material.name", Step::Choice),
     ("material.youngs_modulus", Step::Log { seed: 1e9 }),
     ("material.poisson_ratio", Step::Linear { step: 0.01 }),
@@ -60,6 +60,16 @@ pub const STEPS: [(&str, Step); 41] = [
     ("spatial.sweep.pressure_max", Step::Log { seed: 1e8 }),
     ("spatial.sweep.points", Step::Linear { step: 10.0 }),
     ("spatial.sweep.scale", Step::Choice),
+    ("spatial.surface.file", Step::Fixed),
+    ("spatial.surface.hurst", Step::Linear { step: 0.05 }),
+    ("spatial.surface.rms_height", Step::Log { seed: 1e-6 }),
+    ("spatial.surface.rms_slope", Step::Log { seed: 0.1 }),
+    ("spatial.surface.rolloff_wavelength", Step::Log { seed: 1e-4 }),
+    ("spatial.surface.cutoff_wavelength", Step::Log { seed: 1e-5 }),
+    ("spatial.surface.length_x", Step::Log { seed: 1e-3 }),
+    ("spatial.surface.length_y", Step::Log { seed: 1e-3 }),
+    ("spatial.surface.grid", Step::Linear { step: 8.0 }),
+    ("spatial.surface.seed", Step::Linear { step: 1.0 }),
     ("spatial.harmonics.N.amplitude", Step::Log { seed: 1e-7 }),
     ("spatial.harmonics.N.wavenumber_x", Step::Log { seed: 1e3 }),
     ("spatial.harmonics.N.wavenumber_y", Step::Log { seed: 1e3 }),
@@ -70,10 +80,18 @@ pub const STEPS: [(&str, Step); 41] = [
 /// One row of the form: a parameter of the preset.
 pub type Row = Key;
 
-/// The heading a row stands under ("harmonic 2" for a harmonic's rows).
-pub fn heading(row: &Row) -> String {
+/// The heading a row stands under ("harmonic 2" for a harmonic's rows; a height map's rows say
+/// where the surface comes from, and that a file's are not set here).
+pub fn heading(preset: &Preset, row: &Row) -> String {
     if let Some(n) = row.harmonic_index() {
         return format!("harmonic {}", n + 1);
+    }
+    if row.param().surface_name().is_some() {
+        return if surface_from_file(preset) {
+            "measured surface (from the file)".into()
+        } else {
+            "generated rough surface".into()
+        };
     }
     match row.param().key.split('.').next().unwrap_or("") {
         "plane" => "punch and load".into(),
@@ -103,8 +121,8 @@ pub fn get(preset: &Preset, row: &Row) -> f64 {
 /// The row's value as the form shows it: SI prefixes, engineering notation past them.
 pub fn show(preset: &Preset, row: &Row) -> String {
     let param = row.param();
-    if let Some(text) = param.fixed() {
-        return text(preset);
+    if let Some(text) = preset.fixed_text(*row) {
+        return text;
     }
     if not_given(preset, param.key) {
         return "none".into();
@@ -134,8 +152,12 @@ pub fn differences(from: &Preset, to: &Preset) -> Vec<String> {
     let mut out: Vec<String> = rows(to)
         .iter()
         .filter(|r| r.param().key != "spatial.time")
-        // a number of another kind of punch than before: the kind's row says what changed
-        .filter(|r| !r.param().key.starts_with("plane.shape.") || before.contains(r))
+        // a number of another kind of punch or surface than before: the kind's row, or the
+        // preset's name, says what changed
+        .filter(|r| {
+            !(r.param().key.starts_with("plane.shape.") || r.param().surface_name().is_some())
+                || before.contains(r)
+        })
         .filter(|r| r.param().key != "plane.radius" || before.contains(r))
         .filter(|r| r.harmonic_index().is_none_or(|n| n < was.len()))
         .filter(|r| show(from, r) != show(to, r))
@@ -219,7 +241,7 @@ pub fn nudged(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
 }
 
 fn nudged_raw(preset: &Preset, row: &Row, up: bool, large: bool) -> f64 {
-    if step(row) == Step::Fixed {
+    if step(row) == Step::Fixed || preset.fixed_text(*row).is_some() {
         // nothing to nudge: setting it says why
         return 0.0;
     }

@@ -3,6 +3,8 @@
 //! the `?` help, the footers and docs/guide.md's key table are all drawn from these tables.
 
 use crate::preset::Problem;
+
+pub use crate::tui::key_scope::{Open, Scope};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::tui::view::theme::RenderOptions;
@@ -65,6 +67,8 @@ pub enum Action {
     CycleModel,
     /// Play or pause time (spatial).
     PlayPause,
+    /// Draw a new seed for the generated surface (spatial).
+    NewSeed,
     /// Add a harmonic (spatial).
     AddHarmonic,
     /// Remove the selected harmonic (spatial).
@@ -177,16 +181,21 @@ pub struct Binding {
     /// items take their shorter word when the footer does not fit (0: never); no keys: none
     /// (the help and docs/guide.md still list the binding).
     pub footer: (&'static str, &'static str, &'static str, u8),
-    /// The problem the binding applies to (None: both).
-    pub only: Option<Problem>,
+    /// Where the binding applies (the footer shows it there only; elsewhere the key says why it
+    /// does nothing).
+    pub only: Scope,
 }
+
+const ALL: Scope = Scope::All;
+const PLANE: Scope = Scope::Problem(Problem::Plane);
+const SPATIAL: Scope = Scope::Problem(Problem::Spatial);
 
 const fn binding(
     keys: &'static [(Key, Action)],
     names: &'static str,
     help: &'static str,
     footer: (&'static str, &'static str, &'static str, u8),
-    only: Option<Problem>,
+    only: Scope,
 ) -> Binding {
     Binding {
         keys,
@@ -203,12 +212,12 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 23] = [
+pub const BINDINGS: [Binding; 24] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
         "Up/Down, k/j", "choose a field",
-        ("↑↓", "field", "", 2), None,
+        ("↑↓", "field", "", 2), ALL,
     ),
     binding(
         &[(key(KeyCode::Left), nudge(false, false)), (ch('h'), nudge(false, false)),
@@ -216,115 +225,120 @@ pub const BINDINGS: [Binding; 23] = [
           (shift(KeyCode::Left), nudge(false, true)), (ch('H'), nudge(false, true)),
           (shift(KeyCode::Right), nudge(true, true)), (ch('L'), nudge(true, true))],
         "Left/Right, h/l", "nudge the value (x1.1 or a fixed step; Shift or H/L: x2 or ten steps)",
-        ("←→", "nudge (⇧ more)", "nudge", 1), None,
+        ("←→", "nudge (⇧ more)", "nudge", 1), ALL,
     ),
     binding(
         &[(key(KeyCode::Enter), Action::Edit)],
         "Enter", "type a value (3e9, 3 GPa, 50mm, inf) or pick a choice; Esc cancels",
-        ("⏎", "type", "", 4), None,
+        ("⏎", "type", "", 4), ALL,
     ),
     binding(
         &[(key(KeyCode::Tab), Action::NextChart), (key(KeyCode::BackTab), Action::PrevChart),
           (shift(KeyCode::BackTab), Action::PrevChart)],
         "Tab, Shift-Tab", "next / previous chart",
-        ("Tab", "chart", "", 9), None,
+        ("Tab", "chart", "", 9), ALL,
     ),
     binding(
         &[(ch('p'), Action::SwitchProblem)],
         "p", "switch plane / spatial problem (a preset holds both)",
-        ("p", "problem", "", 8), None,
+        ("p", "problem", "", 8), ALL,
     ),
     binding(
         &[(ch('m'), Action::CycleModel)],
         "m", "cycle the plane model (wide, narrow, strip)",
-        ("m", "model", "", 6), Some(Problem::Plane),
+        ("m", "model", "", 6), PLANE,
     ),
     binding(
         &[(ch(' '), Action::PlayPause)],
         "space", "play / pause time",
-        ("space", "play", "", 6), Some(Problem::Spatial),
+        ("space", "play", "", 6), SPATIAL,
     ),
     binding(
         &[(ch('+'), Action::AddHarmonic), (ch('-'), Action::RemoveHarmonic)],
         "+ / -", "add a harmonic / remove the selected one, or the last",
-        ("+/-", "harmonic", "", 3), Some(Problem::Spatial),
+        ("+/-", "harmonic", "", 3), SPATIAL,
+    ),
+    binding(
+        &[(ch('r'), Action::NewSeed)],
+        "r", "a new seed for the generated surface: the same spectrum and rms, other random phases (u undoes)",
+        ("r", "seed", "", 3), Scope::GeneratedSurface,
     ),
     binding(
         &[(ch('x'), Action::Cursor), (ch('['), Action::MoveCursor(CursorMove::Back)),
           (ch(']'), Action::MoveCursor(CursorMove::Forward)), (ch('{'), Action::MoveCursor(CursorMove::LongBack)),
           (ch('}'), Action::MoveCursor(CursorMove::LongForward)), (ch('g'), Action::GoTo)],
         "x, [ ], { }, g", "cursor readout: x shows or hides a cursor on the chart, [ ] move it a data point, { } ten, g sends it to an x you type in the x axis' unit (150um, 20 kN/m; a plain number is in the unit itself: m, N/m); the status gives x and every curve's value there, '(interpolated)' after x where the cursor is between the data points of a curve it reads; on the pressure map x shows a cell cursor X at the map's middle, [ ] move it a grid point along x, { } along y, and the status gives x, y and p there (it stays while time plays, p follows)",
-        ("x", "cursor", "", 7), None,
+        ("x", "cursor", "", 7), ALL,
     ),
     binding(
         &[(ch('c'), Action::Pin), (ch('C'), Action::ClearPins)],
         "c, C", "pin the chart's curves to compare with later edits (up to three, drawn dim with their number, named by what differs); C clears the chart's pins",
-        ("c/C", "pin", "", 7), None,
+        ("c/C", "pin", "", 7), ALL,
     ),
     binding(
         &[(ch('f'), Action::Expand)],
         "f", "give the chart the whole screen (the status stays); f again gives it back",
-        ("f", "full", "", 7), None,
+        ("f", "full", "", 7), ALL,
     ),
     binding(
         &[(ch('y'), Action::LogY)],
         "y", "toggle a log y axis (symmetric log, linear near zero, where values have both signs)",
-        ("y", "log", "", 7), None,
+        ("y", "log", "", 7), ALL,
     ),
     binding(
         &[(ch('v'), Action::Sweep)],
         "v", "sweep chart: a quantity (mu*, mu* - mu, a+b, theta, ...) against any input over a range you type (log or linear); the other models overlaid, dim where a model's validity check fails (spatial: where the contact is partial), the change marked on the x axis",
-        ("v", "sweep", "", 6), None,
+        ("v", "sweep", "", 6), ALL,
     ),
     binding(
         &[(ch('M'), Action::Map)],
         "M", "regime map: a quantity over two inputs, coarse first then refined, with the lines theta = 0 and validity of the wide and narrow models (spatial: complete contact); x, [ ] { } move a cursor that reads it",
-        ("M", "map", "", 6), None,
+        ("M", "map", "", 6), ALL,
     ),
     binding(
         &[(ch('D'), Action::Dimensionless)],
         "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*, mu*-mu; spatial mu*, mu*-mu, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the sweep chart's x axis becomes the swept input's group, computed at each point (plane h -> (a+b)/h, P -> P/(m R), k -> k m, mu -> mu chi, R -> (a+b)/R; spatial h -> kh1), each model's curve through its own points in the sweep's order, the cursor also reading the input with its unit along the preset's model; an input without a group keeps its unit, the axis title saying '(dimensional: no group)'; the map's axes keep their units; D again goes back",
-        ("D", "groups", "", 7), None,
+        ("D", "groups", "", 7), ALL,
     ),
     binding(
         &[(ch('o'), Action::Open)],
         "o", "open a preset: bundled, shared (WEARLAB_PRESETS) or yours; type to find one or a path to a file, each with its whole description (PgUp/PgDn scroll it; asks first when there are unsaved edits)",
-        ("o", "open", "", 5), None,
+        ("o", "open", "", 5), ALL,
     ),
     binding(
         &[(ch('s'), Action::Save)],
         "s", "save the preset (asks a name; asks before overwriting)",
-        ("s", "save", "", 5), None,
+        ("s", "save", "", 5), ALL,
     ),
     binding(
         &[(ch('e'), Action::Export), (ch('E'), Action::ExportSvg)],
         "e, E", "export the visible chart: e its data as CSV (parameters in a header, units in the column names), E a figure as SVG (axes, legend, parameters), of the sweep or the regime map too; both ask before overwriting",
-        ("e/E", "export", "", 5), None,
+        ("e/E", "export", "", 5), ALL,
     ),
     binding(
         &[(ch('u'), Action::Undo)],
         "u", "undo the last change (says what it undid)",
-        ("u", "undo", "", 5), None,
+        ("u", "undo", "", 5), ALL,
     ),
     binding(
         &[(ch('i'), Action::About)],
         "i", "about this preset: its name and whole description (Up/Down, PgUp/PgDn scroll; Esc closes)",
-        ("i", "about", "", 5), None,
+        ("i", "about", "", 5), ALL,
     ),
     binding(
         &[(ch('a'), Action::Questions)],
         "a", "answer the lesson's questions, in a preset that has them: type an answer with its unit (52 um, 0.39) and Enter says right or not; rows marked = are locked by the lesson",
-        ("", "", "", 0), None,
+        ("", "", "", 0), ALL,
     ),
     binding(
         &[(ch('?'), Action::Help)],
         "?", "this help: keys, the chart, the status symbols",
-        ("?", "help", "help", 0), None,
+        ("?", "help", "help", 0), ALL,
     ),
     binding(
         &[(ch('q'), Action::Quit), (CTRL_C, Action::Quit)],
         "q, Ctrl-C", "quit (asks when there are unsaved edits; Ctrl-C works everywhere)",
-        ("q", "quit", "quit", 0), None,
+        ("q", "quit", "quit", 0), ALL,
     ),
 ];
 
@@ -343,13 +357,14 @@ pub fn is_ctrl_c(ev: &KeyEvent) -> bool {
     CTRL_C.matches(ev)
 }
 
-/// The footer of the main screen for a problem, fitted to `width` columns: items two spaces
+/// The footer of the main screen for what is open (a problem, or a preset's `Open`), fitted to `width` columns: items two spaces
 /// apart, else one space apart; while neither fits, items take their shorter word in the order
 /// of their rank. Its characters are `style`'s (`RenderOptions::text`), so it is fitted as drawn.
-pub fn footer(problem: Problem, width: usize, style: RenderOptions) -> String {
+pub fn footer(open: impl Into<Open>, width: usize, style: RenderOptions) -> String {
+    let open = open.into();
     let items: Vec<_> = BINDINGS
         .iter()
-        .filter(|b| b.only.is_none_or(|p| p == problem) && !b.footer.0.is_empty())
+        .filter(|b| b.only.applies(open) && !b.footer.0.is_empty())
         .map(|b| b.footer)
         .collect();
     let render = |shortened: u8, sep: &str| -> String {

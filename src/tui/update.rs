@@ -11,7 +11,7 @@ use crate::tui::actions::{act, apply, export, open, quit};
 use crate::tui::app::{App, Command, Document, Mode, Msg};
 use crate::tui::chart_keys;
 use crate::tui::form;
-use crate::tui::keys;
+use crate::tui::keys::{self, Open, Scope};
 use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};
 use crate::tui::text_field::TextField;
@@ -131,12 +131,21 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
     match app.ui.mode.clone() {
         Mode::Normal => match keys::lookup(&key) {
             Some((binding, action)) => match binding.only {
-                Some(problem) if problem != app.doc.preset.problem => {
+                Scope::Problem(problem) if problem != app.doc.preset.problem => {
                     app.complain(format!(
                         "{}: {} is for the {} problem (p switches)",
                         binding.names,
                         binding.help,
                         problem.name()
+                    ));
+                    Vec::new()
+                }
+                scope if !scope.applies(Open::of(&app.doc.preset)) => {
+                    app.complain(format!(
+                        "{}: {} is for {}",
+                        binding.names,
+                        binding.help,
+                        scope.place().unwrap_or_default()
                     ));
                     Vec::new()
                 }

@@ -6,11 +6,11 @@ use crate::physics::plane::Model;
 use crate::preset::Problem;
 
 use super::{ASCII, PLAIN};
-use crate::tui::keys::{Action, BINDINGS, CursorMove, footer, lookup};
+use crate::tui::keys::{Action, BINDINGS, CursorMove, Open, footer, lookup};
 use crate::tui::prompt_keys::{Prompt, prompt_footer};
 
 /// Every action, for the test that each one is bound.
-const ACTIONS: [Action; 33] = [
+const ACTIONS: [Action; 34] = [
     Action::PrevField,
     Action::NextField,
     Action::Nudge {
@@ -36,6 +36,7 @@ const ACTIONS: [Action; 33] = [
     Action::SwitchProblem,
     Action::CycleModel,
     Action::PlayPause,
+    Action::NewSeed,
     Action::AddHarmonic,
     Action::RemoveHarmonic,
     Action::Open,
@@ -144,21 +145,22 @@ fn the_guide_key_table_is_the_key_table() {
 
 #[test]
 fn footers_fit_and_name_every_key_of_the_problem() {
-    for problem in [Problem::Plane, Problem::Spatial] {
+    let generated = Open {
+        problem: Problem::Spatial,
+        generated_surface: true,
+    };
+    for open in [Problem::Plane.into(), Problem::Spatial.into(), generated] {
         for width in [80, 120] {
-            let text = footer(problem, width, PLAIN);
+            let text = footer(open, width, PLAIN);
             assert!(text.chars().count() <= width, "{width}: {text}");
             assert!(
                 text.ends_with("? help  q quit") || text.ends_with("? help q quit"),
                 "{text}"
             );
-            for b in BINDINGS
-                .iter()
-                .filter(|b| b.only.is_none_or(|p| p == problem))
-            {
+            for b in BINDINGS.iter().filter(|b| b.only.applies(open)) {
                 assert!(
                     text.contains(b.footer.0),
-                    "{width} {problem:?} lacks {}: {text}",
+                    "{width} {open:?} lacks {}: {text}",
                     b.footer.0
                 );
             }

@@ -27,6 +27,7 @@ mod save_prompt;
 mod screens;
 mod shape_form;
 mod stale;
+mod surface_form;
 mod surfaces;
 mod sweep_export;
 mod ticks;

@@ -141,7 +141,7 @@ pub fn draw_message(app: &App, style: RenderOptions, frame: &mut Frame, area: Re
 /// Draws the keys of the main screen or of the prompt being answered.
 pub fn draw_footer(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let text = match prompt(&app.ui.mode) {
-        None => keys::footer(app.doc.preset.problem, area.width as usize, style),
+        None => keys::footer(keys::Open::of(&app.doc.preset), area.width as usize, style),
         Some(p) => style.text(&prompt_keys::prompt_footer(p)).into_owned(),
     };
     frame.render_widget(Paragraph::new(text).style(style.footer()), area);

@@ -2,7 +2,7 @@
 //! the text being typed), the rows a lesson locks marked `=`, scrolled to keep the selection
 //! visible.
 
-use crate::preset::Problem;
+use crate::preset::{Problem, surface_from_file};
 use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
@@ -17,9 +17,12 @@ const LABEL: usize = 9;
 
 /// Draws the form into `area`.
 pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let title = match app.doc.preset.problem {
-        Problem::Plane => " plane: punch on a strip ",
-        Problem::Spatial => " spatial: wavy punch ",
+    let preset = &app.doc.preset;
+    let title = match (preset.problem, &preset.spatial.surface) {
+        (Problem::Plane, _) => " plane: punch on a strip ",
+        (Problem::Spatial, None) => " spatial: wavy punch ",
+        (Problem::Spatial, Some(_)) if surface_from_file(preset) => " spatial: measured surface ",
+        (Problem::Spatial, Some(_)) => " spatial: generated surface ",
     };
     let block = Block::default().borders(Borders::ALL).title(title);
     let inner = block.inner(area);
@@ -29,8 +32,8 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let mut selected_line = 0;
     let mut heading = String::new();
     for (i, row) in app.rows().iter().enumerate() {
-        if form::heading(row) != heading {
-            heading = form::heading(row);
+        if form::heading(preset, row) != heading {
+            heading = form::heading(preset, row);
             lines.push(Line::styled(heading.clone(), style.heading()));
         }
         let selected = i == app.ui.selected;

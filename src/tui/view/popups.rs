@@ -7,6 +7,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::tui::app::App;
+use crate::tui::keys::{Open, Scope};
 use crate::tui::sweep_state::View;
 use crate::tui::view::layout::centered;
 use crate::tui::view::sweep;
@@ -30,11 +31,17 @@ fn row(left: &str, right: &str, indent: usize, width: usize) -> Vec<Line<'static
 /// The help's lines for a text `width` wide.
 pub fn help_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
     let problem = app.doc.preset.problem;
+    let open = Open::of(&app.doc.preset);
     let heading = |t: String| Line::styled(t, style.heading());
     let mut lines = vec![heading("Keys".into())];
     for b in &keys::BINDINGS {
         let help = match b.only {
-            Some(p) if p != problem => format!("{} (in the {} problem)", b.help, p.name()),
+            Scope::Problem(p) if p != problem => {
+                format!("{} (in the {} problem)", b.help, p.name())
+            }
+            scope if !scope.applies(open) => {
+                format!("{} (on {})", b.help, scope.place().unwrap_or_default())
+            }
             _ => b.help.to_string(),
         };
         lines.extend(row(&format!("  {}", b.names), &help, 20, width));

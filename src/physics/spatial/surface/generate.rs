@@ -135,6 +135,22 @@ pub fn generate(p: &SelfAffine) -> Result<Surface, String> {
     Surface::new(nx, ny, p.length_x, p.length_y, heights)
 }
 
+/// What a parameter of the generator allows, in words, as `validate` and the grid check refuse
+/// (by the preset key's last part: "hurst", "grid"); the explorer's form and `--set` quote it.
+pub fn allowed(name: &str) -> &'static str {
+    match name {
+        "hurst" => "0 < H <= 1",
+        "rms_height" => "> 0 (m)",
+        "rms_slope" => "> 0",
+        "rolloff_wavelength" => "> 0 (m), at least the cutoff wavelength",
+        "cutoff_wavelength" => "> 0 (m), at most the roll-off wavelength",
+        "length_x" => "> 0 (m)",
+        "length_y" => ">= 0 (m), 0 for a profile along x",
+        "grid" => "a whole number from 2 to 1024 (to 16384 for a profile)",
+        _ => "a whole number >= 0",
+    }
+}
+
 fn validate(p: &SelfAffine) -> Result<(), String> {
     let positive = |name: &str, v: f64| {
         if v.is_finite() && v > 0.0 {

@@ -9,7 +9,7 @@ mod source;
 mod spectrum;
 mod statistics;
 
-pub use generate::{Amplitude, SelfAffine, SplitMix64, generate};
+pub use generate::{Amplitude, SelfAffine, SplitMix64, allowed, generate};
 pub use read::{MAX_FILE_BYTES, ReadError, parse_csv, read_csv, read_xyz};
 pub use source::{SurfaceShape, SurfaceSource};
 pub use spectrum::{PsdPoint, mode_wave_vectors, radial_psd};
