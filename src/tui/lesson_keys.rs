@@ -10,7 +10,7 @@ use crate::units::format_si;
 use crate::tui::app::{App, Command, Mode};
 use crate::tui::form;
 use crate::tui::lesson_state::{Mark, Quiz};
-use crate::tui::prompt_keys::{Prompt, PromptAction, cursor_step, prompt_action};
+use crate::tui::prompt_keys::{PAGE, Prompt, PromptAction, cursor_step, prompt_action};
 use crate::tui::text_field::TextField;
 
 /// True when the preset's lesson locks this key.
@@ -77,6 +77,14 @@ pub fn key(app: &mut App, key: KeyEvent, mut quiz: Quiz) -> Vec<Command> {
         }
         Some(PromptAction::Down) => {
             quiz.selected = (quiz.selected + 1) % count;
+            quiz.typed = TextField::default();
+        }
+        Some(PromptAction::PageUp) => {
+            quiz.selected = quiz.selected.saturating_sub(PAGE);
+            quiz.typed = TextField::default();
+        }
+        Some(PromptAction::PageDown) => {
+            quiz.selected = (quiz.selected + PAGE).min(count - 1);
             quiz.typed = TextField::default();
         }
         Some(PromptAction::Backspace) => quiz.typed.backspace(),

@@ -60,7 +60,7 @@ pub enum Prompt {
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 54] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 58] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -74,6 +74,8 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 54] = [
     (Prompt::List, ch('j'), PromptAction::Down, ""),
     (Prompt::List, key(KeyCode::Home), PromptAction::First, ""),
     (Prompt::List, key(KeyCode::End), PromptAction::Last, ""),
+    (Prompt::List, key(KeyCode::PageUp), PromptAction::PageUp, ""),
+    (Prompt::List, key(KeyCode::PageDown), PromptAction::PageDown, ""),
     (Prompt::List, key(KeyCode::Enter), PromptAction::Accept, "⏎ take"),
     (Prompt::List, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Picker, key(KeyCode::Up), PromptAction::Up, "type: find  ↑↓ Home End"),
@@ -108,6 +110,8 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 54] = [
     (Prompt::Form, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Quiz, key(KeyCode::Up), PromptAction::Up, "↑↓ question"),
     (Prompt::Quiz, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Quiz, key(KeyCode::PageUp), PromptAction::PageUp, ""),
+    (Prompt::Quiz, key(KeyCode::PageDown), PromptAction::PageDown, ""),
     (Prompt::Quiz, key(KeyCode::Enter), PromptAction::Accept, "⏎ check"),
     (Prompt::Quiz, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
     (Prompt::Quiz, key(KeyCode::Left), PromptAction::Left, "←→ edit"),
@@ -136,14 +140,17 @@ pub fn prompt_footer(prompt: Prompt) -> String {
         .join("  ")
 }
 
+/// The entries a page key moves a list's selection, or a text window's scroll.
+pub const PAGE: usize = 10;
+
 /// The scroll of a text window (the help, the preset's description) after a key, stopping at
 /// `last`; None closes it.
 pub fn scrolled(key: &KeyEvent, scroll: u16, last: u16) -> Option<u16> {
     match prompt_action(Prompt::Help, key)? {
         PromptAction::Up => Some(scroll.min(last).saturating_sub(1)),
         PromptAction::Down => Some(scroll.saturating_add(1).min(last)),
-        PromptAction::PageUp => Some(scroll.min(last).saturating_sub(10)),
-        PromptAction::PageDown => Some(scroll.saturating_add(10).min(last)),
+        PromptAction::PageUp => Some(scroll.min(last).saturating_sub(PAGE as u16)),
+        PromptAction::PageDown => Some(scroll.saturating_add(PAGE as u16).min(last)),
         PromptAction::First => Some(0),
         PromptAction::Last => Some(last),
         _ => None,

@@ -260,6 +260,8 @@ fn selection_moved(selected: usize, len: usize, action: Option<PromptAction>) ->
     match action {
         Some(PromptAction::Up) => selected.saturating_sub(1),
         Some(PromptAction::Down) => (selected + 1).min(len.saturating_sub(1)),
+        Some(PromptAction::PageUp) => selected.saturating_sub(prompt_keys::PAGE),
+        Some(PromptAction::PageDown) => (selected + prompt_keys::PAGE).min(len.saturating_sub(1)),
         Some(PromptAction::First) => 0,
         Some(PromptAction::Last) => len.saturating_sub(1),
         _ => selected,

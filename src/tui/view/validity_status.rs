@@ -104,10 +104,16 @@ fn judged(
         };
         head.push((text, look));
     }
-    // each line of the head in the rows left, ended by "…" where it does not fit whole
+    // each line of the head in the rows left, ended by "…" where it does not fit whole; where
+    // the model does not hold, the rows of its first reason (and of the count of the others)
+    // are kept, so that the verdict is never pushed out by the check or the yield line
+    let kept = match warnings.first() {
+        Some(first) if !v.ok => room.min(first.len() + usize::from(warnings.len() > 1)),
+        _ => 0,
+    };
     let mut lines: Vec<Line> = Vec::new();
     for (text, look) in head {
-        let rows = room.saturating_sub(lines.len());
+        let rows = room.saturating_sub(kept).saturating_sub(lines.len());
         lines.extend(
             wrap_within(&text, width, rows, style)
                 .into_iter()
