@@ -4,7 +4,8 @@
 //!   the sign of the wide model's theta (4.5) at the point (the preset model's when the wide model
 //!   has no solution there);
 //! - the validity boundaries of the wide and the narrow models: `strip_check::verdict`'s `ok` of
-//!   each model solved at the point (whatever the preset's model);
+//!   each model solved at the point (whatever the preset's model), its measurements against the
+//!   strip model shared between the points whose groups agree (`verdict_table`);
 //! - complete contact (spatial): the report's `contact.complete`.
 //!
 //! Each crossing between two computed points is located on its edge: in the final pass by
@@ -22,6 +23,7 @@
 use rayon::prelude::*;
 
 use crate::physics::plane::Model;
+use crate::physics::plane::verdict_table::VerdictTable;
 use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
@@ -129,7 +131,7 @@ fn first_stride(n: usize) -> usize {
     s
 }
 
-fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], stop: Stop) -> Sample {
+fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], table: &VerdictTable, stop: Stop) -> Sample {
     let axes = [spec.x, spec.y];
     let solve = |model| solve_at_until(base, &axes, &at, model, stop);
     let main = match base.problem {
@@ -169,10 +171,18 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], stop: Stop) -> Sample {
     Sample {
         value,
         theta: own(&wide, &main).and_then(theta_of).or_else(main_theta),
-        wide_holds: own(&wide, &main).map(holds),
-        narrow_holds: own(&narrow, &main).map(holds),
+        wide_holds: own(&wide, &main).map(|p| judged(p, table)),
+        narrow_holds: own(&narrow, &main).map(|p| judged(p, table)),
         complete: None,
         min_pressure: None,
+    }
+}
+
+/// `curve::holds` at a point of this map, a plane model's verdict read from the map's table.
+fn judged(p: &Point, table: &VerdictTable) -> bool {
+    match p {
+        Point::Plane(p) => table.holds(&p.solution),
+        Point::Spatial(_) => holds(p),
     }
 }
 
@@ -192,6 +202,7 @@ pub fn regime_map<'s>(
     on_pass: &mut dyn FnMut(&Map),
 ) -> Option<Map> {
     let stop = stop.into();
+    let table = VerdictTable::new();
     let (x, y) = (spec.x.values(), spec.y.values());
     let (nx, ny) = (x.len(), y.len());
     let mut map = Map {
@@ -214,7 +225,7 @@ pub fn regime_map<'s>(
                 if stop.now() {
                     return None;
                 }
-                let s = sample(preset, spec, [map.x[k % nx], map.y[k / nx]], stop);
+                let s = sample(preset, spec, [map.x[k % nx], map.y[k / nx]], &table, stop);
                 // a point told to stop half-way has no answer to keep
                 (!stop.now()).then_some((k, s))
             })
@@ -222,7 +233,7 @@ pub fn regime_map<'s>(
         for (k, s) in found.into_iter().collect::<Option<Vec<_>>>()? {
             map.samples[k] = Some(s);
         }
-        map.lines = lines(preset, spec, &map, stop)?;
+        map.lines = lines(preset, spec, &map, &table, stop)?;
         on_pass(&map);
         if map.stride == 1 {
             return Some(map);
@@ -237,7 +248,13 @@ const BISECTIONS: usize = 20;
 /// A verdict at a sample.
 type Verdict = fn(&Sample) -> Option<bool>;
 
-fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<Line>> {
+fn lines(
+    preset: &Preset,
+    spec: &MapSpec,
+    map: &Map,
+    table: &VerdictTable,
+    stop: Stop,
+) -> Option<Vec<Line>> {
     let kinds: Vec<(LineKind, Verdict)> = match preset.problem {
         Problem::Plane => vec![
             (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
@@ -275,7 +292,7 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
                     if stop.now() {
                         return None;
                     }
-                    verdict_at(preset, spec, point(a, b, u), kind, stop)
+                    verdict_at(preset, spec, point(a, b, u), kind, table, stop)
                 })?,
             };
             Some(point(a, b, u))
@@ -296,6 +313,7 @@ fn verdict_at(
     spec: &MapSpec,
     at: [f64; 2],
     kind: LineKind,
+    table: &VerdictTable,
     stop: Stop,
 ) -> Option<bool> {
     let axes = [spec.x, spec.y];
@@ -307,7 +325,7 @@ fn verdict_at(
                 .or_else(|| theta(base.plane.model))
                 .map(|t| t > 0.0)
         }
-        LineKind::Validity(model) => solve(model).map(|p| holds(&p)),
+        LineKind::Validity(model) => solve(model).map(|p| judged(&p, table)),
         LineKind::CompleteContact => None,
     }
 }

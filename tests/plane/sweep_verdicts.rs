@@ -73,3 +73,91 @@ fn the_verdicts_along_a_thickness_sweep_are_each_points_own() {
         );
     }
 }
+
+/// The premise of `verdict_table`: at the same (a+b)/h and groups the deviations from the strip
+/// model are the same. (P, h, R) -> (2P, 2h, 2R) keeps (a+b)/h, nu, mu, gamma m and tau0 R/(m h)
+/// (q2 scales as m h/R, so P as m h^2/R), and must keep the measured deviations to the solvers'
+/// accuracy.
+#[test]
+fn the_deviation_from_the_strip_model_depends_on_the_width_over_the_thickness_alone() {
+    use wearlab::physics::plane::strip_check::against_strip;
+    for (file, model, load) in [
+        ("polymer-coating.toml", Model::Wide, 3e5),
+        ("thin-strip-winkler.toml", Model::Narrow, 3e3),
+    ] {
+        let inputs = bundled(file)
+            .unwrap()
+            .unwrap()
+            .plane_inputs()
+            .with_load(load);
+        let mut scaled = inputs.with_load(2.0 * load);
+        scaled.material.thickness *= 2.0;
+        scaled.shape = wearlab::physics::plane::Shape::Parabola {
+            radius: 2.0 * inputs.radius(),
+        };
+        let (a, b) = (
+            solve(&inputs, model).unwrap(),
+            solve(&scaled, model).unwrap(),
+        );
+        let lambda = |s: &wearlab::physics::plane::PlaneSolution| {
+            s.contact_width() / s.inputs.material.thickness
+        };
+        assert!((lambda(&a) / lambda(&b) - 1.0).abs() < 1e-12, "{file}");
+        let (da, db) = (against_strip(&a).unwrap(), against_strip(&b).unwrap());
+        for (x, y) in [
+            (da.contact_width, db.contact_width),
+            (da.mu_star_minus_mu, db.mu_star_minus_mu),
+        ] {
+            assert!(
+                (x - y).abs() <= 1e-9 * x.abs().max(1e-3),
+                "{file}: {x} against {y}"
+            );
+        }
+    }
+}
+
+/// A regime map over (P, h) reads most verdicts from its shared table (`verdict_table`): every
+/// sample's wide and narrow verdict must still be the point's own.
+#[test]
+fn the_verdicts_of_a_load_thickness_map_are_each_points_own() {
+    use std::sync::atomic::AtomicBool;
+    use wearlab::sweeps::axis::Axis;
+    use wearlab::sweeps::map::{MapSpec, regime_map};
+    use wearlab::sweeps::quantity::QuantityKey;
+    let p = bundled("polymer-coating.toml").unwrap().unwrap();
+    let axis = |key: &str, ends: [f64; 2]| {
+        Axis::new(&p, p.key(key).unwrap(), ends, 17, Spacing::Log).unwrap()
+    };
+    let spec = MapSpec {
+        x: axis("plane.load", [1e2, 1e7]),
+        y: axis("material.thickness", [1e-5, 1e-1]),
+        quantity: QuantityKey::parse("mu_star", &p).unwrap(),
+    };
+    let map = regime_map(&p, &spec, &AtomicBool::new(false), &mut |_| {}).unwrap();
+    let inputs = p.plane_inputs();
+    let (mut turns, mut compared) = ([0usize; 2], 0);
+    for (j, &h) in map.y.iter().enumerate() {
+        for (i, &load) in map.x.iter().enumerate() {
+            let sample = map.sample(i, j).unwrap();
+            let mut at = inputs.with_load(load);
+            at.material.thickness = h;
+            for (k, (model, shown)) in [
+                (Model::Wide, sample.wide_holds),
+                (Model::Narrow, sample.narrow_holds),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                let own = solve(&at, model).ok().map(|s| verdict(&s).ok);
+                assert_eq!(shown, own, "{model:?} at P = {load:e} N/m, h = {h:e} m");
+                turns[k] += usize::from(own == Some(true));
+                compared += 1;
+            }
+        }
+    }
+    // both models hold somewhere and fail somewhere on this map
+    assert!(
+        turns.iter().all(|&t| t > 0 && t < 17 * 17),
+        "{turns:?} of {compared}"
+    );
+}

@@ -28,6 +28,7 @@ pub mod strip_check;
 pub mod sweep;
 pub mod sweep_verdicts;
 pub mod validity;
+pub mod verdict_table;
 pub mod wide;
 pub mod yield_onset;
 mod yield_phrase;

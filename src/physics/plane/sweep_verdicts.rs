@@ -15,17 +15,17 @@ const SPAN: usize = 8;
 
 /// A point is read from the interpolation only where it puts each deviation at least this far
 /// (as a fraction of its tolerance) beyond the interpolation's error bound from the tolerance.
-const BAND: f64 = 0.02;
+pub(crate) const BAND: f64 = 0.02;
 
 /// A measured point: the verdict, and the two deviations over their tolerances (contact width,
 /// mu* - mu) where the strip model answered.
 #[derive(Clone, Copy, Debug)]
-struct Measured {
-    ok: bool,
-    ratios: Option<[f64; 2]>,
+pub(crate) struct Measured {
+    pub ok: bool,
+    pub ratios: Option<[f64; 2]>,
 }
 
-fn measure(sol: &PlaneSolution, estimated: &Validity) -> Measured {
+pub(crate) fn measure(sol: &PlaneSolution, estimated: &Validity) -> Measured {
     let check = strip_check(sol);
     let ratios = match &check {
         StripCheck::Measured(d) => Some([
