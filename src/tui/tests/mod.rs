@@ -31,6 +31,7 @@ mod stale;
 mod surface_form;
 mod surfaces;
 mod sweep_export;
+mod sweep_form;
 mod ticks;
 mod update;
 mod validity;
