@@ -1,6 +1,5 @@
 //! What each action of the key table does to the model (part of `update`: pure).
 
-use crate::physics::spatial::harmonic::Harmonic;
 use crate::preset::{Key, Preset, Problem};
 
 use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
@@ -8,6 +7,7 @@ use crate::tui::chart_keys;
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
 use crate::tui::form::{self, Change};
+use crate::tui::harmonic_keys;
 use crate::tui::keys::Action;
 use crate::tui::lesson_keys;
 use crate::tui::lesson_state::{LessonState, invitation};
@@ -17,9 +17,6 @@ use crate::tui::sweep_form_keys;
 use crate::tui::sweep_keys;
 use crate::tui::sweep_state::View;
 use crate::tui::text_field::TextField;
-
-/// The most harmonics a punch has (`limits::HARMONICS`).
-pub const MAX_HARMONICS: usize = crate::physics::limits::HARMONICS.max as usize;
 
 /// Carries out an action of the main screen.
 pub fn act(app: &mut App, action: Action) -> Vec<Command> {
@@ -128,19 +125,12 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         {
             surface_keys::no_harmonics(app)
         }
-        Action::AddHarmonic => add_harmonic(app),
-        Action::NewSeed => match surface_keys::new_seed(&app.doc.preset) {
-            Ok((next, change, said)) => {
-                let commands = apply(app, next, change);
-                app.say(said);
-                commands
-            }
-            Err(why) => {
-                app.complain(why);
-                Vec::new()
-            }
-        },
-        Action::RemoveHarmonic => remove_harmonic(app),
+        Action::AddHarmonic => edited(app, harmonic_keys::added(&app.doc.preset)),
+        Action::NewSeed => edited(app, surface_keys::new_seed(&app.doc.preset)),
+        Action::RemoveHarmonic => {
+            let selected = app.row().harmonic_index();
+            edited(app, harmonic_keys::removed(&app.doc.preset, selected))
+        }
         Action::Open => vec![Command::ListPresets],
         Action::Save => {
             app.ui.mode = Mode::SaveAs(TextField::proposed(proposed_name(app)));
@@ -216,6 +206,21 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
 }
 
 /// Sets the selected row to `value`, or says why not.
+/// Applies an edit of a key and says what it did, or says why there is none.
+fn edited(app: &mut App, edit: Result<(Preset, Change, String), String>) -> Vec<Command> {
+    match edit {
+        Ok((next, change, said)) => {
+            let commands = apply(app, next, change);
+            app.say(said);
+            commands
+        }
+        Err(why) => {
+            app.complain(why);
+            Vec::new()
+        }
+    }
+}
+
 fn set(app: &mut App, value: f64) -> Vec<Command> {
     let row = app.row();
     match form::set(&app.doc.preset, &row, value) {
@@ -352,70 +357,4 @@ pub fn export(app: &mut App, chart: Chart, format: Format) -> Vec<Command> {
             Vec::new()
         }
     }
-}
-
-/// Adds a harmonic at the first free multiple (2x, 3x, ...) of the first harmonic's wave vector
-/// (the fundamental), with half the last one's amplitude, or says why it cannot.
-fn add_harmonic(app: &mut App) -> Vec<Command> {
-    let harmonics = &app.doc.preset.spatial.harmonics;
-    let n = harmonics.len();
-    if n >= MAX_HARMONICS {
-        app.complain(format!(
-            "the punch has {n} harmonics, the most + adds: remove one with - first"
-        ));
-        return Vec::new();
-    }
-    let (Some(&first), Some(&last)) = (harmonics.first(), harmonics.last()) else {
-        return surface_keys::no_harmonics(app);
-    };
-    // fewer than MAX_HARMONICS wave vectors are taken, so one of MAX_HARMONICS multiples is
-    // free unless out of range
-    let added = (2..=MAX_HARMONICS as u32 + 1).find_map(|m| {
-        let mut next = app.doc.preset.clone();
-        next.spatial.harmonics.push(Harmonic {
-            amplitude: last.amplitude / 2.0,
-            wavenumber_x: first.wavenumber_x * m as f64,
-            wavenumber_y: first.wavenumber_y * m as f64,
-            ..last
-        });
-        next.check_rules().ok().map(|()| next)
-    });
-    match added {
-        Some(next) => {
-            let change = Change {
-                name: "harmonics".into(),
-                from: n.to_string(),
-                to: (n + 1).to_string(),
-            };
-            let commands = apply(app, next, change);
-            app.say(format!("added harmonic {}", n + 1));
-            commands
-        }
-        None => {
-            app.complain(
-                "cannot add a harmonic: every multiple of the first wave vector up to 65x is taken or out of range; edit wx, wy instead",
-            );
-            Vec::new()
-        }
-    }
-}
-
-/// Removes the selected harmonic (or the last one).
-fn remove_harmonic(app: &mut App) -> Vec<Command> {
-    let n = app.doc.preset.spatial.harmonics.len();
-    if n <= 1 {
-        app.complain("the punch needs at least one harmonic");
-        return Vec::new();
-    }
-    let index = app.row().harmonic_index().unwrap_or(n - 1);
-    let mut next = app.doc.preset.clone();
-    next.spatial.harmonics.remove(index);
-    let change = Change {
-        name: "harmonics".into(),
-        from: n.to_string(),
-        to: (n - 1).to_string(),
-    };
-    let commands = apply(app, next, change);
-    app.say(format!("removed harmonic {}", index + 1));
-    commands
 }

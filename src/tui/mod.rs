@@ -11,6 +11,7 @@ pub mod effects;
 pub mod event_loop;
 pub mod form;
 pub mod glossary;
+pub mod harmonic_keys;
 pub mod key_scope;
 pub mod keys;
 pub mod lesson_keys;

@@ -5,9 +5,9 @@ use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use super::*;
-use crate::tui::actions::MAX_HARMONICS;
 use crate::tui::app::Mode;
 use crate::tui::charts::{Chart, PlaneChart};
+use crate::tui::harmonic_keys::MAX_HARMONICS;
 
 pub(super) fn message(app: &App) -> String {
     app.ui
