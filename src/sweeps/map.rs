@@ -5,7 +5,8 @@
 //!   has no solution there);
 //! - the validity boundaries of the wide and the narrow models: `strip_check::verdict`'s `ok` of
 //!   each model solved at the point (whatever the preset's model), its measurements against the
-//!   strip model shared between the points whose groups agree (`verdict_table`);
+//!   strip model shared between the samples whose groups agree (`verdict_table`; the lines'
+//!   bisection below measures each of its points itself);
 //! - complete contact (spatial): the report's `contact.complete`.
 //!
 //! Each crossing between two computed points is located on its edge: in the final pass by
@@ -233,7 +234,7 @@ pub fn regime_map<'s>(
         for (k, s) in found.into_iter().collect::<Option<Vec<_>>>()? {
             map.samples[k] = Some(s);
         }
-        map.lines = lines(preset, spec, &map, &table, stop)?;
+        map.lines = lines(preset, spec, &map, stop)?;
         on_pass(&map);
         if map.stride == 1 {
             return Some(map);
@@ -248,13 +249,7 @@ const BISECTIONS: usize = 20;
 /// A verdict at a sample.
 type Verdict = fn(&Sample) -> Option<bool>;
 
-fn lines(
-    preset: &Preset,
-    spec: &MapSpec,
-    map: &Map,
-    table: &VerdictTable,
-    stop: Stop,
-) -> Option<Vec<Line>> {
+fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<Line>> {
     let kinds: Vec<(LineKind, Verdict)> = match preset.problem {
         Problem::Plane => vec![
             (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
@@ -292,7 +287,7 @@ fn lines(
                     if stop.now() {
                         return None;
                     }
-                    verdict_at(preset, spec, point(a, b, u), kind, table, stop)
+                    verdict_at(preset, spec, point(a, b, u), kind, stop)
                 })?,
             };
             Some(point(a, b, u))
@@ -313,7 +308,6 @@ fn verdict_at(
     spec: &MapSpec,
     at: [f64; 2],
     kind: LineKind,
-    table: &VerdictTable,
     stop: Stop,
 ) -> Option<bool> {
     let axes = [spec.x, spec.y];
@@ -325,7 +319,7 @@ fn verdict_at(
                 .or_else(|| theta(base.plane.model))
                 .map(|t| t > 0.0)
         }
-        LineKind::Validity(model) => solve(model).map(|p| judged(&p, table)),
+        LineKind::Validity(model) => solve(model).map(|p| holds(&p)),
         LineKind::CompleteContact => None,
     }
 }
