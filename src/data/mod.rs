@@ -175,7 +175,16 @@ fn si_unit(role: &Role) -> &'static str {
 /// quantity of its problem and model or the `sd` of one, every value finite and in its unit, the
 /// x values allowed by the parameter's limit, every sd > 0.
 pub fn read(path: &Path, preset: &Preset) -> Result<DataSet, DataError> {
-    let t = table::read(path)?;
+    of_table(path, table::read(path)?, preset)
+}
+
+/// Reads a data file's text as `read` reads the file (`path` names it): a bundled data file.
+pub fn read_text(path: &Path, text: &str, preset: &Preset) -> Result<DataSet, DataError> {
+    of_table(path, table::read_text(path, text)?, preset)
+}
+
+/// The data set of a table read from `path`, for a preset (`read`'s checks).
+fn of_table(path: &Path, t: table::Table, preset: &Preset) -> Result<DataSet, DataError> {
     let (header_line, headings) = (t.header.0, t.header.1.clone());
     let error = |line: usize, reason: String| DataError::new(path, line, reason);
     let roles = headings

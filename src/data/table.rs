@@ -56,21 +56,41 @@ fn heading(cell: &str, column: usize) -> Result<Heading, String> {
     })
 }
 
+/// The refusal of a file of `size` bytes, larger than a data file may be.
+fn too_large(path: &Path, size: u64) -> DataError {
+    DataError::new(
+        path,
+        0,
+        format!(
+            "the file is {size} bytes, more than the {MAX_FILE_BYTES} a data file may have \
+             ({MAX_ROWS} rows at most): thin the measurement or split the file"
+        ),
+    )
+}
+
 /// Reads `path` into a table: at least a header and one row, every row as wide as the header.
 pub fn read(path: &Path) -> Result<Table, DataError> {
-    let error = |line: usize, reason: String| DataError::new(path, line, reason);
-    let file = File::open(path).map_err(|e| error(0, format!("cannot be read: {e}")))?;
+    let file =
+        File::open(path).map_err(|e| DataError::new(path, 0, format!("cannot be read: {e}")))?;
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     if size > MAX_FILE_BYTES {
-        return Err(error(
-            0,
-            format!(
-                "the file is {size} bytes, more than the {MAX_FILE_BYTES} a data file may have \
-                 ({MAX_ROWS} rows at most): thin the measurement or split the file"
-            ),
-        ));
+        return Err(too_large(path, size));
     }
-    let mut reader = BufReader::new(file.take(MAX_FILE_BYTES + 1));
+    lines(path, BufReader::new(file.take(MAX_FILE_BYTES + 1)))
+}
+
+/// A data file's text read into a table as `read` reads the file (`path` names it in
+/// messages): a bundled data file.
+pub fn read_text(path: &Path, text: &str) -> Result<Table, DataError> {
+    if text.len() as u64 > MAX_FILE_BYTES {
+        return Err(too_large(path, text.len() as u64));
+    }
+    lines(path, text.as_bytes())
+}
+
+/// The table of the lines `reader` gives, at most `MAX_FILE_BYTES` of them.
+fn lines(path: &Path, mut reader: impl BufRead) -> Result<Table, DataError> {
+    let error = |line: usize, reason: String| DataError::new(path, line, reason);
     let mut notes = Vec::new();
     let mut header: Option<(usize, Vec<Heading>)> = None;
     let mut rows = Vec::new();

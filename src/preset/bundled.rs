@@ -42,11 +42,13 @@ pub const BUNDLED: &[Bundled] = bundled![
     "polymer-shear-strength.toml",
     "energy-split.toml",
     "ground-profile.toml",
+    "lab-friction.toml",
 ];
 
-/// The data files that bundled presets name (`spatial.surface.file`, `plane.shape.file`), built
-/// into the binary beside them.
-pub const BUNDLED_DATA: &[Bundled] = bundled!["worn-pin.csv", "ground-profile.csv"];
+/// The data files that bundled presets name (`spatial.surface.file`, `plane.shape.file`,
+/// `explore.data`), built into the binary beside them.
+pub const BUNDLED_DATA: &[Bundled] =
+    bundled!["worn-pin.csv", "ground-profile.csv", "lab-friction.csv"];
 
 /// The text of `file` named by the preset at `preset` when that is a bundled preset
 /// (`presets/<file>`, as `Bundled::load` names it) and `file` a bundled data file.

@@ -1,5 +1,5 @@
 //! The checks of a preset's `[explore]` section against the rest of the preset: the quantity,
-//! the swept parameters and their ranges; each refusal is `path:line: reason`.
+//! the swept parameters and their ranges, a data file named; each refusal is `path:line: reason`.
 
 use toml::Spanned;
 
@@ -83,6 +83,19 @@ impl Checker<'_> {
             }
             axes.push(axis);
         }
-        Ok(Explore { quantity, axes })
+        let data = match &e.data {
+            Some(d) if d.get_ref().trim().is_empty() => {
+                return Err(self.error(
+                    Some(d.span()),
+                    "data names no file: a data file's name, e.g. data = \"friction.csv\"",
+                ));
+            }
+            d => d.as_ref().map(|d| d.get_ref().trim().to_string()),
+        };
+        Ok(Explore {
+            quantity,
+            axes,
+            data,
+        })
     }
 }

@@ -7,6 +7,7 @@
 //! quantity = "mu_star_minus_mu"     # a name of `wearlab sweep --output`
 //! x = { key = "material.thickness", from = 1.0e-6, to = 1.0e-2, points = 40, scale = "log" }
 //! y = { key = "plane.load", from = 1.0e2, to = 1.0e4 }    # optional: a map over (x, y)
+//! data = "lab-friction.csv"         # optional: a data file the explorer draws (`d`)
 //! ```
 //!
 //! `points` defaults to 50 for a sweep and 20 per side for a map, `scale` to "linear". The keys
@@ -24,6 +25,9 @@ pub struct Explore {
     pub quantity: QuantityKey,
     /// The varied parameters: one (a sweep) or two (a map, x then y).
     pub axes: Vec<Axis>,
+    /// A data file drawn over the charts whose axes it matches, as written (relative to the
+    /// preset's folder); the explorer reads it when it opens the preset.
+    pub data: Option<String>,
 }
 
 impl Explore {

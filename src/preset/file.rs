@@ -187,6 +187,8 @@ pub(super) struct FileExplore {
     pub(super) x: Spanned<FileAxis>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub(super) y: Option<Spanned<FileAxis>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub(super) data: Option<Spanned<String>>,
 }
 
 pub(super) fn zero() -> Spanned<Written> {
@@ -303,6 +305,7 @@ fn explore_file(e: &Explore) -> FileExplore {
         quantity: plain(e.quantity.to_string()),
         x: axis(&e.axes[0]),
         y: e.axes.get(1).map(axis),
+        data: e.data.clone().map(plain),
     }
 }
 

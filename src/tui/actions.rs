@@ -147,6 +147,7 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::ExportSvg => export(app, app.ui.chart, Format::Svg),
         Action::Sweep => sweep_form_keys::open(app, View::Sweep),
         Action::Map => sweep_form_keys::open(app, View::Map),
+        Action::Data => crate::tui::data_keys::open(app),
         Action::Dimensionless => {
             sweep_keys::toggle_dimensionless(app);
             Vec::new()
@@ -284,7 +285,9 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     if let Some(warning) = crate::tui::warned::said(&app.doc.preset) {
         app.complain(warning);
     }
-    vec![app.request()]
+    let mut commands = vec![app.request()];
+    commands.extend(crate::tui::data_keys::of_preset(app));
+    commands
 }
 
 /// The name `s` proposes: the preset's own file's name when that file is in the user's preset
@@ -338,11 +341,11 @@ pub fn export(app: &mut App, chart: Chart, format: Format) -> Vec<Command> {
         .map(|p| (p.plots.as_slice(), p.name(now)))
         .collect();
     let text = match format {
-        Format::Csv => csv::csv(chart, answer, pinned),
+        Format::Csv => csv::csv(chart, answer, pinned, app.ui.data.as_ref()),
         Format::Svg => {
             let toggled = app.ui.log_y.contains(&chart);
             let scale = app.ui.heat_scale_for(&answer.request.preset);
-            csv::svg(chart, answer, pinned, toggled, scale)
+            csv::svg(chart, answer, pinned, app.ui.data.as_ref(), toggled, scale)
         }
     };
     match text {

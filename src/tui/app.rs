@@ -11,6 +11,7 @@ use crate::engine::{Answer, Request};
 use crate::preset::{Origin, Preset, Problem, SaveTarget};
 
 use crate::tui::charts::export::Format;
+use crate::tui::charts::overlay::Overlay;
 use crate::tui::charts::{Chart, Plot};
 use crate::tui::form::{self, Change, Row};
 use crate::tui::lesson_state::{LessonState, Quiz, invitation};
@@ -121,6 +122,8 @@ pub enum Mode {
     SaveAs(TextField),
     /// Typing the x the chart's cursor goes to (`g`).
     GoTo(TextField),
+    /// Typing the path of a data file to draw over the charts (`d`).
+    DataPath(TextField),
     /// The file exists: overwrite?
     ConfirmOverwrite(SaveTarget),
     /// The export's file exists: overwrite? (the file, the text to write)
@@ -156,6 +159,8 @@ pub struct Ui {
     pub map_cell: Option<(usize, usize)>,
     /// Curves pinned for comparison, oldest first.
     pub pins: Vec<Pin>,
+    /// The data file drawn over the charts whose axes it matches, kept across edits.
+    pub data: Option<Overlay>,
     /// The chart has the whole screen but the status.
     pub expanded: bool,
     /// The charts whose y axis is toggled (log, symmetric log, or back to linear).
@@ -274,6 +279,7 @@ impl App {
                 cursor: None,
                 map_cell: None,
                 pins: Vec::new(),
+                data: None,
                 expanded: false,
                 log_y: Vec::new(),
                 heat_scale: None,

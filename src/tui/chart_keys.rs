@@ -6,7 +6,7 @@ use crate::engine::Output;
 use crate::tui::app::{App, Command, HeatScale, Mode, Pin};
 use crate::tui::charts::contact::Fields;
 use crate::tui::charts::range::{Frame, constant, frames, plotted};
-use crate::tui::charts::{Figure, Plot, Scale};
+use crate::tui::charts::{Figure, Plot, Scale, overlay};
 use crate::tui::keys::Action;
 use crate::tui::on_screen::on_screen;
 use crate::tui::text_field::TextField;
@@ -135,7 +135,7 @@ fn plots(app: &App) -> Vec<Plot> {
     let Some((answer, _)) = on_screen(app).answer() else {
         return Vec::new();
     };
-    match app.ui.chart.build(answer) {
+    match overlay::figure(app.ui.chart, answer, app.ui.data.as_ref()) {
         Ok(Figure::Plots(plots)) => plots,
         _ => Vec::new(),
     }

@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::preset::{self, BUNDLED, Links, Origin, Preset, SaveTarget};
+use crate::preset::{self, BUNDLED, BUNDLED_DATA, Links, Origin, Preset, SaveTarget};
 
 use crate::tui::app::{Msg, PickerEntry, Places};
 
@@ -48,6 +48,28 @@ pub fn list_presets(places: &Places) -> Msg {
         out.extend(files.into_iter().map(|path| read_entry(&path, &heading)));
     }
     Msg::PresetsListed(out)
+}
+
+/// The data file at the first of `paths` that exists, read for `preset`; else a bundled data
+/// file named `presets/<file>` among them, else the first path (to say it cannot be read).
+pub fn read_data(paths: &[PathBuf], preset: &Preset) -> Msg {
+    let on_disk = paths.iter().find(|p| p.exists());
+    let bundled = || {
+        paths.iter().find_map(|p| {
+            let file = p.file_name()?.to_str()?;
+            let d = BUNDLED_DATA.iter().find(|d| d.file == file)?;
+            (p.parent() == Some(Path::new("presets"))).then_some((p, d.text))
+        })
+    };
+    let read = match (on_disk, bundled()) {
+        (Some(path), _) => crate::data::read(path, preset),
+        (None, Some((path, text))) => crate::data::read_text(path, text, preset),
+        (None, None) => match paths.first() {
+            Some(path) => crate::data::read(path, preset),
+            None => return Msg::DataRead(Err("no data file named".into())),
+        },
+    };
+    Msg::DataRead(read.map(Box::new).map_err(|e| e.to_string()))
 }
 
 /// The preset file at `path`, typed in the picker.

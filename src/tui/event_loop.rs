@@ -175,6 +175,7 @@ impl<B: Backend> Loop<B> {
                         overwrite,
                     } => effects::export(path, text, overwrite),
                     Command::AnswerLesson(preset) => effects::answer_lesson(*preset),
+                    Command::ReadData(paths, preset) => effects::read_data(&paths, &preset),
                     Command::Quit => return false,
                 };
                 reports.push(report);

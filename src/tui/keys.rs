@@ -101,6 +101,8 @@ pub enum Action {
     Map,
     /// Toggle the dimensionless view (the problem's dimensionless groups).
     Dimensionless,
+    /// Draw a data file over the charts whose axes it matches (`d`).
+    Data,
     /// Undo the last change.
     Undo,
     /// Show the preset's name and whole description.
@@ -212,7 +214,7 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 24] = [
+pub const BINDINGS: [Binding; 25] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
@@ -299,6 +301,11 @@ pub const BINDINGS: [Binding; 24] = [
         &[(ch('D'), Action::Dimensionless)],
         "D", "dimensionless view: the status shows the operating point in the problem's dimensionless groups (plane (a+b)/h, (a+b)/R, P/(m R), k m, mu chi, theta, mu*, mu*-mu; spatial mu*, mu*-mu, sum A/(M pbar) and per harmonic kh, beta t, A/(M pbar), phi; ? defines them), and the sweep and map forms (v, M) offer only pure numbers as the quantity; the sweep chart's x axis becomes the swept input's group, computed at each point (plane h -> (a+b)/h, P -> P/(m R), k -> k m, mu -> mu chi, R -> (a+b)/R; spatial h -> kh1), each model's curve through its own points in the sweep's order, the cursor also reading the input with its unit along the preset's model; an input without a group keeps its unit, the axis title saying '(dimensional: no group)'; the map's axes keep their units; D again goes back",
         ("D", "groups", "", 7), ALL,
+    ),
+    binding(
+        &[(ch('d'), Action::Data)],
+        "d", "draw a data file over the charts: type its path (relative to the preset's folder, else to where wearlab started); a CSV with a header of quantities and units such as `load [N/m],mu [-],mu sd [-]` and `#` notes; its points go on every chart whose axes are its columns (mu* against P, contact width against P in the sweep v, mu* against t, ...), with error bars of one sd where it has sd columns, named 'data: file.csv' in the legend, kept across edits and in the exports; an empty path takes it away",
+        ("d", "data", "", 6), ALL,
     ),
     binding(
         &[(ch('o'), Action::Open)],

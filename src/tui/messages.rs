@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use ratatui::crossterm::event::KeyEvent;
 
+use crate::data::DataSet;
 use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::engine::{Answer, Request};
 use crate::preset::{Origin, Preset, SaveTarget};
@@ -35,6 +36,8 @@ pub enum Msg {
     Explored(Box<SweepAnswer>),
     /// The program's answers to the lesson's questions at these inputs (each SI, or why not).
     LessonAnswered(Box<Preset>, Vec<Result<f64, String>>),
+    /// A data file read for the overlay, or why not (`path:line: reason`).
+    DataRead(Result<Box<DataSet>, String>),
 }
 
 /// What the loop must do after an update (the I/O and the solving happen there).
@@ -74,6 +77,9 @@ pub enum Command {
     Explore(u64, Box<SweepRequest>),
     /// Answer the lesson's questions at these inputs, answered by `LessonAnswered`.
     AnswerLesson(Box<Preset>),
+    /// Read the data file at the first of these paths that exists, for this preset, answered
+    /// by `DataRead`.
+    ReadData(Vec<PathBuf>, Box<Preset>),
     /// Leave.
     Quit,
 }

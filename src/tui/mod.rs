@@ -7,6 +7,7 @@ pub mod app;
 pub mod backend;
 pub mod chart_keys;
 pub mod charts;
+pub mod data_keys;
 pub mod effects;
 pub mod event_loop;
 pub mod form;

@@ -19,10 +19,11 @@ use crate::tui::view::windows_on_last_screen;
 
 impl App {
     /// The commands that ask for the first solve (and the first sweep, when the preset opens on
-    /// one).
+    /// one, and its data file, when it names one).
     pub fn start(&mut self) -> Vec<Command> {
         let mut commands = vec![self.request()];
         commands.extend(crate::tui::sweep_keys::sweep_request(self));
+        commands.extend(crate::tui::data_keys::of_preset(self));
         commands
     }
 }
@@ -85,6 +86,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             app.ui.mode = Mode::ConfirmExport(Box::new((path, text)));
             Vec::new()
         }
+        Msg::DataRead(result) => crate::tui::data_keys::read(app, result),
         Msg::Exported(path, result) => {
             match result {
                 Ok(()) => app.say(format!("exported the chart to {}", path.display())),
@@ -156,6 +158,13 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
         Mode::Editing(buffer) => text_key(app, key, buffer, Mode::Editing, accept_value),
         Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
         Mode::GoTo(buffer) => text_key(app, key, buffer, Mode::GoTo, chart_keys::go_to),
+        Mode::DataPath(buffer) => text_key(
+            app,
+            key,
+            buffer,
+            Mode::DataPath,
+            crate::tui::data_keys::accept,
+        ),
         Mode::Choosing(selected) => {
             let choices = app.row().param().choices().unwrap_or_default();
             match prompt_keys::prompt_action(Prompt::List, &key) {
@@ -283,6 +292,7 @@ fn text_key(
             let what = match app.ui.mode {
                 Mode::SaveAs(_) => "not saved",
                 Mode::GoTo(_) => "the cursor stays",
+                Mode::DataPath(_) => "the data stay as they were",
                 _ => "edit cancelled",
             };
             app.ui.mode = Mode::Normal;

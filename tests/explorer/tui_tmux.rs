@@ -68,7 +68,7 @@ fn wait_footer(text: &str) {
 
 /// The main screen's footer of the plane problem at 80 columns.
 const PLANE_80: &str =
-    "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u i ? help q quit";
+    "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D d o s e/E u i ? help q quit";
 
 fn resize(w: &str, h: &str) {
     tmux(&["resize-window", "-t", "e2e", "-x", w, "-y", h]);

@@ -42,11 +42,30 @@ fn the_bundled_lessons_read_their_section() {
 
 #[test]
 fn the_section_survives_a_save() {
-    for file in ["friction-or-wear-map.toml", "coating-thickness-sweep.toml"] {
+    for file in [
+        "friction-or-wear-map.toml",
+        "coating-thickness-sweep.toml",
+        "lab-friction.toml",
+    ] {
         let p = bundled(file).unwrap().unwrap();
         let again = parse(&to_toml(&p), Path::new("saved.toml")).unwrap();
         assert_eq!(again, p, "{file}");
     }
+}
+
+#[test]
+fn a_data_file_is_named_by_the_section() {
+    let lab = include_str!("../../presets/lab-friction.toml");
+    let p = parse(lab, Path::new("x.toml")).unwrap();
+    assert_eq!(p.explore.unwrap().data.as_deref(), Some("lab-friction.csv"));
+    let empty = lab.replace("data = \"lab-friction.csv\"", "data = \" \"");
+    assert_eq!(
+        error_of(&empty),
+        format!(
+            "lab/x.toml:{}: data names no file: a data file's name, e.g. data = \"friction.csv\"",
+            line_of(&empty, "data = ")
+        )
+    );
 }
 
 #[test]

@@ -38,7 +38,7 @@ fn turn(lo: f64, hi: f64, holds: impl Fn(f64) -> bool) -> f64 {
 }
 
 /// Where each bundled preset's description is checked against the program.
-const CHECKED: [(&str, &str); 21] = [
+const CHECKED: [(&str, &str); 22] = [
     ("polymer-coating.toml", "presets.rs, plane_descriptions.rs"),
     ("hertz-check.toml", "plane_descriptions.rs"),
     ("friction-half-plane.toml", "plane_descriptions.rs"),
@@ -60,6 +60,7 @@ const CHECKED: [(&str, &str); 21] = [
     ("polymer-shear-strength.toml", "general_presets.rs"),
     ("energy-split.toml", "general_presets.rs"),
     ("ground-profile.toml", "surfaces.rs"),
+    ("lab-friction.toml", "presets.rs"),
 ];
 
 #[test]

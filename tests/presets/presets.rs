@@ -297,3 +297,74 @@ fn the_polymer_coating_preset_turns_to_a_warning_where_its_description_says() {
     let sol = solve(&p.plane_inputs().with_load(2.2e5), model).unwrap();
     assert_eq!(verdict(&sol), above);
 }
+
+#[test]
+fn the_lab_friction_preset_shows_what_its_description_says() {
+    use wearlab::fit;
+    let p = preset::bundled("lab-friction.toml").unwrap().unwrap();
+    let e = p.explore.as_ref().unwrap();
+    assert_eq!(e.data.as_deref(), Some("lab-friction.csv"));
+    let file = BUNDLED_DATA
+        .iter()
+        .find(|d| d.file == "lab-friction.csv")
+        .unwrap();
+    let data =
+        wearlab::data::read_text(Path::new("presets/lab-friction.csv"), file.text, &p).unwrap();
+    // "SYNTHETIC", its parameters and noise in the header notes; 20 loads from 1 to 100 kN/m
+    assert!(data.notes[0].starts_with("SYNTHETIC data, not a measurement"));
+    assert!(data.notes.join(" ").contains("mu = 0.3, k = 2e-11 1/Pa"));
+    assert!(
+        data.notes
+            .join(" ")
+            .contains("noise of sd 0.002 in mu (seed 25")
+    );
+    assert_eq!(data.len(), 20);
+    assert_eq!(data.x.values[0], 1e3);
+    assert_eq!(data.x.values[19], 1e5);
+    // the same values as examples/lab's file, with the sd as a column
+    let example =
+        wearlab::data::read(Path::new("examples/lab/friction-against-load.csv"), &p).unwrap();
+    assert_eq!(data.measured[0].values, example.measured[0].values);
+    assert_eq!(data.measured[0].sd, Some(vec![0.002; 20]));
+    // "every point lies about 0.1 above the curve" (the start, mu = 0.2)
+    let model = p.plane.model;
+    for (&x, &y) in data.x.values.iter().zip(&data.measured[0].values) {
+        let at = solve(&p.plane_inputs().with_load(x), model)
+            .unwrap()
+            .mu_star;
+        assert!((y - at - 0.1).abs() < 0.01, "{x}: {y} against {at}");
+    }
+    // "at these loads the wear term of mu* is under 0.002, the noise" (mu = 0.3, k = 2e-11)
+    let mut truth = p.clone();
+    truth.friction.coefficient = 0.3;
+    truth.wear = 2e-11;
+    for &x in &data.x.values {
+        let excess = solve(&truth.plane_inputs().with_load(x), model)
+            .unwrap()
+            .mu_star
+            - 0.3;
+        assert!(excess.abs() < 0.002, "{x}: {excess}");
+    }
+    // "mu = 0.300 with a 95 % interval of about +-0.001"
+    let mu = p.key("friction.coefficient").unwrap();
+    let k = p.key("wear.coefficient").unwrap();
+    let one = fit::fit(&p, &data, &[mu]).unwrap();
+    let e = &one.estimates[0];
+    assert!((e.value - 0.300).abs() < 0.001, "{e:?}");
+    assert!(e.interval[0] < 0.3 && 0.3 < e.interval[1], "{e:?}");
+    let half = 0.5 * (e.interval[1] - e.interval[0]);
+    assert!((0.0005..0.002).contains(&half), "{e:?}");
+    // "mu is still found, but k is 'not determined by these data' (a range over two decades
+    // fits within the noise), and wear depth against sliding distance would determine it"
+    let both = fit::fit(&p, &data, &[mu, k]).unwrap();
+    assert!(both.estimates[0].determined && (both.estimates[0].value - 0.3).abs() < 0.002);
+    let k = &both.estimates[1];
+    assert!(!k.determined);
+    assert!(k.interval[1] / k.interval[0] > 100.0, "{k:?}");
+    let why = k.reason.as_deref().unwrap();
+    assert!(
+        why.starts_with("k is not determined by these data"),
+        "{why}"
+    );
+    assert!(why.contains("wear depth against sliding distance"), "{why}");
+}

@@ -8,6 +8,7 @@ use crate::preset::{Preset, to_toml};
 use crate::sweeps::map::{Map, MapSpec};
 
 use crate::materials;
+use crate::tui::charts::overlay::{self, Overlay};
 use crate::tui::charts::svg::{Page, regime, svg as draw_svg};
 use crate::tui::charts::{Axis, Chart, Figure, NoFigure, Plot};
 use crate::tui::form;
@@ -48,6 +49,14 @@ fn column(axis: &Axis) -> String {
     }
 }
 
+/// The column of a y axis' standard deviations: "mu* sd [-]", as a data file names it.
+fn sd_column(axis: &Axis) -> String {
+    match axis.unit {
+        "" => format!("{} sd [-]", axis.label),
+        u => format!("{} sd [{u}]", axis.label),
+    }
+}
+
 /// A CSV field, quoted when it holds a comma or a quote.
 fn field(text: &str) -> String {
     if text.contains([',', '"']) {
@@ -60,14 +69,17 @@ fn field(text: &str) -> String {
 /// The CSV text of the figure drawn for `chart` from `answer` with its pins (their plots and
 /// legend names): comment lines with the chart and the preset (TOML), then a header with units,
 /// then the rows. A plot figure has one row per point: the curve's name, then its x and y in the
-/// columns of its axes (plots that share an axis share its column); a pinned curve follows the
-/// curves, named by its pin and its own name ("pin: mu = 0.2: mu* wide").
+/// columns of its axes (plots that share an axis share its column); the overlaid data file's
+/// points follow a plot's curves ("data: friction.csv"), their standard deviations in a column
+/// of their own ("mu* sd [-]"); a pinned curve follows, named by its pin and its own name ("pin:
+/// mu = 0.2: mu* wide").
 pub fn csv(
     chart: Chart,
     answer: &Answer,
     pins: Vec<(&[Plot], String)>,
+    data: Option<&Overlay>,
 ) -> Result<String, NoFigure> {
-    let figure = chart.build(answer)?;
+    let figure = overlay::figure(chart, answer, data)?;
     let mut out = format!("# wearlab: {}\n", chart.title());
     let preset = &answer.request.preset;
     for line in caption(preset, 100) {
@@ -81,6 +93,16 @@ pub fn csv(
         out.push_str(
             "# pinned curves (dashed in the figure), named by what differs from these parameters\n",
         );
+    }
+    let measured = matches!(&figure, Figure::Plots(ps) if ps.iter().any(|p| !p.data.is_empty()));
+    if let Some(o) = data.filter(|_| measured) {
+        out.push_str(&format!(
+            "# measured points from {} (\"{}\"; one standard deviation in the sd column)\n",
+            o.set.path, o.name
+        ));
+        for note in &o.set.notes {
+            out.push_str(&format!("#   {note}\n"));
+        }
     }
     match figure {
         Figure::Map(m) => {
@@ -105,18 +127,37 @@ pub fn csv(
                 .iter()
                 .map(|p| (at(column(&p.x)), at(column(&p.y))))
                 .collect();
+            let sd_places: Vec<Option<usize>> = plots
+                .iter()
+                .map(|p| (p.data.iter().any(|d| d.sd.is_some())).then(|| at(sd_column(&p.y))))
+                .collect();
             let header: Vec<String> = columns.iter().map(|c| field(c)).collect();
             out.push_str(&format!("curve,{}\n", header.join(",")));
-            let row = |name: &str, (x, y): (f64, f64), (xc, yc): (usize, usize)| {
+            let row_with = |name: &str,
+                            (x, y): (f64, f64),
+                            (xc, yc): (usize, usize),
+                            sd: Option<(usize, f64)>| {
                 let mut row = vec![String::new(); columns.len()];
                 row[xc] = format!("{x:e}");
                 row[yc] = format!("{y:e}");
+                if let Some((sc, s)) = sd {
+                    row[sc] = format!("{s:e}");
+                }
                 format!("{},{}\n", field(name), row.join(","))
             };
-            for (p, &place) in plots.iter().zip(&places) {
+            let row = |name: &str, point: (f64, f64), place: (usize, usize)| {
+                row_with(name, point, place, None)
+            };
+            for ((p, &place), &sd_place) in plots.iter().zip(&places).zip(&sd_places) {
                 for s in p.series.iter().chain(&p.markers) {
                     for &point in &s.points {
                         out.push_str(&row(&s.name, point, place));
+                    }
+                }
+                for d in &p.data {
+                    for (k, &point) in d.points.iter().enumerate() {
+                        let sd = sd_place.zip(d.sd.as_ref().map(|s| s[k]));
+                        out.push_str(&row_with(&d.name, point, place, sd));
                     }
                 }
             }
@@ -165,15 +206,16 @@ pub fn caption(preset: &Preset, width: usize) -> Vec<String> {
 }
 
 /// The SVG of the figure drawn for `chart` from `answer`, with the pins (their plots and legend
-/// names), the y axes toggled or not, and a map's colour scale.
+/// names), the overlaid data file's points, the y axes toggled or not, and a map's colour scale.
 pub fn svg(
     chart: Chart,
     answer: &Answer,
     pins: Vec<(&[Plot], String)>,
+    data: Option<&Overlay>,
     toggled: bool,
     scale: Option<[f64; 2]>,
 ) -> Result<String, NoFigure> {
-    let figure = chart.build(answer)?;
+    let figure = overlay::figure(chart, answer, data)?;
     let page = Page {
         title: chart.title(),
         caption: caption(&answer.request.preset, 130),

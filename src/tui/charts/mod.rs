@@ -8,6 +8,7 @@ pub mod contact;
 pub mod export;
 mod gaps;
 pub mod map_lines;
+pub mod overlay;
 pub mod palette;
 mod plane;
 pub mod range;
@@ -67,6 +68,32 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
 }
 
+/// Measured points drawn over a plot (a data file's column against its x column), each with its
+/// standard deviation where the file gives one, drawn as an error bar of +- one sd.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Measured {
+    /// Legend text ("data: friction.csv").
+    pub name: String,
+    /// (x, y) pairs in the axes' SI units.
+    pub points: Vec<(f64, f64)>,
+    /// One standard deviation of each y (the y unit), when the file gives them.
+    pub sd: Option<Vec<f64>>,
+}
+
+impl Measured {
+    /// The ends of each point's error bar, (x, y - sd) and (x, y + sd); none without sd.
+    pub fn bars(&self) -> Vec<[(f64, f64); 2]> {
+        let Some(sd) = &self.sd else {
+            return Vec::new();
+        };
+        self.points
+            .iter()
+            .zip(sd)
+            .map(|(&(x, y), s)| [(x, y - s), (x, y + s)])
+            .collect()
+    }
+}
+
 /// One x-y plot.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Plot {
@@ -94,6 +121,9 @@ pub struct Plot {
     pub dim: Vec<(usize, Series)>,
     /// The legend's name of the dim parts.
     pub dim_label: String,
+    /// Measured points drawn over the curves (an overlaid data file), setting the ranges with
+    /// the focus curves.
+    pub data: Vec<Measured>,
     /// Differences of y below this (absolute, the y unit) are round-off: y values that differ by
     /// no more are drawn as the one value they round to (0: only equal values are).
     pub resolution: f64,
@@ -113,6 +143,7 @@ impl Plot {
             shaded: Vec::new(),
             dim: Vec::new(),
             dim_label: String::new(),
+            data: Vec::new(),
             resolution: 0.0,
         }
     }

@@ -46,15 +46,23 @@ pub fn plotted(points: &[(f64, f64)], x: Scale, y: Scale) -> Vec<(f64, f64)> {
 }
 
 /// Every point of a plot that sets its ranges: all curves and markers for x, the focus curves
-/// and markers for y (the other curves are overlays, clipped to that range).
-fn setting(plot: &Plot, y: bool) -> impl Iterator<Item = &(f64, f64)> {
+/// and markers for y (the other curves are overlays, clipped to that range), and the measured
+/// points with the ends of their error bars for both.
+fn setting(plot: &Plot, y: bool) -> impl Iterator<Item = (f64, f64)> + '_ {
     let take = if y { plot.focus } else { plot.series.len() };
+    let measured = plot.data.iter().flat_map(|d| {
+        d.points
+            .iter()
+            .copied()
+            .chain(d.bars().into_iter().flatten())
+    });
     plot.series
         .iter()
         .take(take)
         .chain(plot.dim.iter().filter(move |d| d.0 < take).map(|d| &d.1))
         .chain(&plot.markers)
-        .flat_map(|s| &s.points)
+        .flat_map(|s| s.points.iter().copied())
+        .chain(measured)
 }
 
 /// The y scale of a plot: its own, or when `toggled` the other one: a linear axis becomes

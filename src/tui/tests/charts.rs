@@ -64,7 +64,7 @@ fn each_charts_csv_is_its_builders_figure_with_units_in_the_column_names() {
         let answer = complete(file);
         for chart in Chart::all(answer.request.preset.problem) {
             let figure = chart.build(&answer).unwrap();
-            let text = csv(chart, &answer, Vec::new()).unwrap();
+            let text = csv(chart, &answer, Vec::new(), None).unwrap();
             let (header, rows) = table(&text);
             match &figure {
                 Figure::Map(m) => {
@@ -109,7 +109,7 @@ fn the_mu_star_chart_overlays_the_other_models_and_exports_them() {
     let chart = Chart::all(Problem::Plane)[2];
     assert_eq!(file_name(chart, Format::Csv), "wearlab-mu-against-load.csv");
     assert_eq!(file_name(chart, Format::Svg), "wearlab-mu-against-load.svg");
-    let text = csv(chart, &answer, Vec::new()).unwrap();
+    let text = csv(chart, &answer, Vec::new(), None).unwrap();
     assert!(text.contains("\ncurve,P [N/m],mu* [-]\n"), "{text}");
     assert!(
         text.contains("# E = 3.00 GPa, nu = 0.35, h = 10.0 mm,"),
@@ -140,7 +140,7 @@ fn each_charts_svg_is_xml_with_its_axes_ticks_legend_and_caption_as_text() {
         let preset = &answer.request.preset;
         for chart in Chart::all(preset.problem) {
             let figure = chart.build(&answer).unwrap();
-            let text = svg(chart, &answer, Vec::new(), false, None).unwrap();
+            let text = svg(chart, &answer, Vec::new(), None, false, None).unwrap();
             let t = texts(&text);
             let has = |s: &str| {
                 assert!(

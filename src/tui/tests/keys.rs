@@ -170,24 +170,24 @@ fn footers_fit_and_name_every_key_of_the_problem() {
     // gives the others)
     assert_eq!(
         footer(Problem::Plane, 80, PLAIN),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m x c/C f y v M D d o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 80, PLAIN),
-        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D d o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Plane, 120, PLAIN),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m x cursor c/C pin f full y log v M D groups d o s e/E u i ? help q quit"
     );
     // with --ascii the arrows and Enter take more columns: the footer still fits 80 with its end
     assert_eq!(
         footer(Problem::Spatial, 80, ASCII),
-        "^v <> nudge Enter Tab p space +/- x c/C f y v M D o s e/E u i ? help q quit"
+        "^v <> nudge Enter Tab p space +/- x c/C f y v M D d o s e/E u i ? help q quit"
     );
     assert_eq!(
         footer(Problem::Spatial, 120, PLAIN),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups d o s e/E u i ? help q quit"
     );
 }
 

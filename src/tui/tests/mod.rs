@@ -7,6 +7,7 @@ mod axes;
 mod bands;
 mod bytes;
 mod charts;
+mod data_overlay;
 mod explore;
 mod files;
 mod go_to;

@@ -252,6 +252,9 @@ impl Monkey {
                     Command::AnswerLesson(preset) => {
                         reports.push(effects::answer_lesson(*preset));
                     }
+                    Command::ReadData(paths, preset) => {
+                        reports.push(effects::read_data(&paths, &preset));
+                    }
                     Command::Quit => self.quits += 1,
                 }
             }

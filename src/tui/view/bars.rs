@@ -18,7 +18,9 @@ use crate::tui::view::{wrap, wrap_within};
 pub fn prompt(mode: &Mode) -> Option<Prompt> {
     match mode {
         Mode::Normal => None,
-        Mode::Editing(_) | Mode::SaveAs(_) | Mode::GoTo(_) => Some(Prompt::Text),
+        Mode::Editing(_) | Mode::SaveAs(_) | Mode::GoTo(_) | Mode::DataPath(_) => {
+            Some(Prompt::Text)
+        }
         Mode::Choosing(_) => Some(Prompt::List),
         Mode::Picker { .. } => Some(Prompt::Picker),
         Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
@@ -62,6 +64,14 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
             }
             (text, look)
         }
+        Mode::DataPath(buffer) => (
+            format!(
+                "data file: {} {}",
+                buffer.shown(),
+                crate::tui::data_keys::prompt(app, buffer.text())
+            ),
+            Style::default(),
+        ),
         Mode::ConfirmOverwrite(target) => (
             format!("{} exists: overwrite? y/n", target.path.display()),
             style.error(),

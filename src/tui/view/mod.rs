@@ -34,7 +34,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 
 use crate::tui::app::{App, Mode};
-use crate::tui::charts::{Figure, NoFigure, Plot, range};
+use crate::tui::charts::{Figure, NoFigure, Plot, overlay, range};
 use crate::tui::on_screen::{OnScreen, on_screen};
 use chart::Extras;
 pub use layout::MIN_SIZE;
@@ -136,7 +136,7 @@ fn draw_chart(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Fra
     let Some((answer, dim)) = shown.answer() else {
         return;
     };
-    match chart.build(answer) {
+    match overlay::figure(chart, answer, app.ui.data.as_ref()) {
         Err(NoFigure::Solving) => {}
         Err(NoFigure::Error(why)) => frame.render_widget(
             Paragraph::new(why)

@@ -16,7 +16,7 @@ use crate::tui::app::App;
 use crate::tui::charts::contact;
 use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
-use crate::tui::charts::{Figure, Plot};
+use crate::tui::charts::{Figure, Plot, overlay};
 use crate::tui::on_screen::OnScreen;
 use crate::tui::view::status_values::{Checks, mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
@@ -84,7 +84,7 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
 fn cursor_readout(app: &App, answer: &Answer) -> Option<Vec<Phrase>> {
     let cursor = app.ui.cursor?;
     let chart = app.ui.chart;
-    let Ok(Figure::Plots(plots)) = chart.build(answer) else {
+    let Ok(Figure::Plots(plots)) = overlay::figure(chart, answer, app.ui.data.as_ref()) else {
         return None;
     };
     let pins = app.ui.pins_of(chart);

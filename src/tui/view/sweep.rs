@@ -37,13 +37,17 @@ pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
     };
     let preset = &answer.request.preset;
     let dimensionless = app.explore.dimensionless;
-    match sweep::figure(
+    let mut figure = sweep::figure(
         preset.problem,
         preset.friction.coefficient,
         spec,
         curve,
         dimensionless,
-    ) {
+    );
+    if let Some(o) = &app.ui.data {
+        o.add(&mut figure);
+    }
+    match figure {
         Figure::Plots(p) => Some(p),
         Figure::Map(_) => None,
     }

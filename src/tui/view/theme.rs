@@ -225,6 +225,29 @@ impl RenderOptions {
         }
     }
 
+    /// How measured points are drawn (an overlaid data file) and their error bars: a diamond
+    /// (`O` with `--ascii`) and a vertical line in a colour no curve has, bold without colour.
+    pub fn data_inks(self) -> (Ink, Ink) {
+        let style = if self.color {
+            Style::default()
+                .fg(Color::LightRed)
+                .add_modifier(Modifier::BOLD)
+        } else {
+            Style::default().add_modifier(Modifier::BOLD)
+        };
+        let point = Ink {
+            glyph: if self.ascii { 'O' } else { '◆' },
+            solid: true,
+            style,
+        };
+        let bar = Ink {
+            glyph: if self.ascii { '|' } else { '│' },
+            solid: true,
+            style: style.remove_modifier(Modifier::BOLD),
+        };
+        (point, bar)
+    }
+
     /// How the i-th curve of pin `pin` (from 0) is drawn: the pin's number, dim, in the curve's
     /// colour.
     pub fn pin_ink(self, pin: usize, i: usize) -> Ink {

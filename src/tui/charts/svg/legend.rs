@@ -1,12 +1,12 @@
-//! The legend right of a plot in the SVG: its curves, markers, reference lines, shaded ranges,
-//! the parts where a model fails, and the pins; every curve that the plot cannot show whole is
+//! The legend right of a plot in the SVG: its curves, markers, measured points, reference lines,
+//! shaded ranges, the parts where a model fails, and the pins; every curve that the plot cannot show whole is
 //! named with its range ("off scale" wholly outside the y range, "partly off scale" where the
 //! frame cuts it), so that a figure never drops part of a curve without saying so.
 
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{Area, Chart2d, DIM, GREY, colour, err, font};
+use super::{Area, Chart2d, DATA, DIM, GREY, colour, err, font};
 use crate::tui::charts::Series;
 use crate::tui::charts::range::{Frame, bounds, plotted};
 use crate::units::format_si;
@@ -79,6 +79,16 @@ pub fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> 
     if let Some(m) = &p.markers {
         y = entry(root, (x, y), std::slice::from_ref(&m.name), |x, y| {
             root.draw(&Circle::new((x + 11, y), 4, BLACK.filled()))
+                .map_err(err)
+        })?;
+    }
+    for d in &p.data {
+        let mut lines = vec![d.name.clone()];
+        if d.sd.is_some() {
+            lines.push("bars: one standard deviation".into());
+        }
+        y = entry(root, (x, y), &lines, |x, y| {
+            root.draw(&Circle::new((x + 11, y), 4, DATA.stroke_width(2)))
                 .map_err(err)
         })?;
     }

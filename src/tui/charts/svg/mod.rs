@@ -39,6 +39,10 @@ const COLOURS: [RGBColor; 7] = [
 
 pub(super) const GREY: RGBColor = RGBColor(120, 120, 120);
 
+/// The colour of measured points and their error bars: Okabe and Ito's vermillion is a curve's,
+/// so a dark red no curve has.
+pub(super) const DATA: RGBColor = RGBColor(160, 20, 40);
+
 /// The opacity of a curve's parts where its model's own check fails.
 const DIM: f64 = 0.35;
 
@@ -272,6 +276,20 @@ fn plot(root: &Area, area: &Area, f: &Frame, pin_names: &[String]) -> Result<(),
             .into_iter()
             .filter(|q| (f.x[0]..=f.x[1]).contains(&q.0) && (f.y[0]..=f.y[1]).contains(&q.1))
             .map(|q| Circle::new(q, 4, BLACK.filled()));
+        chart.draw_series(dots).map_err(err)?;
+    }
+    // measured points: open circles over the curves, each with its error bar of one sd
+    for d in &p.data {
+        for ends in d.bars() {
+            for piece in pieces(&ends, f, f.y_scale) {
+                let bar = PathElement::new(piece, DATA.stroke_width(1));
+                chart.draw_series(std::iter::once(bar)).map_err(err)?;
+            }
+        }
+        let dots = plotted(&d.points, xs, f.y_scale)
+            .into_iter()
+            .filter(|q| (f.x[0]..=f.x[1]).contains(&q.0) && (f.y[0]..=f.y[1]).contains(&q.1))
+            .map(|q| Circle::new(q, 4, DATA.stroke_width(2)));
         chart.draw_series(dots).map_err(err)?;
     }
     axes(root, &chart, (f.x[0], f.y[0]), &x, &y)?;

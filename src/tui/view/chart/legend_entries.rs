@@ -65,6 +65,16 @@ pub(super) fn entries(
         style: marker.style,
         text: m.name.clone(),
     }));
+    let (point, _) = style.data_inks();
+    out.extend(plot.data.iter().map(|d| Entry {
+        sample: style.sample(point),
+        style: point.style,
+        text: if d.sd.is_some() {
+            format!("{} (bars: 1 sd)", d.name)
+        } else {
+            d.name.clone()
+        },
+    }));
     let (_, horizontal) = style.mark_glyphs();
     let marks_under = hidden::marks_under(frame, style, size);
     out.extend(

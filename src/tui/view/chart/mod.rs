@@ -32,7 +32,7 @@ fn frac(v: f64, [lo, hi]: [f64; 2]) -> f64 {
     (v - lo) / (hi - lo)
 }
 
-/// The curves, pins and markers of a frame in a raster of the plot area.
+/// The curves, pins, markers and measured points of a frame in a raster of the plot area.
 fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
     let mut raster = Raster::new(plot.width, plot.height, style.braille());
     let (xs, ys) = (frame.plot.x.scale, frame.y_scale);
@@ -57,6 +57,16 @@ fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
     if let Some(m) = &frame.plot.markers {
         for p in fit(&m.points) {
             raster.point(p, style.marker_ink());
+        }
+    }
+    // measured points over everything, each error bar under its point
+    let (point, bar) = style.data_inks();
+    for d in &frame.plot.data {
+        for ends in d.bars() {
+            raster.line(&fit(&ends), bar);
+        }
+        for p in fit(&d.points) {
+            raster.point(p, point);
         }
     }
     raster
