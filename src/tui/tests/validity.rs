@@ -103,13 +103,13 @@ fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
         assert!(warnings.iter().all(|w| s.contains(w)), "{s}");
     }
     assert!(small.contains("off exact strip: width 78 %"), "{small}");
-    // in one row (the cursor's readout and pins take the others), the count
+    // in one row (the cursor's readout and pins take the others), the first reason: the verdict
     let point = operating_point(&app.doc.preset.plane_inputs(), Model::Wide, 11).unwrap();
     let one: Vec<String> = validity_status::lines(&point, None, PLAIN, 80, 1)
         .iter()
         .map(|l| l.to_string())
         .collect();
-    assert_eq!(one, ["! +2 more (a taller window shows them)"]);
+    assert_eq!(one, ["! outside the tolerances: use the strip model"]);
 }
 
 #[test]

@@ -21,7 +21,8 @@ use crate::tui::view::wrapping::pack;
 /// crowded status keeps the verdict; under a model that does not hold, last and only where it
 /// fits whole), the check against the strip model once it has come (how
 /// far off), then every warning in a few words (why), each after "! "; warnings that do not fit
-/// are counted ("! +2 more (a taller window shows them)"), never cut; a verdict or check that
+/// are counted ("! +2 more (a taller window shows them)"), never cut (in a single row left, the
+/// first warning alone, uncounted); a verdict or check that
 /// does not fit ends in "…" after its last whole clause or word (`wrap_within`).
 pub fn lines(
     p: &OperatingPoint,
@@ -140,6 +141,11 @@ fn judged(
             used <= room
         })
         .count();
+    // no room for a reason and the count: the first reason alone, so that the verdict stays
+    if shown == 0 && warnings.first().is_some_and(|w| w.len() <= room) {
+        lines.extend(warnings.into_iter().take(1).flatten());
+        return lines;
+    }
     let more = warnings.len() - shown;
     lines.extend(warnings.into_iter().take(shown).flatten());
     lines.extend(prose(
