@@ -24,6 +24,7 @@ pub mod picker_entry;
 pub mod picker_keys;
 pub mod prompt_keys;
 #[cfg(unix)]
+pub mod save_name;
 pub mod signals;
 pub mod surface_keys;
 pub mod sweep_export;

@@ -4,16 +4,16 @@
 
 use crate::engine::Answer;
 use crate::engine::latest::Delivery;
-use crate::preset::{Problem, resolve_save_path};
+use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::tui::actions::{act, apply, export, open, quit};
-use crate::tui::app::{App, Command, Document, Mode, Msg};
+use crate::tui::app::{App, Command, Mode, Msg};
 use crate::tui::chart_keys;
-use crate::tui::form;
 use crate::tui::keys::{self, Open, Scope};
 use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};
+use crate::tui::save_name;
 use crate::tui::text_field::TextField;
 use crate::tui::view::windows_on_last_screen;
 
@@ -156,7 +156,7 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             None => Vec::new(),
         },
         Mode::Editing(buffer) => text_key(app, key, buffer, Mode::Editing, accept_value),
-        Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, accept_name),
+        Mode::SaveAs(buffer) => text_key(app, key, buffer, Mode::SaveAs, save_name::accept),
         Mode::GoTo(buffer) => text_key(app, key, buffer, Mode::GoTo, chart_keys::go_to),
         Mode::DataPath(buffer) => text_key(
             app,
@@ -364,48 +364,3 @@ fn accept_value(app: &mut App, buffer: String) -> Vec<Command> {
         }
     }
 }
-
-fn accept_name(app: &mut App, buffer: String) -> Vec<Command> {
-    let places = &app.places;
-    match resolve_save_path(&buffer, places.home.as_deref(), places.presets.as_deref()) {
-        Ok(target) => {
-            app.ui.mode = Mode::Normal;
-            with_provenance(&mut app.doc);
-            vec![Command::Save {
-                target,
-                preset: Box::new(app.doc.preset.clone()),
-                overwrite: false,
-                origin: app.doc.origin(),
-            }]
-        }
-        Err(why) => {
-            app.complain(why);
-            Vec::new()
-        }
-    }
-}
-
-/// Marks an edited preset before it is saved, so that a copy never passes for the original:
-/// its description starts with what changed since it was opened (`Edited from "<name>": mu 0.1
-/// -> 0.3.`) and its name ends in "(edited)".
-fn with_provenance(doc: &mut Document) {
-    let changed = form::differences(&doc.opened, &doc.preset);
-    if changed.is_empty() {
-        return;
-    }
-    let line = format!(
-        "Edited from \"{}\": {}.",
-        doc.opened.name,
-        changed.join(", ")
-    );
-    let p = &mut doc.preset;
-    if !p.description.starts_with(&line) {
-        p.description = format!("{line}\n{}", p.description);
-    }
-    if !p.name.ends_with(EDITED) {
-        p.name = format!("{}{EDITED}", p.name);
-    }
-}
-
-/// The end of an edited copy's name.
-const EDITED: &str = " (edited)";
