@@ -108,22 +108,22 @@ fn a_session_in_tmux() {
     // the footers of both problems at 80 and 120 columns
     assert_eq!(footer(), PLANE_80);
     resize("120", "40");
-    wait_for("D groups o s e/E u i ? help q quit");
+    wait_for("D groups d o s e/E u i ? help q quit");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem m model x cursor c/C pin f full y log v sweep M map D groups o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem m x cursor c/C pin f full y log v M D groups d o s e/E u i ? help q quit"
     );
     keys(&["p"]);
     wait_for("v M D groups");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p problem space +/- x cursor c/C pin f full y log v M D groups d o s e/E u i ? help q quit"
     );
     resize("80", "24");
     wait_for("space +/- x c/C");
     assert_eq!(
         footer(),
-        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D o s e/E u i ? help q quit"
+        "↑↓ ←→ nudge ⏎ Tab chart p space +/- x c/C f y v M D d o s e/E u i ? help q quit"
     );
     keys(&["u"]);
     wait_for("undo: problem spatial -> plane");
