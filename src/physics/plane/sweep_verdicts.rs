@@ -133,6 +133,12 @@ fn read(grid: &[usize], ratios: &[Option<[f64; 2]>], g: usize, k: usize) -> Opti
         let value = lo[c] + t * (hi[c] - lo[c]);
         ((value - 1.0).abs() > 0.5 * bound + BAND).then_some(value < 1.0)
     });
+    combined(sides)
+}
+
+/// The verdict from each deviation's side of its tolerance (true within, false beyond, None
+/// uncertain): false where one is beyond, true where both are within, else None.
+pub(crate) fn combined(sides: [Option<bool>; 2]) -> Option<bool> {
     if sides.contains(&Some(false)) {
         Some(false)
     } else if sides.iter().all(|s| *s == Some(true)) {

@@ -11,7 +11,7 @@ use std::collections::HashMap;
 use std::sync::Mutex;
 
 use crate::physics::plane::strip_check::measures;
-use crate::physics::plane::sweep_verdicts::{BAND, Measured, measure};
+use crate::physics::plane::sweep_verdicts::{BAND, Measured, combined, measure};
 use crate::physics::plane::validity::{Aspect, estimate};
 use crate::physics::plane::{Model, PlaneSolution, exponent};
 
@@ -113,13 +113,7 @@ fn read(list: &[(f64, [f64; 2])], x: f64) -> Option<bool> {
         let value = lo.1[c] + t * (hi.1[c] - lo.1[c]);
         ((value - 1.0).abs() > bound + BAND).then_some(value < 1.0)
     });
-    if sides.contains(&Some(false)) {
-        Some(false)
-    } else if sides.iter().all(|s| *s == Some(true)) {
-        Some(true)
-    } else {
-        None
-    }
+    combined(sides)
 }
 
 #[cfg(test)]
