@@ -17,6 +17,7 @@ mod quantities;
 mod run;
 mod shapes_cli;
 mod solve_output;
+mod surface_bad_files;
 mod surface_cli;
 mod surface_set_cli;
 mod surface_statistics_cli;
