@@ -1,7 +1,13 @@
 //! The bundled height-map presets show what their descriptions say.
 
+use wearlab::physics::spatial::partial::Setup;
 use wearlab::physics::spatial::pipeline;
 use wearlab::preset;
+
+/// Within half a unit of the last digit of `said`, given as its number of decimals.
+fn quoted(value: f64, said: f64, decimals: i32) -> bool {
+    (value - said).abs() <= 0.5 * 10f64.powi(-decimals) * (1.0 + 1e-9)
+}
 
 /// (a, b) agree to `rel` of b.
 fn near(a: f64, b: f64, rel: f64) -> bool {
@@ -44,6 +50,33 @@ fn the_thin_layer_wears_every_mode_at_one_rate_as_its_description_says() {
         s0.rms_height * (-beta * r.time).exp(),
         0.001
     ));
+    // "every mode decays at nearly the same rate": each Fourier mode's closed-form rate
+    // (docs/physics/spatial.md section 3, friction included) lies between the quoted 6.71 1/s
+    // of the shortest wave and the Winkler rate of the longest
+    let rates = Setup::new(&inputs, 8).unwrap().decay_rates();
+    let slowest = rates.iter().copied().fold(f64::INFINITY, f64::min);
+    let fastest = rates.iter().copied().fold(0.0, f64::max);
+    println!(
+        "{} modes decay at {slowest:.4} to {fastest:.4} 1/s",
+        rates.len()
+    );
+    assert!(quoted(slowest, 6.71, 2) && quoted(fastest, 6.73, 2));
+    // so the PSD falls as a whole: every bin of the band keeps e^(-2 beta t) = 0.068 of its
+    // power (the bins above the cutoff hold only the transform's round-off)
+    let cutoff = 2.0 * std::f64::consts::PI / 60e-6;
+    let winkler = (-2.0 * beta * r.time).exp();
+    assert!(quoted(winkler, 0.068, 3));
+    let band: Vec<f64> = (s0.psd.wavenumber.iter().zip(&s0.psd.psd))
+        .zip(&s.psd.psd)
+        .filter(|((q, _), _)| **q < cutoff)
+        .map(|((_, c0), c)| c / c0)
+        .collect();
+    println!("PSD kept per bin of the band, longest waves first: {band:.4?}");
+    assert!(band.len() >= 16);
+    assert!(
+        band.iter().all(|kept| near(*kept, winkler, 0.01)),
+        "{band:?}"
+    );
     let ratio = |s: wearlab::physics::spatial::result::SurfaceResult| s.rms_slope / s.rms_height;
     assert!(near(ratio(s), 2.56e4, 0.002) && near(ratio(s0), 2.56e4, 0.002));
     assert!(near(r.contact.min_pressure, 50e6, 0.003));
