@@ -9,6 +9,7 @@
 
 mod cache;
 mod cell;
+pub mod fit_worker;
 mod footprint;
 pub mod latest;
 mod output;

@@ -148,6 +148,8 @@ pub fn act(app: &mut App, action: Action) -> Vec<Command> {
         Action::Sweep => sweep_form_keys::open(app, View::Sweep),
         Action::Map => sweep_form_keys::open(app, View::Map),
         Action::Data => crate::tui::data_keys::open(app),
+        Action::Fit => crate::tui::fit_keys::open(app),
+        Action::StopFit => crate::tui::fit_keys::stop(app),
         Action::Dimensionless => {
             sweep_keys::toggle_dimensionless(app);
             Vec::new()

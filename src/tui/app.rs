@@ -13,6 +13,7 @@ use crate::preset::{Origin, Preset, Problem, SaveTarget};
 use crate::tui::charts::export::Format;
 use crate::tui::charts::overlay::Overlay;
 use crate::tui::charts::{Chart, Plot};
+use crate::tui::fit_state::{FitForm, FitReport, Fitting};
 use crate::tui::form::{self, Change, Row};
 use crate::tui::lesson_state::{LessonState, Quiz, invitation};
 use crate::tui::sweep_state::Explore;
@@ -136,6 +137,10 @@ pub enum Mode {
     Form(Box<SweepForm>),
     /// Answering the lesson's questions (`a`).
     Questions(Quiz),
+    /// Choosing the inputs a fit frees (`F`).
+    FitForm(FitForm),
+    /// Reading a fit's result, scrolled by this many lines.
+    FitResult(Box<FitReport>, u16),
 }
 
 /// The UI state.
@@ -161,6 +166,10 @@ pub struct Ui {
     pub pins: Vec<Pin>,
     /// The data file drawn over the charts whose axes it matches, kept across edits.
     pub data: Option<Overlay>,
+    /// The fit running on the fit thread, if any.
+    pub fitting: Option<Fitting>,
+    /// The fit thread's requests so far (the generation of the newest).
+    pub fit_runs: u64,
     /// The chart has the whole screen but the status.
     pub expanded: bool,
     /// The charts whose y axis is toggled (log, symmetric log, or back to linear).
@@ -280,6 +289,8 @@ impl App {
                 map_cell: None,
                 pins: Vec::new(),
                 data: None,
+                fitting: None,
+                fit_runs: 0,
                 expanded: false,
                 log_y: Vec::new(),
                 heat_scale: None,

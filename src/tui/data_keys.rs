@@ -92,6 +92,20 @@ pub fn of_preset(app: &App) -> Option<Command> {
     ))
 }
 
+/// The first clause of a file's notes, whole: its `#` lines are one text, a sentence running on
+/// from one line to the next, cut at the first ". ", ": " or "; " (a message of two lines at
+/// 80 columns holds it, where a line of the file would end mid-sentence); None without notes.
+fn first_clause(notes: &[String]) -> Option<String> {
+    let text = notes.join(" ");
+    let text = text.trim();
+    let end = [". ", ": ", "; "]
+        .iter()
+        .filter_map(|s| text.find(s))
+        .min()
+        .unwrap_or(text.len());
+    (!text.is_empty()).then(|| text[..end].trim_end_matches('.').to_string())
+}
+
 /// The file read: drawn on the charts it matches, or why not.
 pub fn read(app: &mut App, result: Result<Box<DataSet>, String>) -> Vec<Command> {
     let overlay = match result {
@@ -128,10 +142,7 @@ pub fn read(app: &mut App, result: Result<Box<DataSet>, String>) -> Vec<Command>
         overlay.measures(),
         set.len()
     );
-    let note = set
-        .notes
-        .first()
-        .map_or(String::new(), |n| format!("; # {n}"));
+    let note = first_clause(&set.notes).map_or(String::new(), |n| format!("; # {n}"));
     if drawn.is_empty() && answered.is_none() {
         app.say(format!(
             "{what}, drawn on the charts whose axes match{note}"

@@ -6,6 +6,7 @@ use std::io;
 use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender};
 use std::time::{Duration, Instant};
 
+use crate::engine::fit_worker::{FitAnswer, FitWorker};
 use crate::engine::sweep_worker::{SweepAnswer, SweepWorker};
 use crate::engine::{Answer, Worker};
 use ratatui::Terminal;
@@ -30,6 +31,8 @@ pub enum LoopEvent {
     Answer(Box<Answer>),
     /// An answer from the explorer's thread (a sweep, a pass of a map).
     Explored(Box<SweepAnswer>),
+    /// A fit done on the fit thread.
+    Fitted(Box<FitAnswer>),
     /// A signal that ends the explorer (its number; `signals.rs`).
     Signal(i32),
 }
@@ -53,6 +56,7 @@ pub struct Loop<B: Backend> {
     wake: Receiver<LoopEvent>,
     worker: Worker,
     explorer: SweepWorker,
+    fitter: FitWorker,
     next_frame: Instant,
     ending: Ending,
 }
@@ -69,6 +73,8 @@ impl<B: Backend> Loop<B> {
         let explored = tx.clone();
         let explorer =
             SweepWorker::spawn(move |a| explored.send(LoopEvent::Explored(Box::new(a))).is_ok());
+        let fitted = tx.clone();
+        let fitter = FitWorker::spawn(move |a| fitted.send(LoopEvent::Fitted(Box::new(a))).is_ok());
         let worker = Worker::spawn(move |a| tx.send(LoopEvent::Answer(Box::new(a))).is_ok());
         let mut l = Loop {
             terminal,
@@ -77,6 +83,7 @@ impl<B: Backend> Loop<B> {
             wake: rx,
             worker,
             explorer,
+            fitter,
             next_frame: Instant::now() + FRAME,
             ending: Ending::Quit,
         };
@@ -161,6 +168,10 @@ impl<B: Backend> Loop<B> {
                         self.explorer.submit(generation, *request);
                         continue;
                     }
+                    Command::Fit(generation, job) => {
+                        self.fitter.submit(generation, *job);
+                        continue;
+                    }
                     Command::ListPresets => effects::list_presets(&self.app.places),
                     Command::ReadPreset(path) => effects::read_preset(path),
                     Command::Save {
@@ -198,5 +209,6 @@ fn message(wake: LoopEvent) -> Option<Msg> {
         LoopEvent::Input(_) | LoopEvent::Signal(_) => None,
         LoopEvent::Answer(answer) => Some(Msg::Answer(answer)),
         LoopEvent::Explored(answer) => Some(Msg::Explored(answer)),
+        LoopEvent::Fitted(answer) => Some(Msg::Fitted(answer)),
     }
 }

@@ -4,47 +4,11 @@
 
 use crate::preset::Problem;
 
+pub use crate::tui::cursor_move::CursorMove;
 pub use crate::tui::key_scope::{Open, Scope};
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
 use crate::tui::view::theme::RenderOptions;
-
-/// Where a cursor key moves a cursor: `[ ]` a short step back or forward (a data point along a
-/// curve, a grid point along x on a map), `{ }` a long one (ten data points along a curve, a grid
-/// point along y on a map).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CursorMove {
-    /// `[`: a short step back.
-    Back,
-    /// `]`: a short step forward.
-    Forward,
-    /// `{`: a long step back.
-    LongBack,
-    /// `}`: a long step forward.
-    LongForward,
-}
-
-impl CursorMove {
-    /// The data points a curve's cursor moves (negative: left): 1 for `[ ]`, 10 for `{ }`.
-    pub fn data_points(self) -> i32 {
-        match self {
-            CursorMove::Back => -1,
-            CursorMove::Forward => 1,
-            CursorMove::LongBack => -10,
-            CursorMove::LongForward => 10,
-        }
-    }
-
-    /// The grid points a map's cursor moves (columns, rows): `[ ]` along x, `{ }` along y.
-    pub fn grid_step(self) -> (i32, i32) {
-        match self {
-            CursorMove::Back => (-1, 0),
-            CursorMove::Forward => (1, 0),
-            CursorMove::LongBack => (0, -1),
-            CursorMove::LongForward => (0, 1),
-        }
-    }
-}
 
 /// What a key on the main screen does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -103,6 +67,10 @@ pub enum Action {
     Dimensionless,
     /// Draw a data file over the charts whose axes it matches (`d`).
     Data,
+    /// Fit inputs to the data drawn (`F`).
+    Fit,
+    /// Stop a running fit (Esc).
+    StopFit,
     /// Undo the last change.
     Undo,
     /// Show the preset's name and whole description.
@@ -214,7 +182,7 @@ const fn nudge(up: bool, large: bool) -> Action {
 
 /// The main screen's key table, in help order.
 #[rustfmt::skip]
-pub const BINDINGS: [Binding; 25] = [
+pub const BINDINGS: [Binding; 26] = [
     binding(
         &[(key(KeyCode::Up), Action::PrevField), (ch('k'), Action::PrevField),
           (key(KeyCode::Down), Action::NextField), (ch('j'), Action::NextField)],
@@ -306,6 +274,11 @@ pub const BINDINGS: [Binding; 25] = [
         &[(ch('d'), Action::Data)],
         "d", "draw a data file over the charts: type its path (relative to the preset's folder, else to where wearlab started); a CSV with a header of quantities and units such as `load [N/m],mu [-],mu sd [-]` and `#` notes; its points go on every chart whose axes are its columns (mu* against P, contact width against P in the sweep v, mu* against t, ...), with error bars of one sd where it has sd columns, named 'data: file.csv' in the legend, kept across edits and in the exports; an empty path takes it away",
         ("d", "data", "", 6), ALL,
+    ),
+    binding(
+        &[(ch('F'), Action::Fit), (key(KeyCode::Esc), Action::StopFit)],
+        "F, Esc", "fit inputs to the data drawn (d): choose the inputs to free (mu and k first; space frees one), Enter fits them while you keep working (Esc or an edit stops it); the best values enter the form as one step (u undoes it) and a window gives each with its 95 % interval, the residual, and in words an input the data do not determine with the measurement that would",
+        ("", "", "", 0), ALL,
     ),
     binding(
         &[(ch('o'), Action::Open)],

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use ratatui::crossterm::event::KeyEvent;
 
 use crate::data::DataSet;
+use crate::engine::fit_worker::{FitAnswer, FitJob};
 use crate::engine::sweep_worker::{SweepAnswer, SweepRequest};
 use crate::engine::{Answer, Request};
 use crate::preset::{Origin, Preset, SaveTarget};
@@ -38,6 +39,8 @@ pub enum Msg {
     LessonAnswered(Box<Preset>, Vec<Result<f64, String>>),
     /// A data file read for the overlay, or why not (`path:line: reason`).
     DataRead(Result<Box<DataSet>, String>),
+    /// The fit thread finished a fit.
+    Fitted(Box<FitAnswer>),
 }
 
 /// What the loop must do after an update (the I/O and the solving happen there).
@@ -80,6 +83,9 @@ pub enum Command {
     /// Read the data file at the first of these paths that exists, for this preset, answered
     /// by `DataRead`.
     ReadData(Vec<PathBuf>, Box<Preset>),
+    /// Fit on the fit thread (generation attached), or stop the running fit; a fit is
+    /// answered by `Fitted`.
+    Fit(u64, Box<FitJob>),
     /// Leave.
     Quit,
 }

@@ -37,6 +37,8 @@ pub enum PromptAction {
     Left,
     /// The next choice of a form's row, or the cursor right in typed text.
     Right,
+    /// Choose or leave the highlighted entry of a list of toggles.
+    Toggle,
 }
 
 /// The kinds of prompt, for their key lists.
@@ -56,11 +58,13 @@ pub enum Prompt {
     Form,
     /// The lesson's questions, an answer being typed.
     Quiz,
+    /// A list of toggles (the inputs a fit frees).
+    Toggles,
 }
 
 /// The keys of each prompt with their footer text ("" for a key the footer does not name).
 #[rustfmt::skip]
-pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 58] = [
+pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 69] = [
     (Prompt::Text, key(KeyCode::Enter), PromptAction::Accept, "⏎ apply"),
     (Prompt::Text, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
     (Prompt::Text, key(KeyCode::Backspace), PromptAction::Backspace, "⌫ delete"),
@@ -119,6 +123,17 @@ pub const PROMPT_KEYS: [(Prompt, Key, PromptAction, &str); 58] = [
     (Prompt::Quiz, key(KeyCode::Home), PromptAction::First, ""),
     (Prompt::Quiz, key(KeyCode::End), PromptAction::Last, ""),
     (Prompt::Quiz, key(KeyCode::Esc), PromptAction::Cancel, "Esc close"),
+    (Prompt::Toggles, key(KeyCode::Up), PromptAction::Up, "↑↓ input"),
+    (Prompt::Toggles, ch('k'), PromptAction::Up, ""),
+    (Prompt::Toggles, key(KeyCode::Down), PromptAction::Down, ""),
+    (Prompt::Toggles, ch('j'), PromptAction::Down, ""),
+    (Prompt::Toggles, key(KeyCode::PageUp), PromptAction::PageUp, ""),
+    (Prompt::Toggles, key(KeyCode::PageDown), PromptAction::PageDown, ""),
+    (Prompt::Toggles, key(KeyCode::Home), PromptAction::First, ""),
+    (Prompt::Toggles, key(KeyCode::End), PromptAction::Last, ""),
+    (Prompt::Toggles, ch(' '), PromptAction::Toggle, "space free/fixed"),
+    (Prompt::Toggles, key(KeyCode::Enter), PromptAction::Accept, "⏎ fit"),
+    (Prompt::Toggles, key(KeyCode::Esc), PromptAction::Cancel, "Esc cancel"),
 ];
 
 /// What a key does in a prompt, if anything.

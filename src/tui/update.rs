@@ -31,6 +31,7 @@ impl App {
 /// Changes the model for one message; returns what the loop must do.
 pub fn update(app: &mut App, msg: Msg) -> Vec<Command> {
     let mut commands = dispatch(app, msg);
+    commands.extend(crate::tui::fit_keys::stale(app));
     commands.extend(crate::tui::sweep_keys::sweep_request(app));
     commands
 }
@@ -87,6 +88,7 @@ fn dispatch(app: &mut App, msg: Msg) -> Vec<Command> {
             Vec::new()
         }
         Msg::DataRead(result) => crate::tui::data_keys::read(app, result),
+        Msg::Fitted(answer) => crate::tui::fit_keys::fitted(app, *answer),
         Msg::Exported(path, result) => {
             match result {
                 Ok(()) => app.say(format!("exported the chart to {}", path.display())),
@@ -250,6 +252,13 @@ fn on_key(app: &mut App, key: KeyEvent) -> Vec<Command> {
             }
         }
         Mode::Form(form) => crate::tui::sweep_form_keys::key(app, *form, key),
+        Mode::FitForm(form) => crate::tui::fit_keys::key(app, form, key),
+        Mode::FitResult(report, scroll) => {
+            let last = crate::tui::view::fit::report_last(&report, windows_on_last_screen(app));
+            app.ui.mode = prompt_keys::scrolled(&key, scroll, last)
+                .map_or(Mode::Normal, |s| Mode::FitResult(report, s));
+            Vec::new()
+        }
         Mode::ConfirmQuit(from) => {
             if yes(&key) {
                 return vec![Command::Quit];

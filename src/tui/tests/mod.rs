@@ -10,6 +10,7 @@ mod charts;
 mod data_overlay;
 mod explore;
 mod files;
+mod fit;
 mod go_to;
 mod groups;
 mod kept_save;

@@ -311,7 +311,7 @@ fn help_scrolling_stops_at_the_end_of_the_text() {
             "{w}x{h}: the help fits without scrolling ({last})"
         );
         press(&mut app, KeyCode::Char('?'));
-        for _ in 0..14 {
+        for _ in 0..20 {
             press(&mut app, KeyCode::PageDown);
         }
         assert_eq!(app.ui.mode, Mode::Help(last), "{w}x{h}");

@@ -23,7 +23,8 @@ pub fn prompt(mode: &Mode) -> Option<Prompt> {
         }
         Mode::Choosing(_) => Some(Prompt::List),
         Mode::Picker { .. } => Some(Prompt::Picker),
-        Mode::Help(_) | Mode::About(_) => Some(Prompt::Help),
+        Mode::Help(_) | Mode::About(_) | Mode::FitResult(..) => Some(Prompt::Help),
+        Mode::FitForm(_) => Some(Prompt::Toggles),
         Mode::Form(_) => Some(Prompt::Form),
         Mode::Questions(_) => Some(Prompt::Quiz),
         Mode::ConfirmOverwrite(_)

@@ -6,6 +6,7 @@ pub mod axis;
 pub mod bars;
 pub mod chart;
 pub mod contact_status;
+pub mod fit;
 pub mod form;
 pub mod groups_status;
 pub mod heatmap;
@@ -77,6 +78,8 @@ pub fn view(app: &App, style: RenderOptions, frame: &mut Frame) {
         Mode::Choosing(selected) => popups::choices(app, *selected, style, frame, areas.form),
         Mode::Form(form) => sweep::form(form, style, frame, area),
         Mode::Questions(quiz) => lesson::draw(app, quiz, style, frame, over),
+        Mode::FitForm(form) => fit::form(app, form, style, frame, over),
+        Mode::FitResult(report, scroll) => fit::report(report, *scroll, style, frame, over),
         _ => {}
     }
     style.to_ascii(frame.buffer_mut());
