@@ -7,7 +7,10 @@
 //!   each model solved at the point (whatever the preset's model), its measurements against the
 //!   strip model shared between the samples whose groups agree (`verdict_table`; the lines'
 //!   bisection below measures each of its points itself);
-//! - complete contact (spatial): the report's `contact.complete`.
+//! - complete contact (spatial): the report's `contact.complete`;
+//! - yield (plane, with a yield strength or hardness given): where the preset's model's contact
+//!   starts to yield (`map_yield`, judged from the second pass on: each judge costs 10-50 map
+//!   points).
 //!
 //! Each crossing between two computed points is located on its edge: in the final pass by
 //! bisection on the verdict for the plane lines (each step a wide or narrow solve, and a strip
@@ -30,6 +33,7 @@ use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
 use crate::sweeps::curve::{holds, solve_at_until};
 use crate::sweeps::locate::{Node, Segment, between, bisect, contour};
+use crate::sweeps::map_yield;
 use crate::sweeps::point::Point;
 use crate::sweeps::quantity::QuantityKey;
 
@@ -59,6 +63,10 @@ pub struct Sample {
     pub complete: Option<bool>,
     /// Spatial: the smallest complete-contact pressure p_cc [Pa] (negative where partial).
     pub min_pressure: Option<f64>,
+    /// Plane, with a yield strength or hardness given: whether the preset's model's contact
+    /// yields here (`yield_onset::judge`); None without a strength, where yield is not judged
+    /// (the narrow model) and until a pass after the first has judged the point.
+    pub yields: Option<bool>,
 }
 
 /// Which line.
@@ -70,6 +78,8 @@ pub enum LineKind {
     Validity(Model),
     /// Where complete contact is lost (spatial).
     CompleteContact,
+    /// Where the contact starts to yield (plane, with a yield strength or hardness).
+    Yield,
 }
 
 /// A line on the map: segments in the parameters' units (x, y).
@@ -151,6 +161,7 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], table: &VerdictTable, sto
             narrow_holds: None,
             complete: Some(s.result.contact.complete),
             min_pressure: Some(s.result.contact.min_pressure),
+            yields: None,
         };
     }
     // the wide and narrow models' own solutions, the preset's reused when it is one of them
@@ -176,6 +187,7 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], table: &VerdictTable, sto
         narrow_holds: own(&narrow, &main).map(|p| judged(p, table)),
         complete: None,
         min_pressure: None,
+        yields: None,
     }
 }
 
@@ -204,6 +216,7 @@ pub fn regime_map<'s>(
 ) -> Option<Map> {
     let stop = stop.into();
     let table = VerdictTable::new();
+    let yield_judged = map_yield::judged(preset);
     let (x, y) = (spec.x.values(), spec.y.values());
     let (nx, ny) = (x.len(), y.len());
     let mut map = Map {
@@ -214,6 +227,8 @@ pub fn regime_map<'s>(
         x,
         y,
     };
+    let mut judged = vec![false; nx * ny];
+    let first = map.stride;
     loop {
         let todo: Vec<usize> = indices(ny, map.stride)
             .iter()
@@ -234,6 +249,11 @@ pub fn regime_map<'s>(
         for (k, s) in found.into_iter().collect::<Option<Vec<_>>>()? {
             map.samples[k] = Some(s);
         }
+        // yield after the first pass (the first screen comes without its cost), or in the only
+        // pass of a small map
+        if yield_judged && (map.stride < first || map.stride == 1) {
+            judge_yields(preset, spec, &mut map, &mut judged, stop)?;
+        }
         map.lines = lines(preset, spec, &map, stop)?;
         on_pass(&map);
         if map.stride == 1 {
@@ -243,8 +263,47 @@ pub fn regime_map<'s>(
     }
 }
 
+/// Judges yield at every computed sample of `map` not judged yet (`done` marks them, row-major
+/// as the samples), in parallel; None when `stop` said so before the last.
+fn judge_yields(
+    preset: &Preset,
+    spec: &MapSpec,
+    map: &mut Map,
+    done: &mut [bool],
+    stop: Stop,
+) -> Option<()> {
+    let nx = map.x.len();
+    let todo: Vec<usize> = (0..map.samples.len())
+        .filter(|&k| map.samples[k].is_some() && !done[k])
+        .collect();
+    let found: Vec<Option<(usize, Option<bool>)>> = todo
+        .into_par_iter()
+        .map(|k| {
+            if stop.now() {
+                return None;
+            }
+            let yields = map_yield::yields_at(
+                preset,
+                [spec.x, spec.y],
+                [map.x[k % nx], map.y[k / nx]],
+                stop,
+            );
+            Some((k, yields))
+        })
+        .collect();
+    for (k, yields) in found.into_iter().collect::<Option<Vec<_>>>()? {
+        if let Some(s) = map.samples[k].as_mut() {
+            s.yields = yields;
+        }
+        done[k] = true;
+    }
+    Some(())
+}
+
 /// Bisection steps locating a line on an edge of the final pass: 2^-20 of the edge.
 const BISECTIONS: usize = 20;
+/// Bisection steps locating the yield line: 2^-12 of the edge.
+const YIELD_BISECTIONS: usize = 12;
 
 /// A verdict at a sample.
 type Verdict = fn(&Sample) -> Option<bool>;
@@ -255,6 +314,7 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
             (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
             (LineKind::Validity(Model::Wide), |s| s.wide_holds),
             (LineKind::Validity(Model::Narrow), |s| s.narrow_holds),
+            (LineKind::Yield, |s| s.yields),
         ],
         Problem::Spatial => vec![(LineKind::CompleteContact, |s| s.complete)],
     };
@@ -283,6 +343,13 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
                 }
                 // a coarse pass is replaced soon: the middle of the edge is enough
                 _ if map.stride > 1 => 0.5,
+                // each step a judge of 4-20 ms: to 2^-12 of the edge, below a screen's cell
+                LineKind::Yield => bisect(YIELD_BISECTIONS, side(a)?, |u| {
+                    if stop.now() {
+                        return None;
+                    }
+                    map_yield::yields_at(preset, [spec.x, spec.y], point(a, b, u), stop)
+                })?,
                 _ => bisect(BISECTIONS, side(a)?, |u| {
                     if stop.now() {
                         return None;
@@ -320,6 +387,6 @@ fn verdict_at(
                 .map(|t| t > 0.0)
         }
         LineKind::Validity(model) => solve(model).map(|p| holds(&p)),
-        LineKind::CompleteContact => None,
+        LineKind::CompleteContact | LineKind::Yield => None,
     }
 }

@@ -10,6 +10,7 @@ pub mod curve;
 pub mod groups;
 pub mod locate;
 pub mod map;
+pub mod map_yield;
 pub mod output;
 pub mod point;
 pub mod quantity;

@@ -4,6 +4,7 @@
 mod engine;
 mod explore_cancel;
 mod explore_map;
+mod map_yield;
 mod tui_monkey;
 mod tui_signals;
 mod tui_tmux;

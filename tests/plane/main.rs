@@ -21,5 +21,6 @@ mod plane_validity;
 mod plane_wide;
 mod plane_yield;
 mod shape_validity;
+mod strip_check_words;
 mod sweep_verdicts;
 mod validity_study;

@@ -112,6 +112,10 @@ impl StripCheck {
             StripCheck::Measured(d) => lead
                 .then_words("off the exact strip solution by")
                 .then_phrase(percentages(d)),
+            StripCheck::Estimated { why, estimate } if estimate.within_tolerance() => lead
+                .then_words("estimated to match the exact strip solution within")
+                .then_phrase(percentages(estimate))
+                .then_words(&format!("({why})")),
             StripCheck::Estimated { why, estimate } => lead
                 .then_words("estimated off by")
                 .then_phrase(percentages(estimate))
@@ -122,7 +126,8 @@ impl StripCheck {
     /// The same in at most 46 columns, for a status too small for the long line: "off exact
     /// strip: width 227 %, mu*-mu 12 %" outside the tolerances ("est. off ..." for an estimate),
     /// "within 0.1 % of the exact strip solution" (the larger of the two deviations) inside
-    /// them. None where `describe` is the only form.
+    /// them ("est. within ..." for an estimate): an agreement never reads as "off". None where
+    /// `describe` is the only form.
     pub fn describe_short(&self) -> Option<Phrase> {
         let short = |x: f64| {
             let percent = 100.0 * x;
@@ -132,14 +137,18 @@ impl StripCheck {
                 format!("{percent:.1} %")
             }
         };
+        let agreement = |lead: &str, d: &Deviation| {
+            let larger = d.contact_width.max(d.mu_star_minus_mu);
+            Some(
+                Phrase::words(lead)
+                    .then(within(larger))
+                    .then_words("of the exact strip solution"),
+            )
+        };
         let (lead, d) = match self {
-            StripCheck::Measured(d) if d.within_tolerance() => {
-                let larger = d.contact_width.max(d.mu_star_minus_mu);
-                return Some(
-                    Phrase::words("within")
-                        .then(within(larger))
-                        .then_words("of the exact strip solution"),
-                );
+            StripCheck::Measured(d) if d.within_tolerance() => return agreement("within", d),
+            StripCheck::Estimated { estimate, .. } if estimate.within_tolerance() => {
+                return agreement("est. within", estimate);
             }
             StripCheck::Measured(d) if !d.within_tolerance() => ("off exact strip", d),
             StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),

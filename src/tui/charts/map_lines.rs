@@ -10,5 +10,6 @@ pub fn line_key(kind: LineKind) -> (char, &'static str) {
         LineKind::Validity(m) if m.name() == "wide" => ('W', "wide model's validity limit"),
         LineKind::Validity(_) => ('N', "narrow (Winkler) model's validity limit"),
         LineKind::CompleteContact => ('C', "complete contact lost"),
+        LineKind::Yield => ('Y', "yield onset: largest von Mises stress = Y"),
     }
 }

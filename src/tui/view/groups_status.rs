@@ -60,12 +60,16 @@ fn plane(
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
+    with_validity((&plane_items(p), &[]), p, checks, style, width, height)
+}
+
+/// The groups of a plane operating point, in the order the status shows them.
+pub fn plane_items(p: &OperatingPoint) -> Vec<String> {
     let s = &p.solution;
     let mu = s.inputs.friction.coefficient;
-    let items: Vec<String> = (groups::plane(s, &p.validity).iter())
+    (groups::plane(s, &p.validity).iter())
         .map(|g| item(g, mu))
-        .collect();
-    with_validity(&items, p, checks, style, width, height)
+        .collect()
 }
 
 fn spatial(

@@ -2,7 +2,8 @@
 //! without colour), its y ticks on the left, x ticks under it, a colour bar with ticks on the
 //! right, and the library's lines drawn over it as letters, the same with and without colour:
 //! `0` theta = 0, `W` and `N` where the wide and the narrow model's validity check changes, `C`
-//! where complete contact is lost; `+` the preset's own point, `X` the cursor. While the map is
+//! where complete contact is lost, `Y` where the contact starts to yield; `+` the preset's own
+//! point, `X` the cursor. While the map is
 //! coarse, each cell shows the nearest computed point.
 
 use crate::physics::Spacing;
@@ -291,6 +292,10 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
     let verdict = |ok: bool| if ok { "holds" } else { "fails" };
     items.extend(s.wide_holds.map(|h| format!("wide {}", verdict(h))));
     items.extend(s.narrow_holds.map(|h| format!("narrow {}", verdict(h))));
+    items.extend(
+        s.yields
+            .map(|y| if y { "yields" } else { "no yield" }.to_string()),
+    );
     items.extend(s.complete.map(|c| {
         if c {
             "contact complete".to_string()

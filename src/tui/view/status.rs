@@ -2,7 +2,7 @@
 //! inputs (never from the form). Values are packed into lines whole, never broken across lines;
 //! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
 
-use crate::engine::{Answer, SpatialOutput};
+use crate::engine::{Answer, Output, SpatialOutput};
 use crate::phrase::Phrase;
 use crate::physics::plane::energy::RESIDUAL_ROUND_OFF;
 use crate::physics::plane::{OperatingPoint, Shape};
@@ -20,7 +20,7 @@ use crate::tui::charts::{Figure, Plot, overlay};
 use crate::tui::on_screen::OnScreen;
 use crate::tui::view::status_values::{Checks, mu_star, number, per_output, visible};
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::validity_status::with_validity;
+use crate::tui::view::validity_status::{self, with_validity};
 use crate::tui::view::wrapping::{pack, pack_within};
 use crate::tui::view::{contact_status, groups_status, surface_status};
 use crate::tui::view::{note, wrap};
@@ -54,17 +54,21 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
         }
     };
     // the cursor readout first, each value whole; beside a chart of the operating point, the
-    // point and one line of its verdict are always shown and the readout takes the rows left
-    // (its hidden values counted); under a sweep or a map, whose chart marks the point, the
-    // readout of the sweep comes first
+    // point and its verdict are always shown and the readout takes the rows left (its hidden
+    // values counted); under a sweep or a map, whose chart marks the point, the readout of the
+    // sweep comes first and the point gives up rows before the verdict does
+    let kept = kept_rows(app, answer, width);
     let (readout, room) = match app.explore.view {
-        Some(_) => (crate::tui::view::sweep::readout(app), rows),
+        Some(_) => (
+            crate::tui::view::sweep::readout(app),
+            rows.saturating_sub(kept.map_or(0, |(_, verdict)| verdict)),
+        ),
         None => (
             cursor_readout(app, answer).or_else(|| {
                 crate::tui::view::map_readout::status(app)
                     .map(|items| items.into_iter().map(Phrase::from).collect())
             }),
-            rows.saturating_sub(main(0).len() + 1),
+            rows.saturating_sub(kept.map_or(main(0).len() + 1, |(all, _)| all)),
         ),
     };
     let mut lines: Vec<Line> = readout
@@ -78,6 +82,21 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
     }
+}
+
+/// The rows of a plane point's status that a readout never takes: (its values and verdict, the
+/// verdict alone); None for other outputs.
+fn kept_rows(app: &App, answer: &Answer, width: usize) -> Option<(usize, usize)> {
+    let Output::Plane(out) = &answer.output else {
+        return None;
+    };
+    let p = out.point.as_ref().ok()?;
+    let all = if app.explore.dimensionless {
+        validity_status::kept_rows(&groups_status::plane_items(p), p, width)
+    } else {
+        validity_status::kept_rows(&plane_items(p), p, width)
+    };
+    Some((all, validity_status::verdict_rows(p, width)))
 }
 
 /// The cursor readout of the visible chart, when the cursor is on and the chart has curves.
@@ -102,6 +121,15 @@ fn plane(
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
+    let items = plane_items(p);
+    // in a crowded status, the residual, psi and Q2 give way before mu*, a, b and theta
+    let n = items.len();
+    let give_up = [n - 1, n - 3, n - 4];
+    with_validity((&items, &give_up), p, checks, style, width, height)
+}
+
+/// The values of a plane operating point, in the order the status shows them.
+fn plane_items(p: &OperatingPoint) -> Vec<Phrase> {
     let s = &p.solution;
     let mut items: Vec<Phrase> = vec![
         format!("a = {}", format_si(s.a, "m")).into(),
@@ -125,7 +153,7 @@ fn plane(
         ]
         .map(Phrase::from),
     );
-    with_validity(&items, p, checks, style, width, height)
+    items
 }
 
 /// The punch's shape in a few words, each value with its name and unit a piece that a line

@@ -8,13 +8,14 @@ use crate::phrase::Phrase;
 use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::dominance::Dominance;
 use crate::physics::plane::strip_check::StripCheck;
+use crate::physics::plane::validity::Reason;
 use crate::physics::plane::yield_onset::YieldCheck;
 use ratatui::text::Line;
 
 use crate::tui::view::status_values::{number, prose};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap_within;
-use crate::tui::view::wrapping::pack;
+use crate::tui::view::wrapping::{lines_of, pack, pack_giving_up};
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
 /// the verdict when the model holds, which effect dominates (after the verdict, so that a
@@ -83,13 +84,7 @@ fn judged(
     let warnings: Vec<Vec<Line>> = v
         .reasons
         .iter()
-        .map(|r| {
-            prose(
-                &Phrase::words("!").then_phrase(r.text.clone()),
-                width,
-                style.error(),
-            )
-        })
+        .map(|r| prose(&reason(r), width, style.error()))
         .collect();
     let total: usize = warnings.iter().map(Vec::len).sum();
     // how far off, then why: every warning in a few words; the short form of how far off when
@@ -141,10 +136,17 @@ fn judged(
             used <= room
         })
         .count();
-    // no room for a reason and the count: the first reason alone, so that the verdict stays
-    if shown == 0 && warnings.first().is_some_and(|w| w.len() <= room) {
-        lines.extend(warnings.into_iter().take(1).flatten());
-        return lines;
+    // no room for a reason and the count: the first reason alone, so that the verdict stays,
+    // ended by "…" where even it does not fit
+    if shown == 0 {
+        if let Some(first) = v.reasons.first() {
+            lines.extend(
+                wrap_within(&reason(first), width, room, style)
+                    .into_iter()
+                    .map(|l| Line::styled(l, style.error())),
+            );
+            return lines;
+        }
     }
     let more = warnings.len() - shown;
     lines.extend(warnings.into_iter().take(shown).flatten());
@@ -156,17 +158,45 @@ fn judged(
     lines
 }
 
+/// A reason the model does not hold, after "! ".
+fn reason(r: &Reason) -> Phrase {
+    Phrase::words("!").then_phrase(r.text.clone())
+}
+
+/// The rows the verdict takes at `width`: one for "... model holds" (ended by "…" where it is
+/// wider), else those of the first reason why not.
+pub fn verdict_rows(p: &OperatingPoint, width: usize) -> usize {
+    match p.validity.reasons.first() {
+        Some(first) if !p.validity.ok => lines_of(&reason(first), width).len().max(1),
+        _ => 1,
+    }
+}
+
+/// The rows a plane status never gives up: `items` packed into lines and the verdict.
+pub fn kept_rows<P: Clone + Into<Phrase>>(items: &[P], p: &OperatingPoint, width: usize) -> usize {
+    pack(items, width, "").len() + verdict_rows(p, width)
+}
+
 /// A plane status: `items` packed into lines, then the validity lines in the room left (the
-/// dimensional status and the dimensionless view share it).
+/// dimensional status and the dimensionless view share it). The verdict is the last to go:
+/// where the items and the verdict do not both fit, the items give up rows (those at the indices
+/// `give_up` names first, then the last ones; counted, "+2 more") and the verdict keeps its own.
 pub fn with_validity<P: Clone + Into<Phrase>>(
-    items: &[P],
+    (items, give_up): (&[P], &[usize]),
     p: &OperatingPoint,
     (check, yielding): (Option<&StripCheck>, Option<&YieldCheck>),
     style: RenderOptions,
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
+    let verdict = verdict_rows(p, width).min(height);
     let mut out: Vec<Line> = pack(items, width, "").into_iter().map(Line::from).collect();
+    if out.len() + verdict > height {
+        out = pack_giving_up(items, width, height - verdict, give_up)
+            .into_iter()
+            .map(Line::from)
+            .collect();
+    }
     let room = height.saturating_sub(out.len());
     out.extend(judged(p, check, yielding, style, width, room));
     out

@@ -68,6 +68,32 @@ pub fn pack_within<P: Clone + Into<Phrase>>(
         .unwrap_or_default()
 }
 
+/// `pack_within`, leaving out first the items at the indices `give_up` names, in its order (their
+/// count "+2 more" after the others), and only then the last ones.
+pub fn pack_giving_up<P: Clone + Into<Phrase>>(
+    items: &[P],
+    width: usize,
+    rows: usize,
+    give_up: &[usize],
+) -> Vec<String> {
+    let items: Vec<Phrase> = items.iter().cloned().map(Into::into).collect();
+    let lines = pack(&items, width, "");
+    if lines.len() <= rows {
+        return lines;
+    }
+    (1..=give_up.len())
+        .map(|n| {
+            let mut kept: Vec<Phrase> = (items.iter().enumerate())
+                .filter(|(i, _)| !give_up[..n].contains(i))
+                .map(|(_, item)| item.clone())
+                .collect();
+            kept.push(Phrase::whole(format!("+{n} more")));
+            pack(&kept, width, "")
+        })
+        .find(|lines| lines.len() <= rows)
+        .unwrap_or_else(|| pack_within(&items, width, "", rows))
+}
+
 /// Wraps prose written by people into lines of at most `width` columns, never between the words
 /// that belong together (`prose::phrase`: "5 MPa", "t = 62.6 s", "[ ] move").
 pub fn wrap(text: &str, width: usize) -> Vec<String> {

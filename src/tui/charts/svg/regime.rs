@@ -1,8 +1,9 @@
 //! The regime map (`M`) as SVG: the quantity over the two swept inputs as coloured cells, the
 //! axes in the inputs' units (log where the map's axis is log), the colour bar with its ticks and
-//! range, the library's lines (theta = 0, the models' validity limits, complete contact) each in
-//! its own style with the letter the terminal draws it with, the preset's own point, and under it
-//! a legend naming each. It draws the map the view has: its samples, its lines, its point.
+//! range, the library's lines (theta = 0, the models' validity limits, complete contact, yield
+//! onset) each in its own style with the letter the terminal draws it with, the preset's own
+//! point, and under it a legend naming each. It draws the map the view has: its samples, its
+//! lines, its point.
 
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -26,6 +27,7 @@ fn ink(kind: LineKind) -> (RGBColor, bool) {
         LineKind::Validity(m) if m.name() == "wide" => (RGBColor(213, 94, 0), false),
         LineKind::Validity(_) => (RGBColor(204, 121, 167), true),
         LineKind::CompleteContact => (BLACK, true),
+        LineKind::Yield => (RGBColor(0, 114, 178), false),
     }
 }
 
