@@ -17,7 +17,7 @@ use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
 use crate::sweeps::groups;
-use crate::sweeps::locate::{between, bisect};
+use crate::sweeps::locate::{Probe, between, locate_change};
 use crate::sweeps::point::{self, Point};
 use crate::sweeps::quantity::QuantityKey;
 use crate::sweeps::sweep::preset_at;
@@ -114,6 +114,15 @@ pub fn holds(point: &Point) -> bool {
     match point {
         Point::Plane(p) => p.verdict().ok,
         Point::Spatial(s) => s.result.contact.complete,
+    }
+}
+
+/// `holds` with the margin that decides it where there is one (`PlanePoint::verdict_margin`), for
+/// `locate_change`.
+pub fn probe(point: &Point) -> Probe {
+    match point {
+        Point::Plane(p) => (p.verdict().ok, p.verdict_margin()),
+        Point::Spatial(_) => (holds(point), None),
     }
 }
 
@@ -286,9 +295,9 @@ fn changes(
                 }
                 solve_at_until(preset, &[*axis], &[value(u)], model, stop)
                     .ok()
-                    .map(|p| holds(&p))
+                    .map(|p| probe(&p))
             };
-            let u = bisect(steps, a, side);
+            let u = locate_change(steps, a, side);
             if stop.now() {
                 return None;
             }

@@ -31,8 +31,8 @@ use crate::physics::plane::verdict_table::VerdictTable;
 use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
 use crate::sweeps::axis::Axis;
-use crate::sweeps::curve::{holds, solve_at_until};
-use crate::sweeps::locate::{Node, Segment, between, bisect, contour};
+use crate::sweeps::curve::{holds, probe, solve_at_until};
+use crate::sweeps::locate::{Node, Probe, Segment, between, bisect, contour, locate_change};
 use crate::sweeps::map_yield;
 use crate::sweeps::point::Point;
 use crate::sweeps::quantity::QuantityKey;
@@ -350,7 +350,7 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
                     }
                     map_yield::yields_at(preset, [spec.x, spec.y], point(a, b, u), stop)
                 })?,
-                _ => bisect(BISECTIONS, side(a)?, |u| {
+                _ => locate_change(BISECTIONS, side(a)?, |u| {
                     if stop.now() {
                         return None;
                     }
@@ -368,15 +368,16 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
     Some(out)
 }
 
-/// A plane line's verdict at a point between samples: the sign of theta (the wide model's, else
-/// the preset model's), or whether the model holds.
+/// A plane line's verdict at a point between samples with the margin that decides it: the sign
+/// of theta (the wide model's, else the preset model's; theta its margin), or whether the model
+/// holds (`curve::probe`).
 fn verdict_at(
     base: &Preset,
     spec: &MapSpec,
     at: [f64; 2],
     kind: LineKind,
     stop: Stop,
-) -> Option<bool> {
+) -> Option<Probe> {
     let axes = [spec.x, spec.y];
     let solve = |model: Model| solve_at_until(base, &axes, &at, Some(model), stop).ok();
     match kind {
@@ -384,9 +385,9 @@ fn verdict_at(
             let theta = |model: Model| solve(model).and_then(|p| theta_of(&p));
             theta(Model::Wide)
                 .or_else(|| theta(base.plane.model))
-                .map(|t| t > 0.0)
+                .map(|t| (t > 0.0, Some(t)))
         }
-        LineKind::Validity(model) => solve(model).map(|p| holds(&p)),
+        LineKind::Validity(model) => solve(model).map(|p| probe(&p)),
         LineKind::CompleteContact | LineKind::Yield => None,
     }
 }

@@ -88,6 +88,17 @@ impl PlanePoint {
         self.verdict.get_or_init(|| verdict(&self.solution))
     }
 
+    /// How far the verdict is from changing where the measurement against the strip model
+    /// decides it: 1 minus the larger deviation over its tolerance (`Deviation::ratios`),
+    /// dimensionless, positive where the model holds; None where the study's estimate or an
+    /// assumption decides.
+    pub fn verdict_margin(&self) -> Option<f64> {
+        let verdict = self.verdict();
+        let [width, mu] = verdict.measured_error?.ratios();
+        let margin = 1.0 - width.max(mu);
+        (verdict.ok == (margin > 0.0)).then_some(margin)
+    }
+
     /// The two sides of the energy identity (2.9), computed on first use.
     pub fn energy(&self) -> Result<Energy, Undefined> {
         *self.energy.get_or_init(|| energy(&self.solution))

@@ -6,7 +6,6 @@
 use rayon::prelude::*;
 
 use crate::physics::plane::PlaneSolution;
-use crate::physics::plane::criteria::{MU_STAR_TOLERANCE, WIDTH_TOLERANCE};
 use crate::physics::plane::strip_check::{StripCheck, judged, measures, strip_check};
 use crate::physics::plane::validity::{Aspect, Validity, estimate};
 
@@ -28,10 +27,7 @@ pub(crate) struct Measured {
 pub(crate) fn measure(sol: &PlaneSolution, estimated: &Validity) -> Measured {
     let check = strip_check(sol);
     let ratios = match &check {
-        StripCheck::Measured(d) => Some([
-            d.contact_width / WIDTH_TOLERANCE,
-            d.mu_star_minus_mu / MU_STAR_TOLERANCE,
-        ]),
+        StripCheck::Measured(d) => Some(d.ratios()),
         _ => None,
     };
     Measured {

@@ -31,6 +31,15 @@ impl Deviation {
     pub fn within_tolerance(&self) -> bool {
         self.contact_width <= WIDTH_TOLERANCE && self.mu_star_minus_mu <= MU_STAR_TOLERANCE
     }
+
+    /// Each deviation over its tolerance (contact width, mu* - mu), dimensionless: both at most 1
+    /// where `within_tolerance`.
+    pub fn ratios(&self) -> [f64; 2] {
+        [
+            self.contact_width / WIDTH_TOLERANCE,
+            self.mu_star_minus_mu / MU_STAR_TOLERANCE,
+        ]
+    }
 }
 
 /// The validity verdict reported with every plane solution.
