@@ -2,10 +2,11 @@
 
 use crate::preset::{Key, Preset, Problem};
 
-use crate::tui::app::{App, Command, Mode, PickerEntry, UNDO_DEPTH};
+use crate::tui::app::{App, Command, Mode, PickerEntry};
 use crate::tui::chart_keys;
 use crate::tui::charts::export::Format;
 use crate::tui::charts::{Chart, NoFigure, export as csv};
+use crate::tui::edit::apply;
 use crate::tui::form::{self, Change};
 use crate::tui::harmonic_keys;
 use crate::tui::keys::Action;
@@ -233,31 +234,6 @@ fn set(app: &mut App, value: f64) -> Vec<Command> {
             Vec::new()
         }
     }
-}
-
-/// Replaces the preset by an edited one (undo keeps the old) and asks for a solve.
-pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
-    if next == app.doc.preset {
-        return Vec::new();
-    }
-    if let Some(key) = app.doc.preset.locked_change(&next) {
-        app.complain(lesson_keys::why_locked(app, key));
-        return Vec::new();
-    }
-    let previous = std::mem::replace(&mut app.doc.preset, next);
-    // a notice about an earlier step no longer applies
-    app.ui.message = None;
-    if app.ui.expanded {
-        // the form is hidden: say what changed
-        app.say(format!("{}: {} -> {}", change.name, change.from, change.to));
-    }
-    app.doc.undo.push((previous, change));
-    if app.doc.undo.len() > UNDO_DEPTH {
-        app.doc.undo.remove(0);
-    }
-    app.doc.dirty = app.doc.edited();
-    app.fit();
-    vec![app.request()]
 }
 
 /// Opens a preset (undo can go back).

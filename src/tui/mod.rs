@@ -9,6 +9,7 @@ pub mod chart_keys;
 pub mod charts;
 pub mod cursor_move;
 pub mod data_keys;
+pub mod edit;
 pub mod effects;
 pub mod event_loop;
 pub mod fit_keys;

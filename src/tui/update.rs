@@ -7,9 +7,10 @@ use crate::engine::latest::Delivery;
 use crate::preset::Problem;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use crate::tui::actions::{act, apply, export, open, quit};
+use crate::tui::actions::{act, export, open, quit};
 use crate::tui::app::{App, Command, Mode, Msg};
 use crate::tui::chart_keys;
+use crate::tui::edit::apply;
 use crate::tui::keys::{self, Open, Scope};
 use crate::tui::picker_keys;
 use crate::tui::prompt_keys::{self, Prompt, PromptAction};

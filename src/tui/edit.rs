@@ -1,0 +1,32 @@
+//! An edit of the preset: the one way a change reaches the document (locked lesson keys refused,
+//! one undo step, a new solve asked), for the keys of the form and for a fit's result alike.
+
+use crate::preset::Preset;
+use crate::tui::app::{App, Command, UNDO_DEPTH};
+use crate::tui::form::Change;
+use crate::tui::lesson_keys;
+
+/// Replaces the preset by an edited one (undo keeps the old) and asks for a solve.
+pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
+    if next == app.doc.preset {
+        return Vec::new();
+    }
+    if let Some(key) = app.doc.preset.locked_change(&next) {
+        app.complain(lesson_keys::why_locked(app, key));
+        return Vec::new();
+    }
+    let previous = std::mem::replace(&mut app.doc.preset, next);
+    // a notice about an earlier step no longer applies
+    app.ui.message = None;
+    if app.ui.expanded {
+        // the form is hidden: say what changed
+        app.say(format!("{}: {} -> {}", change.name, change.from, change.to));
+    }
+    app.doc.undo.push((previous, change));
+    if app.doc.undo.len() > UNDO_DEPTH {
+        app.doc.undo.remove(0);
+    }
+    app.doc.dirty = app.doc.edited();
+    app.fit();
+    vec![app.request()]
+}
