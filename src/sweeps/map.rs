@@ -27,6 +27,7 @@
 use rayon::prelude::*;
 
 use crate::physics::plane::Model;
+use crate::physics::plane::dominance::Dominance;
 use crate::physics::plane::verdict_table::VerdictTable;
 use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
@@ -55,6 +56,8 @@ pub struct Sample {
     pub value: Result<f64, String>,
     /// Plane: theta (4.5): > 0 friction shifts the edge exponents more than wear, < 0 wear does.
     pub theta: Option<f64>,
+    /// Plane: which effect dominates, from the signs of the preset's model's mu* - mu and a - b.
+    pub dominance: Option<Dominance>,
     /// Plane: whether the wide model holds here (None: no wide solution).
     pub wide_holds: Option<bool>,
     /// Plane: whether the narrow model holds here (None: no narrow solution, e.g. h = inf).
@@ -157,6 +160,7 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], table: &VerdictTable, sto
         return Sample {
             value,
             theta: None,
+            dominance: None,
             wide_holds: None,
             narrow_holds: None,
             complete: Some(s.result.contact.complete),
@@ -183,6 +187,10 @@ fn sample(base: &Preset, spec: &MapSpec, at: [f64; 2], table: &VerdictTable, sto
     Sample {
         value,
         theta: own(&wide, &main).and_then(theta_of).or_else(main_theta),
+        dominance: match &main {
+            Ok(Point::Plane(p)) => Some(Dominance::of(&p.solution)),
+            _ => None,
+        },
         wide_holds: own(&wide, &main).map(|p| judged(p, table)),
         narrow_holds: own(&narrow, &main).map(|p| judged(p, table)),
         complete: None,
@@ -264,7 +272,7 @@ pub fn regime_map<'s>(
 }
 
 /// Judges yield at every computed sample of `map` not judged yet (`done` marks them, row-major
-/// as the samples), in parallel; None when `stop` said so before the last.
+/// as the samples); None when `stop` said so before the last.
 fn judge_yields(
     preset: &Preset,
     spec: &MapSpec,
@@ -273,25 +281,11 @@ fn judge_yields(
     stop: Stop,
 ) -> Option<()> {
     let nx = map.x.len();
-    let todo: Vec<usize> = (0..map.samples.len())
+    let todo: Vec<(usize, [f64; 2])> = (0..map.samples.len())
         .filter(|&k| map.samples[k].is_some() && !done[k])
+        .map(|k| (k, [map.x[k % nx], map.y[k / nx]]))
         .collect();
-    let found: Vec<Option<(usize, Option<bool>)>> = todo
-        .into_par_iter()
-        .map(|k| {
-            if stop.now() {
-                return None;
-            }
-            let yields = map_yield::yields_at(
-                preset,
-                [spec.x, spec.y],
-                [map.x[k % nx], map.y[k / nx]],
-                stop,
-            );
-            Some((k, yields))
-        })
-        .collect();
-    for (k, yields) in found.into_iter().collect::<Option<Vec<_>>>()? {
+    for (k, yields) in map_yield::judge_all(preset, [spec.x, spec.y], todo, stop)? {
         if let Some(s) = map.samples[k].as_mut() {
             s.yields = yields;
         }

@@ -3,6 +3,8 @@
 //! 7.2 and 9.2: the largest von Mises stress against Y, or H/3). A judge costs 4-20 ms against
 //! the map's 0.4 ms a point (`map` judges from its second pass on).
 
+use rayon::prelude::*;
+
 use crate::physics::plane::yield_onset::judge;
 use crate::physics::stop::Stop;
 use crate::preset::{Preset, Problem};
@@ -24,4 +26,18 @@ pub fn yields_at(base: &Preset, axes: [Axis; 2], at: [f64; 2], stop: Stop) -> Op
         return None;
     };
     judge(&p.solution, preset.strength)?.yields
+}
+
+/// `yields_at` at each of `points` (an index of the caller's and the point), in parallel; None
+/// when `stop` said so before the last.
+pub fn judge_all(
+    base: &Preset,
+    axes: [Axis; 2],
+    points: Vec<(usize, [f64; 2])>,
+    stop: Stop,
+) -> Option<Vec<(usize, Option<bool>)>> {
+    points
+        .into_par_iter()
+        .map(|(k, at)| (!stop.now()).then(|| (k, yields_at(base, axes, at, stop))))
+        .collect()
 }

@@ -38,12 +38,15 @@ pub fn on_screen(app: &App) -> OnScreen<'_> {
         return OnScreen::Nothing;
     }
     // while time plays, each frame is a new request: a result a few frames old is labelled
-    // by the t it shows, not dimmed
+    // by the t it shows, not dimmed; a name or description (a save marks an edited copy in
+    // both) changes no result
     let same = |a: &Preset, b: &Preset| {
         let mut a = a.clone();
         if app.ui.playing {
             a.spatial.time = b.spatial.time;
         }
+        a.name.clone_from(&b.name);
+        a.description.clone_from(&b.description);
         a == *b
     };
     if same(theirs, ours) {

@@ -60,7 +60,9 @@ fn plane(
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
-    with_validity((&plane_items(p), &[]), p, checks, style, width, height)
+    // in a crowded status, (a+b)/R and P/(m R) give way before (a+b)/h, the material's
+    // numbers, theta, mu* and mu* - mu
+    with_validity((&plane_items(p), &[1, 2]), p, checks, style, width, height)
 }
 
 /// The groups of a plane operating point, in the order the status shows them.

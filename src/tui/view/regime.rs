@@ -289,6 +289,7 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
         s.theta
             .map(|t| format!("theta = {}", status_values::number("theta", t))),
     );
+    items.extend(s.dominance.map(|d| d.describe().to_string()));
     let verdict = |ok: bool| if ok { "holds" } else { "fails" };
     items.extend(s.wide_holds.map(|h| format!("wide {}", verdict(h))));
     items.extend(s.narrow_holds.map(|h| format!("narrow {}", verdict(h))));

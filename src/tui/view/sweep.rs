@@ -118,7 +118,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let note = match shown {
         _ if done => String::new(),
         Some((a, true)) => match &a.explored {
-            SweepResult::Map(m) => format!("  refining (every {}th point)…", m.stride),
+            SweepResult::Map(m) => format!("  refining (1 point in {})…", m.stride),
             SweepResult::Curve(_) => "  computing…".into(),
         },
         Some((_, false)) => "  [previous inputs] computing…".into(),
