@@ -15,6 +15,7 @@ mod plane_narrow;
 mod plane_narrow_general;
 mod plane_refinement;
 mod plane_sharp;
+mod plane_sharp_strip;
 mod plane_strip;
 mod plane_surface;
 mod plane_validity;

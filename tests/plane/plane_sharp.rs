@@ -289,13 +289,8 @@ fn the_energy_diverges_and_the_wear_per_pass_does_not() {
 }
 
 #[test]
-fn the_strip_and_the_laws_without_a_steady_solution_are_refused_in_words() {
+fn the_laws_without_a_steady_solution_are_refused_in_words() {
     let inp = inputs(0.05, 0.3, 0.0, 1e-11, 0.0);
-    let err = solve(&inp, Model::Strip).unwrap_err().to_string();
-    assert!(
-        err.contains("singular at both corners") && err.contains("round the edges"),
-        "{err}"
-    );
     let mut capped = inp.clone();
     capped.shear_strength = 1e7;
     let err = solve(&capped, Model::Wide).unwrap_err().to_string();

@@ -147,6 +147,7 @@ fn negative_pressure(law: &PressureLaw) -> Option<String> {
             pressure.l,
         ),
         PressureLaw::Strip(col) => negative_between_nodes(col.nodes(), &col.phi, |t| col.phi_at(t), col.l),
+        PressureLaw::StripCorners(p) => negative_between_nodes(&p.nodes, &p.phi, |t| p.phi_at(t), p.l),
     }
 }
 

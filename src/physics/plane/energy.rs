@@ -177,7 +177,9 @@ fn step(sol: &PlaneSolution) -> f64 {
 /// for a punch with sharp corners, where I and J have no number.
 pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
     match sol.law {
-        PressureLaw::Corners { .. } | PressureLaw::Face { .. } => return Err(undefined_at(sol)),
+        PressureLaw::Corners { .. } | PressureLaw::StripCorners(_) | PressureLaw::Face { .. } => {
+            return Err(undefined_at(sol));
+        }
         _ => {}
     }
     let rule = tanh_sinh(step(sol));
@@ -321,7 +323,9 @@ pub fn energy(sol: &PlaneSolution) -> Result<Energy, Undefined> {
 /// a curve of many loads costs what one `energy` does. `energy` computes it too, beside psi - J
 /// (its `contact_residual` compares the two). Under sharp corners the answer is `energy`'s.
 pub fn wear_loss(sol: &PlaneSolution) -> Result<f64, Undefined> {
-    if let PressureLaw::Corners { .. } | PressureLaw::Face { .. } = sol.law {
+    if let PressureLaw::Corners { .. } | PressureLaw::StripCorners(_) | PressureLaw::Face { .. } =
+        sol.law
+    {
         return Err(undefined_at(sol));
     }
     let rule = tanh_sinh(step(sol));

@@ -22,6 +22,7 @@ pub mod scope;
 pub mod shape;
 pub mod shape_validity;
 pub mod sharp;
+pub mod sharp_strip;
 pub mod spline;
 pub mod strip;
 pub mod strip_check;
@@ -214,6 +215,8 @@ pub(crate) enum PressureLaw {
         slope: f64,
         width: f64,
     },
+    /// Sharp corners on the strip of any thickness: the collocation of `sharp_strip`.
+    StripCorners(std::sync::Arc<sharp_strip::CornerPressure>),
     /// Sharp corners on the Winkler strip: q2 = q_b e^(-lambda (b - x)), q_b [Pa] at the leading
     /// corner, lambda = k/beta [1/m] (`sharp`).
     Face { leading: f64, lambda: f64 },
@@ -305,6 +308,7 @@ impl PlaneSolution {
                 slope,
                 width,
             } => sharp::corners_pressure(theta, constant, slope, width, u),
+            PressureLaw::StripCorners(p) => p.pressure_from_trailing_edge(u),
             &PressureLaw::Face { leading, lambda } => sharp::face_pressure(leading, lambda, l - u),
         }
     }

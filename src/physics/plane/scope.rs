@@ -2,18 +2,14 @@
 //! solve the paper's worked example - a parabolic punch, the linear wear law, friction without a
 //! shear cap; the narrow model also solves every other shape and law (`narrow_ode`), the wide
 //! model every punch with smooth edges and the strip model those without a shear cap (the
-//! general solver, `plane::general`); the wide and narrow models solve sharp corners
-//! (`plane::sharp`), the strip model does not; what is left is refused by name, never answered
-//! with a wrong number.
+//! general solver, `plane::general`); every model solves sharp corners (`plane::sharp`); what is
+//! left is refused by name, never answered with a wrong number.
 
 use crate::physics::SolveError;
-use crate::physics::plane::{Model, PlaneInputs, sharp};
+use crate::physics::plane::{Model, PlaneInputs};
 
 /// Ok when `model` solves `inputs`, else why not (exit 2 on the command line).
 pub fn check(inputs: &PlaneInputs, model: Model) -> Result<(), SolveError> {
-    if inputs.shape.is_sharp() && model == Model::Strip {
-        return Err(sharp::strip_refused());
-    }
     let solves = match model {
         Model::Narrow | Model::Wide => return Ok(()),
         Model::Strip if inputs.shear_strength == f64::INFINITY => return Ok(()),
@@ -70,15 +66,13 @@ mod tests {
     }
 
     #[test]
-    fn sharp_corners_are_refused_by_the_strip_model_with_the_way_out() {
+    fn sharp_corners_are_solved_by_every_model() {
         let mut inputs = polymer_coating();
         inputs.shape = Shape::Flat {
             half_width: 1e-3,
             edge_radius: 0.0,
         };
-        assert!(check(&inputs, Model::Wide).is_ok() && check(&inputs, Model::Narrow).is_ok());
-        let err = check(&inputs, Model::Strip).unwrap_err().to_string();
-        assert!(err.contains("round the edges"), "{err}");
+        assert!(Model::ALL.iter().all(|&m| check(&inputs, m).is_ok()));
     }
 
     #[test]

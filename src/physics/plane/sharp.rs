@@ -10,23 +10,39 @@
 //! Z = (c+x)^(-1/2-theta) (c-x)^(-1/2+theta), theta of (4.5), B = -f0 m cos(pi theta)/pi and
 //! A = P cos(pi theta)/pi - 2c (1/2 - theta) B (Q2 = P by the Beta integrals of Z and Z (c+x)).
 //!
+//! Strip of any thickness: the collocation of `sharp_strip` (the half-plane's corner exponents,
+//! the exact kernels' regular part, the load as the last equation).
+//!
 //! Narrow strip (Winkler (5.1)): (5.3) with g' = 0 is q2' = k q2/beta on the face; the pressure is
 //! bounded, q2 = P lambda e^(lambda (x - c))/(1 - e^(-2 lambda c)), lambda = k/beta (P/(2c)
 //! without wear), largest at the leading corner, and steps from 0 to it at both corners.
 
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 use crate::physics::SolveError;
 use crate::physics::elastic::chi_c12;
 use crate::physics::plane::narrow::winkler_beta;
+use crate::physics::plane::sharp_strip;
+use crate::physics::plane::strip::kernels_for;
 use crate::physics::plane::{Found, Model, PlaneInputs, PlaneSolution, PressureLaw, exponent};
 
-/// The solution for a sharp flat of half-width `half_width` c [m] in the wide or narrow model;
-/// the strip model is refused (`strip_refused`).
+/// The solution for a sharp flat of half-width `half_width` c [m] in each model.
 pub fn solve(
     inputs: &PlaneInputs,
     model: Model,
     half_width: f64,
+) -> Result<PlaneSolution, SolveError> {
+    solve_refined(inputs, model, half_width, 1)
+}
+
+/// `solve` with the strip model's node count multiplied by `factor` >= 1 (the other models are
+/// closed forms): the difference from `solve`'s answer measures the discretisation error.
+pub fn solve_refined(
+    inputs: &PlaneInputs,
+    model: Model,
+    half_width: f64,
+    factor: usize,
 ) -> Result<PlaneSolution, SolveError> {
     let width = 2.0 * half_width;
     let (law, theta, gamma) = match model {
@@ -35,8 +51,13 @@ pub fn solve(
             let (law, theta, gamma) = wide_law(inputs, width);
             (law, Some(theta), Some(gamma))
         }
-        Model::Strip => return Err(strip_refused()),
+        Model::Strip => {
+            let (law, theta, gamma) = strip_law(inputs, width, factor)?;
+            (law, Some(theta), Some(gamma))
+        }
     };
+    // Q2 = P: the closed forms by their Beta integrals, the strip's collocation by its last
+    // equation
     let found = Found {
         a: half_width,
         b: half_width,
@@ -51,16 +72,23 @@ pub fn solve(
     Ok(PlaneSolution::assemble(model, inputs, found, law))
 }
 
-/// Why the strip model does not solve sharp corners (exit 2).
-pub fn strip_refused() -> SolveError {
-    SolveError::InvalidInput(
-        "the strip model does not solve a flat punch with sharp corners (edge_radius = 0): its \
-         collocation is built for a pressure that vanishes at both contact ends, not one that is \
-         singular at both corners; use the wide model (a half-plane, or a face much narrower than \
-         the thickness), the narrow model (a face many thicknesses wide) or round the edges \
-         (edge_radius > 0)"
-            .into(),
-    )
+/// The strip's collocation on the face (`sharp_strip`), and theta, gamma.
+fn strip_law(
+    inputs: &PlaneInputs,
+    width: f64,
+    factor: usize,
+) -> Result<(PressureLaw, f64, f64), SolveError> {
+    let mat = &inputs.material;
+    if mat.is_half_space() {
+        return Err(SolveError::InvalidInput(
+            "the strip model needs a finite thickness h; a half-plane is the wide model's".into(),
+        ));
+    }
+    let (_, gamma, theta) = exponent(inputs);
+    let nodes = sharp_strip::node_count(width / mat.thickness, factor)?;
+    let kernels = kernels_for(mat.poisson_ratio);
+    let pressure = sharp_strip::solve(inputs, kernels.as_ref(), 0.5 * width, nodes)?;
+    Ok((PressureLaw::StripCorners(Arc::new(pressure)), theta, gamma))
 }
 
 /// The half-plane's and the wide strip's q2 = Z (A + B u), u = c + x, and theta, gamma.
