@@ -1,17 +1,22 @@
 //! The general plane solver (docs/physics/plane-general.md): one operating point of the wide model
 //! for a power punch (n = 3) with the wear law n = 2 and a shear cap, on the half-plane and on a
-//! 1 mm strip, and one with the linear laws on a flat punch with rounded edges; the same power
-//! punch on the narrow model (a 0.1 mm layer, with the cap) and on the exact strip (0.1 mm, no
-//! cap: the strip refuses one; (a+b)/h = 16, printed). Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m,
-//! mu = 0.3, tau0 = 1e5 Pa, k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m. Measured in CPU time (see
-//! benches/strip.rs).
+//! 1 mm strip, and one with the linear laws on a flat punch with rounded edges; both punches on
+//! the narrow model (a 0.1 mm layer, the power punch with the cap) and on the exact strip (0.1 mm,
+//! no cap: the strip refuses one; (a+b)/h = 15.4 and 4.6, printed). Targets: < 5 ms wide and
+//! narrow, < 20 ms the strip at (a+b)/h <= 20. Then the library's 60-point load sweep
+//! (`plane::sweep`, as the explorer's mu*(P) chart and `wearlab solve`'s sweep: every point with
+//! its validity verdict) from P = 1e3 to 1e5 N/m for both punches on the wide (half-plane) and
+//! narrow models: < 100 ms.
+//! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, c = 0.1 mm, r = 0.05 m, mu = 0.3, tau0 = 1e5 Pa,
+//! k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m. Measured in CPU time (see benches/strip.rs).
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use wearlab::physics::plane::sweep::sweep;
 use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw, solve};
-use wearlab::physics::{Friction, Material};
+use wearlab::physics::{Friction, Material, Spacing, SweepRange};
 
 mod common;
 use common::cpu_time::CpuTime;
@@ -39,39 +44,55 @@ fn inputs(thickness: f64, shape: Shape, wear_exponent: f64, shear_strength: f64)
     }
 }
 
-fn operating_points(c: &mut Criterion<CpuTime>) {
-    let power = Shape::Power {
+fn power() -> Shape {
+    Shape::Power {
         radius: 0.05,
         exponent: 3.0,
-    };
-    let flat = Shape::Flat {
+    }
+}
+
+fn rounded_flat() -> Shape {
+    Shape::Flat {
         half_width: 1e-4,
         edge_radius: 0.05,
-    };
+    }
+}
+
+fn operating_points(c: &mut Criterion<CpuTime>) {
     let cases = [
         (
             "power_capped_half_plane",
-            inputs(f64::INFINITY, power.clone(), 2.0, 2e6),
+            inputs(f64::INFINITY, power(), 2.0, 2e6),
             Model::Wide,
         ),
         (
             "power_capped_1mm",
-            inputs(1e-3, power.clone(), 2.0, 2e6),
+            inputs(1e-3, power(), 2.0, 2e6),
             Model::Wide,
         ),
         (
             "rounded_flat_half_plane",
-            inputs(f64::INFINITY, flat, 1.0, f64::INFINITY),
+            inputs(f64::INFINITY, rounded_flat(), 1.0, f64::INFINITY),
             Model::Wide,
         ),
         (
             "power_capped_narrow",
-            inputs(1e-4, power.clone(), 2.0, 2e6),
+            inputs(1e-4, power(), 2.0, 2e6),
+            Model::Narrow,
+        ),
+        (
+            "rounded_flat_narrow",
+            inputs(1e-4, rounded_flat(), 1.0, f64::INFINITY),
             Model::Narrow,
         ),
         (
             "power_strip_0.1mm",
-            inputs(1e-4, power, 2.0, f64::INFINITY),
+            inputs(1e-4, power(), 2.0, f64::INFINITY),
+            Model::Strip,
+        ),
+        (
+            "rounded_flat_strip_0.1mm",
+            inputs(1e-4, rounded_flat(), 1.0, f64::INFINITY),
             Model::Strip,
         ),
     ];
@@ -87,6 +108,49 @@ fn operating_points(c: &mut Criterion<CpuTime>) {
     }
 }
 
+fn load_sweeps(c: &mut Criterion<CpuTime>) {
+    let loads = SweepRange {
+        min: 1e3,
+        max: 1e5,
+        points: 60,
+        spacing: Spacing::Log,
+    };
+    let cases = [
+        (
+            "power_capped_wide_60",
+            inputs(f64::INFINITY, power(), 2.0, 2e6),
+            Model::Wide,
+        ),
+        (
+            "rounded_flat_wide_60",
+            inputs(f64::INFINITY, rounded_flat(), 1.0, f64::INFINITY),
+            Model::Wide,
+        ),
+        (
+            "power_capped_narrow_60",
+            inputs(1e-4, power(), 2.0, 2e6),
+            Model::Narrow,
+        ),
+        (
+            "rounded_flat_narrow_60",
+            inputs(1e-4, rounded_flat(), 1.0, f64::INFINITY),
+            Model::Narrow,
+        ),
+    ];
+    for (name, at, model) in cases {
+        let once = sweep(&at, model, &loads);
+        println!(
+            "general_sweep/{name}: {} of {} points solved, {} held",
+            once.mu_star.iter().flatten().count(),
+            loads.points,
+            once.valid.iter().flatten().filter(|v| **v).count()
+        );
+        c.bench_function(&format!("general_sweep/{name}"), |b| {
+            b.iter(|| sweep(black_box(&at), model, &loads))
+        });
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default()
@@ -94,6 +158,6 @@ criterion_group! {
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(3));
-    targets = operating_points
+    targets = operating_points, load_sweeps
 }
 criterion_main!(benches);
