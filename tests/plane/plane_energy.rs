@@ -148,3 +148,60 @@ fn the_energy_sweep_agrees_with_the_full_energy_at_its_loads() {
         }
     }
 }
+
+#[test]
+fn the_energy_identity_holds_where_a_measured_profile_has_knots_inside_the_contact() {
+    // worn-pin-profile: a natural cubic spline through a point every 40 um (presets/worn-pin.csv);
+    // g'' and so the slope of q2 kink at each knot inside the contact [-0.343, 0.332] mm
+    use wearlab::physics::plane::Shape;
+    let p = wearlab::preset::bundled("worn-pin-profile.toml")
+        .unwrap()
+        .unwrap();
+    let Some(Shape::Table(table)) = &p.plane.shape else {
+        panic!("worn-pin-profile has a table shape");
+    };
+    let sol = solve(&p.plane_inputs(), p.plane.model).unwrap();
+    let inside: Vec<f64> = table
+        .spline
+        .knots()
+        .iter()
+        .copied()
+        .filter(|x| *x > -sol.a && *x < sol.b)
+        .collect();
+    assert!(inside.len() >= 10, "{} knots inside", inside.len());
+    let en = energy(&sol).unwrap();
+    // (2.9): I = J to 1e-6 of the gross work, the bound plane-general.md section 5 sets where q2
+    // has interior kinks (observed 7.8e-11, printed below)
+    assert!(
+        en.residual < 1e-6,
+        "I = {} J = {} residual {}",
+        en.i,
+        en.j,
+        en.residual
+    );
+    assert!(
+        (en.external - en.friction_loss - en.wear_loss).abs() <= 1e-6 * en.external,
+        "{en:?}"
+    );
+    // the wear loss psi - J from the kernels against k int q2^2 by a quadrature of this test's
+    // own, split at the knots so that each piece is smooth (observed 4.3e-9 of T)
+    let mut ends = vec![-sol.a];
+    ends.extend(&inside);
+    ends.push(sol.b);
+    let k = p.plane_inputs().wear.coefficient;
+    let direct: f64 = ends
+        .windows(2)
+        .map(|w| k * integrate_cos(w[0], w[1], 4, |x| sol.pressure(x).powi(2)))
+        .sum();
+    println!(
+        "{} knots inside; I = J to {:.1e}; psi - J against k int q2^2 to {:.1e} of T",
+        inside.len(),
+        en.residual,
+        (en.wear_loss - direct).abs() / en.external
+    );
+    assert!(
+        (en.wear_loss - direct).abs() <= 1e-6 * en.external,
+        "psi - J = {} against k int q2^2 = {direct}",
+        en.wear_loss
+    );
+}
