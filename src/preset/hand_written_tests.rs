@@ -319,3 +319,37 @@ fn a_harmonic_that_vanishes_warns_at_its_phase() {
         assert!(warnings_of(&spatial.replacen(from, to, 1)).is_empty());
     }
 }
+
+#[test]
+fn none_clears_an_optional_key_and_only_one() {
+    let preset = crate::preset::bundled("polymer-coating.toml")
+        .unwrap()
+        .unwrap();
+    let given = preset
+        .with_settings(&["material.hardness=15MPa", "material.yield_strength=20MPa"])
+        .unwrap();
+    assert_eq!(given.strength.hardness, Some(15e6));
+    let cleared = given
+        .with_settings(&["material.hardness=none", "material.yield_strength= none"])
+        .unwrap();
+    assert_eq!(cleared.strength, preset.strength);
+    assert_eq!(cleared.strength.yield_strength, None);
+    // p0 is optional for the linear law; a nonlinear law needs it, and says so
+    let squared = preset
+        .with_settings(&["wear.exponent=2", "wear.reference_pressure=1MPa"])
+        .unwrap();
+    let why = squared
+        .with_settings(&["wear.reference_pressure=none"])
+        .unwrap_err();
+    assert!(why.contains("needs wear.reference_pressure"), "{why}");
+    // a key that is not optional has no none
+    let why = preset
+        .with_settings(&["material.thickness=none"])
+        .unwrap_err();
+    assert!(why.starts_with("material.thickness=none: "), "{why}");
+    assert!(!why.contains("or none"), "{why}");
+    let why = preset
+        .with_settings(&["material.hardness=soft"])
+        .unwrap_err();
+    assert!(why.contains("or none to clear it"), "{why}");
+}

@@ -229,9 +229,14 @@ impl Preset {
     }
 
     /// Parses text for the parameter (a number with an optional SI prefix and unit, "10um",
-    /// "3 GPa"; a choice by its name) and assigns it as `assign` does.
+    /// "3 GPa"; a choice by its name; `none` for an optional key, which clears it) and assigns
+    /// it as `assign` does.
     pub fn assign_text(&mut self, key: Key, text: &str) -> Result<(), String> {
         let param = key.param();
+        if param.optional() && text.trim() == "none" {
+            self.clear(key);
+            return Ok(());
+        }
         let value = match param.choices() {
             Some(names) => names
                 .iter()
@@ -247,6 +252,16 @@ impl Preset {
                 .map_err(|why| format!("{key} = {why} (allowed {})", param.allowed()))?,
         };
         self.assign(key, value)
+    }
+
+    /// Leaves out an optional key (`Param::optional`; nothing for another).
+    fn clear(&mut self, key: Key) {
+        match key.param().key {
+            "material.yield_strength" => self.strength.yield_strength = None,
+            "material.hardness" => self.strength.hardness = None,
+            "wear.reference_pressure" => self.reference_pressure = None,
+            _ => {}
+        }
     }
 
     /// Sets one parameter: its limit, then the rules between fields; on Err the preset is

@@ -146,12 +146,25 @@ impl Param {
         self.problem().is_none_or(|p| p == problem)
     }
 
-    /// What may be written, in words: the limit's text, or the choices.
+    /// True for a key a preset may leave out, which `none` clears: the yield strength, the
+    /// hardness (without both, no yield check) and the wear law's reference pressure.
+    pub fn optional(&self) -> bool {
+        matches!(
+            self.key,
+            "material.yield_strength" | "material.hardness" | "wear.reference_pressure"
+        )
+    }
+
+    /// What may be written, in words: the limit's text (and `none` for an optional key), or the
+    /// choices.
     pub fn allowed(&self) -> String {
         if let Some(name) = self.surface_name() {
             return surface::allowed(name).into();
         }
         match (self.limit(), self.choices()) {
+            (Some(limit), _) if self.optional() => {
+                format!("{}, or none to clear it", limit.allowed)
+            }
             (Some(limit), _) => limit.allowed.to_string(),
             (None, Some(names)) => format!("one of {}", names.join(", ")),
             (None, None) => "nothing: it is read from the preset file".into(),

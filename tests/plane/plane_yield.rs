@@ -159,3 +159,45 @@ fn sharp_corners_and_thin_layers_are_not_judged() {
     let sol = solve(&thin, Model::Narrow).unwrap();
     assert_eq!(peak(&sol), Err(NotJudged::ThinLayer));
 }
+
+#[test]
+fn a_peak_below_the_layer_is_not_judged() {
+    use wearlab::physics::plane::yield_onset::{Strength, judge};
+    let y = Strength {
+        yield_strength: Some(1e8),
+        hardness: None,
+    };
+    // frictionless, so that the largest stress lies beneath the surface: on a half-plane at
+    // about 0.70 a (`the_largest_von_mises_stress_of_a_frictionless_contact_is_on_its_axis`);
+    // a = 0.24 mm here (Johnson (1985) eq. 4.43)
+    let (_, a, _) = hertz(0.3, 0.0);
+    for (h, below) in [(0.1 * a, true), (0.3 * a, true), (10.0 * a, false)] {
+        let sol = solve(&plane(E, 0.3, h, 0.0, 0.0, 0.0, R, P), Model::Strip).unwrap();
+        let found = peak(&sol).unwrap();
+        let check = judge(&sol, y).unwrap();
+        assert_eq!(found.depth > h, below, "h = {h}: {found:?}");
+        if below {
+            assert_eq!(
+                check.note,
+                Some(NotJudged::BelowLayer {
+                    depth: found.depth,
+                    thickness: h
+                })
+            );
+            assert_eq!(
+                (check.yields, check.ratio, check.von_mises_max),
+                (None, None, None)
+            );
+            let words = check.describe();
+            assert!(
+                words
+                    .starts_with("yield not judged: the peak stress of a half-plane lies at depth")
+                    && words.contains("below the layer (h = "),
+                "{words}"
+            );
+        } else {
+            assert_eq!(check.note, None);
+            assert_eq!(check.depth, Some(found.depth));
+        }
+    }
+}

@@ -52,28 +52,46 @@ pub struct Peak {
 }
 
 /// Why the largest stress of a contact is not given.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NotJudged {
     /// The pressure is unbounded at a sharp corner of the punch: the strip yields there under
     /// any load.
     SharpCorners,
     /// The narrow (Winkler) model: a thin bonded layer, whose stresses are not a half-plane's.
     ThinLayer,
+    /// The half-plane's largest stress lies deeper than the strip is thick, where the strip's
+    /// rigid base is: the half-plane's field does not describe the bonded layer there.
+    BelowLayer {
+        /// Depth [m] of the half-plane's largest von Mises stress below the surface.
+        depth: f64,
+        /// The strip's thickness h [m].
+        thickness: f64,
+    },
 }
 
 impl NotJudged {
     /// Why, in words.
-    pub fn reason(self) -> &'static str {
+    pub fn reason(self) -> String {
         match self {
-            NotJudged::SharpCorners => {
-                "the pressure is unbounded at the punch's sharp corners: the strip yields there \
-                 under any load"
-            }
-            NotJudged::ThinLayer => {
-                "the narrow model's thin bonded layer is not a half-plane, whose stresses this \
-                 check computes"
-            }
+            NotJudged::SharpCorners => "the pressure is unbounded at the punch's sharp corners: \
+                                        the strip yields there under any load"
+                .into(),
+            NotJudged::ThinLayer => "the narrow model's thin bonded layer is not a half-plane, \
+                                     whose stresses this check computes"
+                .into(),
+            NotJudged::BelowLayer { depth, thickness } => format!(
+                "the peak stress of a half-plane lies at depth {}, below the layer (h = {})",
+                format_si(depth, "m"),
+                format_si(thickness, "m")
+            ),
         }
+    }
+}
+
+/// A note in JSON: its reason in words.
+impl Serialize for NotJudged {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(&self.reason())
     }
 }
 
@@ -313,6 +331,9 @@ pub struct YieldCheck {
     pub strength: f64,
     /// Where Y comes from: "yield_strength", or "hardness / 3".
     pub basis: &'static str,
+    /// The hardness was given beside the yield strength and is not used: Y comes first.
+    #[serde(skip)]
+    pub hardness_unused: bool,
     /// The largest von Mises stress [Pa]; null where it is not judged (`note` says why).
     pub von_mises_max: Option<f64>,
     /// von_mises_max / Y (dimensionless); null where not judged.
@@ -323,20 +344,38 @@ pub struct YieldCheck {
     /// judged.
     pub depth: Option<f64>,
     /// Whether the strip yields: the largest stress reaches Y, or the pressure is unbounded at
-    /// sharp corners; null under the narrow model.
+    /// sharp corners; null under the narrow model and where the half-plane's largest stress
+    /// lies below the layer.
     pub yields: Option<bool>,
-    /// Why the largest stress is not given, where it is not.
+    /// Why the largest stress is not given, where it is not (in JSON, in words).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub note: Option<&'static str>,
+    pub note: Option<NotJudged>,
 }
 
-/// The yield check of a solution when the strength is known.
+/// The half-plane's peak where it lies within the strip; where it lies deeper than the strip's
+/// thickness h, the estimate does not hold (the strip is bonded to a rigid base at depth h).
+fn within_layer(sol: &PlaneSolution, p: Peak) -> Result<Peak, NotJudged> {
+    let thickness = sol.inputs.material.thickness;
+    if p.depth > thickness {
+        Err(NotJudged::BelowLayer {
+            depth: p.depth,
+            thickness,
+        })
+    } else {
+        Ok(p)
+    }
+}
+
+/// The yield check of a solution when the strength is known: not judged where `peak` is not
+/// given or where the half-plane's peak lies below the layer.
 pub fn judge(sol: &PlaneSolution, strength: Strength) -> Option<YieldCheck> {
     let (y, basis) = strength.yield_stress()?;
-    let check = match peak(sol) {
+    let hardness_unused = strength.yield_strength.is_some() && strength.hardness.is_some();
+    let check = match peak(sol).and_then(|p| within_layer(sol, p)) {
         Ok(p) => YieldCheck {
             strength: y,
             basis,
+            hardness_unused,
             von_mises_max: Some(p.stress),
             ratio: Some(p.stress / y),
             x: Some(p.x),
@@ -347,40 +386,14 @@ pub fn judge(sol: &PlaneSolution, strength: Strength) -> Option<YieldCheck> {
         Err(why) => YieldCheck {
             strength: y,
             basis,
+            hardness_unused,
             von_mises_max: None,
             ratio: None,
             x: None,
             depth: None,
             yields: (why == NotJudged::SharpCorners).then_some(true),
-            note: Some(why.reason()),
+            note: Some(why),
         },
     };
     Some(check)
-}
-
-impl YieldCheck {
-    /// The check in words: whether the strip yields, the largest stress against Y and where it
-    /// is ("at the surface" or its depth).
-    pub fn describe(&self) -> String {
-        let y = format!("Y = {} ({})", format_si(self.strength, "Pa"), self.basis);
-        let (Some(stress), Some(ratio), Some(depth)) = (self.von_mises_max, self.ratio, self.depth)
-        else {
-            let why = self.note.unwrap_or("");
-            return match self.yields {
-                Some(true) => format!("the strip yields: {why}"),
-                _ => format!("yield not judged: {why}"),
-            };
-        };
-        let place = if depth == 0.0 {
-            "at the surface".to_string()
-        } else {
-            format!("{} below the surface", format_si(depth, "m"))
-        };
-        let stress = format_si(stress, "Pa");
-        if ratio >= 1.0 {
-            format!("the strip yields: von Mises stress {stress} {place} exceeds {y}")
-        } else {
-            format!("no yield: largest von Mises stress {stress} = {ratio:.2} Y {place}, {y}")
-        }
-    }
 }

@@ -1,9 +1,10 @@
-//! The yield check in one short phrase for a status line (`wearlab solve` writes the long form,
-//! `YieldCheck::describe`): "yields: von Mises 6.40 MPa at 126 um depth > Y = 5.00 MPa", or
-//! "below yield: von Mises 3.00 MPa = 0.60 Y at the surface".
+//! The yield check in words: the long form that `wearlab solve` writes (`YieldCheck::describe`),
+//! and a short phrase for a status line (`YieldCheck::phrase`): "yields: von Mises 6.40 MPa at
+//! 126 um depth > Y = 5.00 MPa", or "below yield: von Mises 3.00 MPa = 0.60 Y at the surface";
+//! where both a yield strength and a hardness are given, each says which one is used.
 
 use crate::phrase::Phrase;
-use crate::physics::plane::yield_onset::YieldCheck;
+use crate::physics::plane::yield_onset::{NotJudged, YieldCheck};
 use crate::units::format_si;
 
 impl YieldCheck {
@@ -18,9 +19,15 @@ impl YieldCheck {
         };
         let (Some(stress), Some(ratio), Some(depth)) = (self.von_mises_max, self.ratio, self.depth)
         else {
-            return match self.yields {
-                Some(true) => {
+            return match self.note {
+                Some(NotJudged::SharpCorners) => {
                     Phrase::words("yields at the sharp corners (the pressure is unbounded there)")
+                }
+                Some(NotJudged::BelowLayer { depth, thickness }) => {
+                    Phrase::words("yield not judged: the peak stress of a half-plane lies at")
+                        .then(format!("depth {},", format_si(depth, "m")))
+                        .then_words("below the layer")
+                        .then(format!("(h = {})", format_si(thickness, "m")))
                 }
                 _ => Phrase::words("yield not judged under the narrow model"),
             };
@@ -31,15 +38,57 @@ impl YieldCheck {
             format!("at {} depth", format_si(depth, "m"))
         };
         let stress = format!("von Mises {}", format_si(stress, "Pa"));
-        if ratio >= 1.0 {
+        let verdict = if ratio >= 1.0 {
             Phrase::words("yields:")
                 .then(stress)
                 .then(place)
                 .then(format!("> {y}"))
         } else {
+            let basis = (self.basis != "yield_strength").then_some("(Y = H/3)");
             Phrase::words("below yield:")
                 .then(format!("{stress} = {ratio:.2} Y"))
                 .then(place)
+                .then(basis.unwrap_or_default())
+        };
+        // both given: which one the check takes
+        if self.hardness_unused {
+            verdict.then_words("(Y as given; H not used)")
+        } else {
+            verdict
+        }
+    }
+
+    /// The check in words: whether the strip yields, the largest stress against Y and where it
+    /// is ("at the surface" or its depth).
+    pub fn describe(&self) -> String {
+        let unused = if self.hardness_unused {
+            "; the hardness given is not used"
+        } else {
+            ""
+        };
+        let y = format!(
+            "Y = {} ({}{unused})",
+            format_si(self.strength, "Pa"),
+            self.basis
+        );
+        let (Some(stress), Some(ratio), Some(depth)) = (self.von_mises_max, self.ratio, self.depth)
+        else {
+            let why = self.note.map(NotJudged::reason).unwrap_or_default();
+            return match self.yields {
+                Some(true) => format!("the strip yields: {why}"),
+                _ => format!("yield not judged: {why}"),
+            };
+        };
+        let place = if depth == 0.0 {
+            "at the surface".to_string()
+        } else {
+            format!("{} below the surface", format_si(depth, "m"))
+        };
+        let stress = format_si(stress, "Pa");
+        if ratio >= 1.0 {
+            format!("the strip yields: von Mises stress {stress} {place} exceeds {y}")
+        } else {
+            format!("no yield: largest von Mises stress {stress} = {ratio:.2} Y {place}, {y}")
         }
     }
 }

@@ -49,3 +49,86 @@ fn a_hardness_typed_into_the_form_gives_the_yield_line_at_80x24_and_120x40() {
         "{tall}"
     );
 }
+
+/// A status's text as words: its rows joined, the borders and runs of spaces left out.
+fn words(status: &str) -> String {
+    status
+        .replace('│', " ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Types `text` into the row labelled `label` and delivers the solve.
+fn typed(app: &mut App, label: &str, text: &str) {
+    select(app, label, None);
+    press(app, KeyCode::Enter);
+    type_text(app, text);
+    let cmds = press(app, KeyCode::Enter);
+    settle(app, cmds);
+}
+
+#[test]
+fn with_both_strengths_the_status_says_which_one_is_used_and_none_clears_one() {
+    let mut app = solved("polymer-coating.toml");
+    typed(&mut app, "H", "15 MPa");
+    typed(&mut app, "Y", "100 MPa");
+    // Y = 100 MPa is judged, not H/3 = 5 MPa: the same stress as above, 0.06 Y
+    let tall = words(&status(&app, 120, 40));
+    assert!(
+        tall.contains(
+            "below yield: von Mises 6.40 MPa = 0.06 Y at 126 um depth (Y as given; H not used)"
+        ),
+        "{tall}"
+    );
+    // the prompt names none among what may be typed; none clears Y, and H/3 is judged again
+    select(&mut app, "Y", None);
+    press(&mut app, KeyCode::Enter);
+    let prompt = screen(&app, 120, 40, PLAIN);
+    assert!(prompt.contains("or none to clear it"), "{prompt}");
+    press(&mut app, KeyCode::Esc);
+    typed(&mut app, "Y", "none");
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(s.contains("│  Y                     none│"), "{s}");
+    let tall = status(&app, 120, 40);
+    assert!(tall.contains("> Y = H/3 = 5.00 MPa"), "{tall}");
+    assert!(!tall.contains("not used"), "{tall}");
+    // and none in H too: no yield check at all
+    typed(&mut app, "H", "none");
+    assert!(!status(&app, 120, 40).contains("yield"));
+}
+
+#[test]
+fn a_peak_stress_below_a_thin_coating_is_not_judged() {
+    // a 50 um coating under the strip model at 1 kN/m with little friction: the contact is
+    // about 3.5 h wide, and the half-plane's largest stress lies about 0.7 a deep (Johnson
+    // (1985) section 4.2, the frictionless Hertz contact's von Mises maximum on the axis),
+    // below the layer (`wearlab solve` gives yield.note "... at depth 56.8 um, below the layer
+    // (h = 50.0 um)" for these inputs)
+    let mut app = solved("polymer-coating.toml");
+    typed(&mut app, "H", "15 MPa");
+    typed(&mut app, "mu", "0.1");
+    typed(&mut app, "h", "50 um");
+    typed(&mut app, "P", "1 kN/m");
+    // wide -> narrow -> strip
+    for _ in 0..2 {
+        let cmds = press(&mut app, KeyCode::Char('m'));
+        settle(&mut app, cmds);
+    }
+    assert_eq!(
+        app.doc.preset.plane.model,
+        crate::physics::plane::Model::Strip
+    );
+    let tall = words(&status(&app, 120, 40));
+    assert!(
+        tall.contains(
+            "yield not judged: the peak stress of a half-plane lies at depth 56.8 um, below the \
+             layer (h = 50.0 um)"
+        ),
+        "{tall}"
+    );
+    assert!(
+        !tall.contains("yields:") && !tall.contains("below yield"),
+        "{tall}"
+    );
+}
