@@ -255,6 +255,10 @@ pub fn open(app: &mut App, entry: PickerEntry) -> Vec<Command> {
     app.doc.dirty = false;
     app.ui.selected = 0;
     app.ui.chart = Chart::opening(&app.doc.preset);
+    // the cursors read the last preset's charts: off, as on a first start (pins stay, to
+    // compare the presets)
+    app.ui.cursor = None;
+    app.ui.map_cell = None;
     app.lesson = LessonState::opened(&app.doc.preset);
     sweep_keys::reopen(app);
     app.ui.playing = false;

@@ -1,9 +1,10 @@
 //! An edit of the preset: the one way a change reaches the document (locked lesson keys refused,
 //! one undo step, a new solve asked), for the keys of the form and for a fit's result alike.
 
-use crate::preset::Preset;
+use crate::materials::CUSTOM;
+use crate::preset::{Key, Preset};
 use crate::tui::app::{App, Command, UNDO_DEPTH};
-use crate::tui::form::Change;
+use crate::tui::form::{self, Change};
 use crate::tui::lesson_keys;
 
 /// Replaces the preset by an edited one (undo keeps the old) and asks for a solve.
@@ -18,7 +19,9 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     let previous = std::mem::replace(&mut app.doc.preset, next);
     // a notice about an earlier step no longer applies
     app.ui.message = None;
-    if app.ui.expanded {
+    if let Some(left) = left_the_table(&previous, &app.doc.preset, &change) {
+        app.say(left);
+    } else if app.ui.expanded {
         // the form is hidden: say what changed
         app.say(format!("{}: {} -> {}", change.name, change.from, change.to));
     }
@@ -29,4 +32,17 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     app.doc.dirty = app.doc.edited();
     app.fit();
     vec![app.request()]
+}
+
+/// Where a value typed over a table material's (E, nu, Y or H: each is the table's) makes the
+/// material row read "custom": the change and why the row changed.
+fn left_the_table(before: &Preset, after: &Preset, change: &Change) -> Option<String> {
+    let row = Key::of("material.name")?;
+    let (was, now) = (form::show(before, &row), form::show(after, &row));
+    (was != now && now == CUSTOM && change.name != row.symbol()).then(|| {
+        format!(
+            "{}: {} -> {}, not the table's {was}: the material row reads {CUSTOM}",
+            change.name, change.from, change.to
+        )
+    })
 }

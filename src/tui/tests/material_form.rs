@@ -1,6 +1,7 @@
 //! The form's material row: Right and Left step through the bundled table, each choice setting
 //! E, nu and the strengths (whose rows then show, with Archard's K beside k); a value typed
-//! afterwards makes the row read "custom"; a figure's caption names a table material only.
+//! afterwards makes the row read "custom" (and the message says why); a figure's caption names a
+//! table material only.
 
 use ratatui::crossterm::event::KeyCode;
 
@@ -67,6 +68,12 @@ fn choosing_a_material_sets_its_values_and_typing_one_makes_it_custom() {
     type_text(&mut app, "200 GPa");
     press(&mut app, KeyCode::Enter);
     assert_eq!(shown(&app, "material"), CUSTOM);
+    // the message says why the row changed
+    let said = app.ui.message.as_ref().map(|m| m.text.clone());
+    assert_eq!(
+        said.as_deref(),
+        Some("E: 210 GPa -> 200 GPa, not the table's AISI 52100: the material row reads custom")
+    );
     assert!(
         !caption(&app.doc.preset, 200)
             .join(" ")

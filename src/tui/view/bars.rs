@@ -95,7 +95,8 @@ fn message(app: &App, style: RenderOptions) -> (String, Style) {
                     Some(p) => format!("{} ({})", doc.preset.name, p.display()),
                     None => doc.preset.name.clone(),
                 };
-                let edited = if doc.dirty { " (edited)" } else { "" };
+                // not "(edited)": the name of a saved edited copy already ends in it
+                let edited = if doc.dirty { " (unsaved edits)" } else { "" };
                 (format!("{name}{edited}"), Style::default())
             }
         },

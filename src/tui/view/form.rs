@@ -1,6 +1,6 @@
 //! The form panel: the parameters grouped under headings, the selected row highlighted (showing
 //! the text being typed), the rows a lesson locks marked `=`, scrolled to keep the selection
-//! visible.
+//! visible, the bottom border saying where rows are out of sight ("more below").
 
 use crate::preset::{Problem, surface_from_file};
 use ratatui::Frame;
@@ -26,7 +26,6 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     };
     let block = Block::default().borders(Borders::ALL).title(title);
     let inner = block.inner(area);
-    frame.render_widget(block, area);
     let width = (inner.width as usize).saturating_sub(LABEL + 2);
     let mut lines: Vec<Line> = Vec::new();
     let mut selected_line = 0;
@@ -59,6 +58,15 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
     let offset = selected_line
         .saturating_sub(height.saturating_sub(2))
         .min(lines.len().saturating_sub(height));
+    // rows scrolled out of sight, said on the bottom border (in words: an arrow's ASCII form
+    // would read as a key)
+    let more = match (offset > 0, offset + height < lines.len()) {
+        (true, true) => " more above and below ",
+        (true, false) => " more above ",
+        (false, true) => " more below ",
+        (false, false) => "",
+    };
+    frame.render_widget(block.title_bottom(Line::from(more).right_aligned()), area);
     frame.render_widget(Paragraph::new(lines).scroll((offset as u16, 0)), inner);
 }
 

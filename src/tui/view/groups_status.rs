@@ -60,10 +60,12 @@ fn plane(
     width: usize,
     height: usize,
 ) -> Vec<Line<'static>> {
-    // in a crowded status, (a+b)/R and P/(m R) give way before (a+b)/h, the material's
-    // numbers, theta, mu* and mu* - mu
-    with_validity((&plane_items(p), &[1, 2]), p, checks, style, width, height)
+    with_validity((&plane_items(p), &GIVE_UP), p, checks, style, width, height)
 }
+
+/// In a crowded status, (a+b)/R and P/(m R) (the indices of `plane_items`) give way before
+/// (a+b)/h, the material's numbers, theta, mu* and mu* - mu.
+pub const GIVE_UP: [usize; 2] = [1, 2];
 
 /// The groups of a plane operating point, in the order the status shows them.
 pub fn plane_items(p: &OperatingPoint) -> Vec<String> {

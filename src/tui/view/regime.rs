@@ -260,8 +260,8 @@ pub fn draw(
     }
 }
 
-/// The status's readout at the cursor: both parameters and the quantity, with units, and the
-/// verdicts there.
+/// The status's readout at the cursor, most telling first (a crowded status keeps the first):
+/// both parameters with units, the quantity, which effect dominates, the verdicts there, theta.
 pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<String>> {
     let (i, j) = (i.min(map.x.len() - 1), j.min(map.y.len() - 1));
     let s = map.sample(i, j)?;
@@ -283,12 +283,12 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
             spec.y.key.symbol(),
             format_si(map.y[j], spec.y.key.param().unit)
         ),
-        format!("{} = {value}", q.symbol()),
     ];
-    items.extend(
-        s.theta
-            .map(|t| format!("theta = {}", status_values::number("theta", t))),
-    );
+    // the words on which effect dominates give mu* - mu themselves: the map's value beside them
+    // only where it is another quantity
+    if s.dominance.is_none() || q.quantity().name != "mu_star_minus_mu" {
+        items.push(format!("{} = {value}", q.symbol()));
+    }
     items.extend(s.dominance.map(|d| d.describe().to_string()));
     let verdict = |ok: bool| if ok { "holds" } else { "fails" };
     items.extend(s.wide_holds.map(|h| format!("wide {}", verdict(h))));
@@ -307,5 +307,10 @@ pub fn readout(spec: &MapSpec, map: &Map, (i, j): (usize, usize)) -> Option<Vec<
     if map.stride > 1 {
         items.push("(coarse: nearest computed point)".into());
     }
+    // theta last: where the status has no room for every item, the words and verdicts stay
+    items.extend(
+        s.theta
+            .map(|t| format!("theta = {}", status_values::number("theta", t))),
+    );
     Some(items)
 }

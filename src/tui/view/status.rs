@@ -54,9 +54,10 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
         }
     };
     // the cursor readout first, each value whole; beside a chart of the operating point, the
-    // point and its verdict are always shown and the readout takes the rows left (its hidden
-    // values counted); under a sweep or a map, whose chart marks the point, the readout of the
-    // sweep comes first and the point gives up rows before the verdict does
+    // point (a, b, theta, mu*) and its verdict are always shown and the readout takes the rows
+    // left, before the point's residual, psi and Q2 (its hidden values counted); under a sweep
+    // or a map, whose chart marks the point, the readout of the sweep comes first and the point
+    // gives up rows before the verdict does
     let kept = kept_rows(app, answer, width);
     let (readout, room) = match app.explore.view {
         Some(_) => (
@@ -84,17 +85,19 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
     }
 }
 
-/// The rows of a plane point's status that a readout never takes: (its values and verdict, the
-/// verdict alone); None for other outputs.
+/// The rows of a plane point's status that a readout never takes: (its values but those that
+/// give way in a crowded status, and its verdict; the verdict alone); None for other outputs.
 fn kept_rows(app: &App, answer: &Answer, width: usize) -> Option<(usize, usize)> {
     let Output::Plane(out) = &answer.output else {
         return None;
     };
     let p = out.point.as_ref().ok()?;
     let all = if app.explore.dimensionless {
-        validity_status::kept_rows(&groups_status::plane_items(p), p, width)
+        let items = groups_status::plane_items(p);
+        validity_status::kept_rows((&items, &groups_status::GIVE_UP), p, width)
     } else {
-        validity_status::kept_rows(&plane_items(p), p, width)
+        let items = plane_items(p);
+        validity_status::kept_rows((&items, &give_up(items.len())), p, width)
     };
     Some((all, validity_status::verdict_rows(p, width)))
 }
@@ -122,10 +125,14 @@ fn plane(
     height: usize,
 ) -> Vec<Line<'static>> {
     let items = plane_items(p);
-    // in a crowded status, the residual, psi and Q2 give way before mu*, a, b and theta
-    let n = items.len();
-    let give_up = [n - 1, n - 3, n - 4];
+    let give_up = give_up(items.len());
     with_validity((&items, &give_up), p, checks, style, width, height)
+}
+
+/// In a crowded status, the residual, psi and Q2 (the indices among `n` items of
+/// `plane_items`) give way before mu*, a, b and theta.
+fn give_up(n: usize) -> [usize; 3] {
+    [n - 1, n - 3, n - 4]
 }
 
 /// The values of a plane operating point, in the order the status shows them.

@@ -68,7 +68,7 @@ pub const SWEEP_HELP: &str = "A quantity against one input over the range chosen
 pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours (viridis, or \
     shades without colour) read on the bar at the right; coarse first, then refined pass by pass. \
     Letters draw the library's lines: 0 where theta = 0, where friction and wear shift the \
-    pressure's edge exponents equally (pi mu chi = k m) and on a half-plane mu* = mu (on a strip \
+    pressure's edge exponents equally (pi mu chi = k m) and on a half-plane mu* - mu = 0 (on a strip \
     of finite thickness the sign of mu* - mu, not of theta, says which dominates), W and N where the wide and the narrow model's validity checks change, C where \
     complete contact is lost; + is the preset's own point. x shows a \
     cursor, X (at the grid point nearest the preset's), [ ] move it along x, { } along y, and the status reads both \

@@ -172,9 +172,21 @@ pub fn verdict_rows(p: &OperatingPoint, width: usize) -> usize {
     }
 }
 
-/// The rows a plane status never gives up: `items` packed into lines and the verdict.
-pub fn kept_rows<P: Clone + Into<Phrase>>(items: &[P], p: &OperatingPoint, width: usize) -> usize {
-    pack(items, width, "").len() + verdict_rows(p, width)
+/// The rows a plane status never gives up to a cursor's readout: `items` but those at the
+/// indices `give_up` names (counted, "+2 more"), packed into lines, and the verdict.
+pub fn kept_rows<P: Clone + Into<Phrase>>(
+    (items, give_up): (&[P], &[usize]),
+    p: &OperatingPoint,
+    width: usize,
+) -> usize {
+    let mut kept: Vec<Phrase> = (items.iter().enumerate())
+        .filter(|(i, _)| !give_up.contains(i))
+        .map(|(_, item)| item.clone().into())
+        .collect();
+    if !give_up.is_empty() {
+        kept.push(Phrase::whole(format!("+{} more", give_up.len())));
+    }
+    pack(&kept, width, "").len() + verdict_rows(p, width)
 }
 
 /// A plane status: `items` packed into lines, then the validity lines in the room left (the
