@@ -15,6 +15,7 @@ pub mod synthetic;
 pub mod uncertainty;
 
 use nalgebra::DVector;
+use rayon::prelude::*;
 
 use crate::data::DataSet;
 use crate::physics::stop::Stop;
@@ -174,8 +175,9 @@ pub fn fit_until(
     };
     let errors = uncertainty::errors(&best.jacobian, s2);
     let threshold = quantile * quantile * s2;
+    // the parameters' profiles are independent of each other: scanned in parallel (rayon)
     let estimates = free
-        .iter()
+        .par_iter()
         .enumerate()
         .map(|(j, fr)| {
             let se = errors.standard[j];

@@ -99,11 +99,11 @@ impl Model<'_> {
     /// The model's value of each measured value, row by row; Err names the row's line and why the
     /// model has no answer there.
     pub fn predictions(&self, theta: &DVector<f64>) -> Result<Vec<f64>, String> {
-        let preset = self.preset(theta)?;
+        // one preset for every row: each row assigns the x it was measured at over the last
+        let mut at = self.preset(theta)?;
         let mut out = Vec::with_capacity(self.weights.len());
         for (i, x) in self.data.x.values.iter().enumerate() {
             let line = self.data.lines[i];
-            let mut at = preset.clone();
             at.assign(self.data.x.key, *x)
                 .and_then(|()| at.check_rules())
                 .map_err(|why| format!("line {line}: {why}"))?;

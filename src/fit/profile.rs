@@ -69,47 +69,51 @@ fn profiled(
 /// The profile range of parameter `j` about the minimum `best`: steps of `step` times `OFFSETS`
 /// outwards on each side until the sum of squares exceeds its minimum by `threshold`, the
 /// crossing then bisected. A step where the model has no answer (a value outside the
-/// parameter's range) ends the scan on that side, open.
+/// parameter's range) ends the scan on that side, open. The two sides are scanned in parallel
+/// (rayon): each starts from the minimum and reads nothing of the other.
 pub fn range(model: &Model, best: &Minimum, j: usize, step: f64, threshold: f64) -> Range {
+    let scan = |sign: f64| side(model, best, j, sign * step, threshold);
+    let ((low, low_open), (high, high_open)) = rayon::join(|| scan(-1.0), || scan(1.0));
+    Range {
+        low,
+        high,
+        low_open,
+        high_open,
+    }
+}
+
+/// One side of the profile range: the end in the fitting coordinate, stepping by `step` (its
+/// sign the side), and true when the end is where the scan stopped, not a crossing.
+fn side(model: &Model, best: &Minimum, j: usize, step: f64, threshold: f64) -> (f64, bool) {
     let centre = best.x[j];
-    let start: DVector<f64> = best.x.clone().remove_row(j);
     let rise = |at: f64, others: &DVector<f64>| {
         profiled(model, j, at, others)
             .map(|(s, fitted)| ((s - best.sum_of_squares).max(0.0), fitted))
     };
-    let mut ends = [(centre, true); 2];
-    for (side, sign) in [-1.0, 1.0].into_iter().enumerate() {
-        let mut others = start.clone();
-        let mut inside = centre;
-        let mut end = (inside, true);
-        for offset in OFFSETS {
-            let at = centre + sign * step * offset;
-            match rise(at, &others) {
-                Err(_) => break,
-                Ok((r, _)) if r > threshold => {
-                    let mut outside = at;
-                    for _ in 0..BISECTIONS {
-                        let mid = 0.5 * (inside + outside);
-                        match rise(mid, &others) {
-                            Ok((r, fitted)) if r <= threshold => (inside, others) = (mid, fitted),
-                            _ => outside = mid,
-                        }
+    let mut others: DVector<f64> = best.x.clone().remove_row(j);
+    let mut inside = centre;
+    let mut end = (inside, true);
+    for offset in OFFSETS {
+        let at = centre + step * offset;
+        match rise(at, &others) {
+            Err(_) => break,
+            Ok((r, _)) if r > threshold => {
+                let mut outside = at;
+                for _ in 0..BISECTIONS {
+                    let mid = 0.5 * (inside + outside);
+                    match rise(mid, &others) {
+                        Ok((r, fitted)) if r <= threshold => (inside, others) = (mid, fitted),
+                        _ => outside = mid,
                     }
-                    end = (0.5 * (inside + outside), false);
-                    break;
                 }
-                Ok((_, fitted)) => {
-                    (inside, others) = (at, fitted);
-                    end = (inside, true);
-                }
+                end = (0.5 * (inside + outside), false);
+                break;
+            }
+            Ok((_, fitted)) => {
+                (inside, others) = (at, fitted);
+                end = (inside, true);
             }
         }
-        ends[side] = end;
     }
-    Range {
-        low: ends[0].0,
-        high: ends[1].0,
-        low_open: ends[0].1,
-        high_open: ends[1].1,
-    }
+    end
 }

@@ -188,17 +188,16 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phr
         ));
         return (Deviation::NONE, failed);
     }
+    // each written only when outside: a fit estimates the validity of every row it solves
     let outside: Vec<String> = [
-        (nu > STUDIED_NU, format!("nu = {nu}")),
-        (mu > STUDIED_MU, format!("mu = {mu}")),
-        (km > STUDIED_KM, format!("k m = {km:.3}")),
-        (
-            inputs.friction.adhesion != 0.0,
-            format!("tau0 = {:.3e} Pa", inputs.friction.adhesion),
-        ),
+        (nu > STUDIED_NU).then(|| format!("nu = {nu}")),
+        (mu > STUDIED_MU).then(|| format!("mu = {mu}")),
+        (km > STUDIED_KM).then(|| format!("k m = {km:.3}")),
+        (inputs.friction.adhesion != 0.0)
+            .then(|| format!("tau0 = {:.3e} Pa", inputs.friction.adhesion)),
     ]
     .into_iter()
-    .filter_map(|(out, what)| out.then_some(what))
+    .flatten()
     .collect();
     if !outside.is_empty() {
         failed.push((

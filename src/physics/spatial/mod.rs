@@ -123,6 +123,8 @@ pub fn validate_harmonics(harmonics: &[Harmonic]) -> Result<(), SolveError> {
             (&limits::PHASE, "phase_y", h.phase_y),
         ]
         .iter()
+        // the name is written only for a refusal: a fit checks every row's preset
+        .filter(|(limit, _, value)| !limit.accepts(*value))
         .try_for_each(|(limit, name, value)| limit.check(&of_harmonic(name), *value))
         .map_err(SolveError::InvalidInput)?;
         if h.wavenumber() == 0.0 {
