@@ -5,6 +5,7 @@
 mod coverage;
 mod identifiability;
 mod lab_data;
+mod saved;
 
 use std::io::Write;
 
