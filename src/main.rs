@@ -101,9 +101,10 @@ enum Command {
     Fit {
         /// The preset file (TOML, schema 1): the model and the starting values.
         preset: PathBuf,
-        /// The data file: CSV with a header `quantity [unit],...`, the x axis first.
+        /// The data file: CSV with a header `quantity [unit],...`, the x axis first; without
+        /// it, the file the preset's [explore] section names (`data = "..."`, beside the preset).
         #[arg(long, value_name = "FILE")]
-        data: PathBuf,
+        data: Option<PathBuf>,
         /// The preset keys to fit, comma-separated, e.g. friction.coefficient,wear.coefficient.
         #[arg(long, value_name = "KEY[,KEY...]")]
         free: String,
@@ -187,7 +188,7 @@ fn main() -> ExitCode {
             max_seconds,
         }) => fit::run(&fit::Request {
             path: &preset,
-            data: &data,
+            data: data.as_deref(),
             free: &free,
             settings: &settings,
             unlock,

@@ -1,10 +1,11 @@
-//! `wearlab fit PRESET --data FILE --free KEY[,KEY...] [--set ...] [--write OUT.toml]`: the
-//! library's fit (`wearlab::fit`) of the free parameters to a data file (`wearlab::data`), as JSON
+//! `wearlab fit PRESET [--data FILE] --free KEY[,KEY...] [--set ...] [--write OUT.toml]`: the
+//! library's fit (`wearlab::fit`) of the free parameters to a data file (`wearlab::data`; without
+//! `--data`, the one the preset's `[explore]` section names), as JSON
 //! on stdout: estimates, 95 % intervals, whether each is determined and why not, the residuals;
 //! `--write` saves the fitted preset atomically, as the explorer saves an edited preset: the
 //! preset file's text kept (comments, units, key order), only the values that changed rewritten.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use serde_json::{Map, Value, json};
@@ -23,8 +24,8 @@ use super::{
 pub struct Request<'a> {
     /// The preset file.
     pub path: &'a Path,
-    /// `--data`.
-    pub data: &'a Path,
+    /// `--data`; None for the file the preset's `[explore]` section names.
+    pub data: Option<&'a Path>,
     /// `--free`, a comma-separated list of preset keys.
     pub free: &'a str,
     /// `--set`, in order.
@@ -49,6 +50,24 @@ fn keys(preset: &Preset, list: &str) -> Result<Vec<Key>, String> {
         .collect()
 }
 
+/// The data file to fit: `--data`, else the one the preset's `[explore]` section names (`data`,
+/// as the explorer opens it: relative to the preset's folder).
+fn data_file(request: &Request, preset: &Preset) -> Result<PathBuf, String> {
+    if let Some(path) = request.data {
+        return Ok(path.to_path_buf());
+    }
+    let named = preset.explore.as_ref().and_then(|e| e.data.as_deref());
+    let Some(named) = named else {
+        return Err(format!(
+            "no data to fit: {} names no data file (its [explore] section has no `data = \"...\"`); \
+             give one with --data FILE",
+            request.path.display()
+        ));
+    };
+    let folder = request.path.parent().unwrap_or(Path::new(""));
+    Ok(folder.join(named))
+}
+
 /// Runs `wearlab fit`.
 pub fn run(request: &Request) -> ExitCode {
     let read = match load(request.path) {
@@ -59,7 +78,11 @@ pub fn run(request: &Request) -> ExitCode {
         Ok(p) => p,
         Err(code) => return code,
     };
-    let data = match data::read(request.data, &preset) {
+    let data_path = match data_file(request, &preset) {
+        Ok(p) => p,
+        Err(why) => return invalid(&why),
+    };
+    let data = match data::read(&data_path, &preset) {
         Ok(d) => d,
         Err(e) => return invalid(&e.to_string()),
     };

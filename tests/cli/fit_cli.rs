@@ -268,3 +268,41 @@ fn the_written_preset_keeps_the_authors_text_and_changes_only_the_fitted_value()
     // the original is unchanged
     assert_eq!(std::fs::read_to_string(&lab).unwrap(), HAND_WRITTEN);
 }
+
+/// Without `--data` the fit reads the file the preset's `[explore]` section names, beside the
+/// preset (the file the explorer draws): the same fit as with `--data` naming it.
+#[test]
+fn without_data_the_preset_s_own_data_file_is_fitted() {
+    let free = ["--free", "friction.coefficient"];
+    let (code, own, err) = run(&["fit", "presets/lab-friction.toml", free[0], free[1]]);
+    assert_eq!(code, 0, "{err}");
+    let (code, named, err) = run(&[
+        "fit",
+        "presets/lab-friction.toml",
+        "--data",
+        "presets/lab-friction.csv",
+        free[0],
+        free[1],
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let (own, named): (serde_json::Value, serde_json::Value) = (
+        serde_json::from_str(&own).unwrap(),
+        serde_json::from_str(&named).unwrap(),
+    );
+    assert_eq!(own["data"], "presets/lab-friction.csv");
+    assert_eq!(own["estimates"], named["estimates"]);
+    assert_eq!(own["residuals"], named["residuals"]);
+}
+
+/// A preset that names no data file, fitted without `--data`: exit 2, saying what to give.
+#[test]
+fn without_data_a_preset_naming_none_is_refused_in_words() {
+    let (code, out, err) = run(&["fit", PRESET, "--free", "friction.coefficient"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains(&format!("no data to fit: {PRESET} names no data file"))
+            && err.contains("give one with --data FILE"),
+        "{err}"
+    );
+}
