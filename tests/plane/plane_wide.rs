@@ -291,3 +291,50 @@ fn wear_per_pass_totals_k_q2_at_the_trailing_edge() {
     assert_eq!(prof.wear[200], 0.0);
     assert!(prof.wear.windows(2).all(|w| w[0] >= w[1]));
 }
+
+#[test]
+fn the_width_is_the_first_that_carries_the_load_up_to_the_most_the_model_carries() {
+    use wearlab::physics::plane::wide::{WideConstants, solve_with, state};
+    // a wide strip whose load P(L) has a maximum ((4.6) with the thickness correction): loads
+    // from far below it to just under it, against a scan of P(L) on 20,000 widths
+    let inp = plane(3e9, 0.35, 2e-4, 0.3, 0.0, 0.0, 0.01, 1.0);
+    let c = WideConstants::new(&inp);
+    let carried = |l: f64| state(&c, &inp, l).load;
+    let scan: Vec<f64> = (0..20_000)
+        .map(|i| 1e-7 * 10f64.powf(6.0 * i as f64 / 19_999.0))
+        .collect();
+    let (most, at_most) = scan
+        .iter()
+        .map(|&l| (carried(l), l))
+        .fold((f64::MIN, 0.0), |m, x| if x.0 > m.0 { x } else { m });
+    assert!(at_most > scan[0] && at_most < scan[19_999], "the scan holds the maximum");
+    // (within about 0.2 % of the maximum the march by factors of 1.1 steps over the widths that
+    // carry the load, and the model says it has no contact there)
+    for fraction in [1e-6, 1e-3, 0.1, 0.5, 0.9, 0.99, 0.995] {
+        let p = fraction * most;
+        // the model's own answer, before the checks that refuse a contact off the punch tip
+        let sol = solve_with(&c, &inp.with_load(p)).unwrap();
+        let l = sol.contact_width();
+        assert!(rel(carried(l), p) < 1e-12, "{fraction}: P(L) = {}", carried(l));
+        // no narrower width of the scan carries the load: L is the first crossing
+        let first = scan.iter().position(|&w| carried(w) >= p).unwrap();
+        assert!(
+            scan[first - 1] < l && l <= scan[first] && l < at_most,
+            "{fraction}: L = {l}, scan {} .. {}",
+            scan[first - 1],
+            scan[first]
+        );
+    }
+    let err = solve_with(&c, &inp.with_load(1.01 * most))
+        .unwrap_err()
+        .to_string();
+    let said: f64 = err
+        .split("carries at most P = ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|s| s.parse().ok())
+        .unwrap();
+    // the message's maximum is the largest load of its own march (factors of 1.1 in L), which
+    // lies within 1 % of the scan's at a smooth maximum
+    assert!(rel(said, most) < 1e-2, "{said} against {most}");
+}

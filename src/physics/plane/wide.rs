@@ -99,7 +99,13 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
     let p = inputs.load;
     let hertz = (8.0 * inputs.radius() * p / c.m).sqrt();
     let f = |l: f64| state(c, inputs, l).load - p;
-    let (lo, hi) = march_up(hertz * 1e-4, 1.1, hertz * 1e6, f).map_err(|why| match why {
+    let (from, to) = (hertz * 1e-4, hertz * 1e6);
+    // the first width at which the load is carried: by factors of 2 (about 14 evaluations up to
+    // the Hertz width), and where that finds none, by factors of 1.1, which resolves a load
+    // carried only over a narrow range of widths (near the most the model carries) and that most
+    // for the message
+    let coarse = march_up(from, 2.0, to, f);
+    let (lo, hi) = coarse.or_else(|_| march_up(from, 1.1, to, f)).map_err(|why| match why {
         NoBracket::NoPositive { best_x, best_f, .. } => SolveError::NoSolution(format!(
             "the wide-strip model has no contact at P = {p:.4e} N/m: it carries at most \
              P = {:.4e} N/m (contact width {best_x:.4e} m, far outside its range of validity)",
