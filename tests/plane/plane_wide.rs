@@ -307,7 +307,10 @@ fn the_width_is_the_first_that_carries_the_load_up_to_the_most_the_model_carries
         .iter()
         .map(|&l| (carried(l), l))
         .fold((f64::MIN, 0.0), |m, x| if x.0 > m.0 { x } else { m });
-    assert!(at_most > scan[0] && at_most < scan[19_999], "the scan holds the maximum");
+    assert!(
+        at_most > scan[0] && at_most < scan[19_999],
+        "the scan holds the maximum"
+    );
     // (within about 0.2 % of the maximum the march by factors of 1.1 steps over the widths that
     // carry the load, and the model says it has no contact there)
     for fraction in [1e-6, 1e-3, 0.1, 0.5, 0.9, 0.99, 0.995] {
@@ -315,7 +318,11 @@ fn the_width_is_the_first_that_carries_the_load_up_to_the_most_the_model_carries
         // the model's own answer, before the checks that refuse a contact off the punch tip
         let sol = solve_with(&c, &inp.with_load(p)).unwrap();
         let l = sol.contact_width();
-        assert!(rel(carried(l), p) < 1e-12, "{fraction}: P(L) = {}", carried(l));
+        assert!(
+            rel(carried(l), p) < 1e-12,
+            "{fraction}: P(L) = {}",
+            carried(l)
+        );
         // no narrower width of the scan carries the load: L is the first crossing
         let first = scan.iter().position(|&w| carried(w) >= p).unwrap();
         assert!(

@@ -105,16 +105,18 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
     // carried only over a narrow range of widths (near the most the model carries) and that most
     // for the message
     let coarse = march_up(from, 2.0, to, f);
-    let (lo, hi) = coarse.or_else(|_| march_up(from, 1.1, to, f)).map_err(|why| match why {
-        NoBracket::NoPositive { best_x, best_f, .. } => SolveError::NoSolution(format!(
-            "the wide-strip model has no contact at P = {p:.4e} N/m: it carries at most \
+    let (lo, hi) = coarse
+        .or_else(|_| march_up(from, 1.1, to, f))
+        .map_err(|why| match why {
+            NoBracket::NoPositive { best_x, best_f, .. } => SolveError::NoSolution(format!(
+                "the wide-strip model has no contact at P = {p:.4e} N/m: it carries at most \
              P = {:.4e} N/m (contact width {best_x:.4e} m, far outside its range of validity)",
-            best_f + p,
-        )),
-        other => SolveError::NoSolution(format!(
-            "the wide-strip model finds no contact width at P = {p:.4e} N/m: {other}"
-        )),
-    })?;
+                best_f + p,
+            )),
+            other => SolveError::NoSolution(format!(
+                "the wide-strip model finds no contact width at P = {p:.4e} N/m: {other}"
+            )),
+        })?;
     let l = brent(lo, hi, f).ok_or_else(|| {
         SolveError::NoSolution(format!(
             "the contact width did not converge at P = {p:.4e} N/m \
