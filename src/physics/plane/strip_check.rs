@@ -208,16 +208,17 @@ impl StripCheck {
 /// the general strip solver's (other shapes and laws) up to seconds.
 pub fn verdict(sol: &PlaneSolution) -> Validity {
     let estimated = estimate(sol);
-    if !measures(sol, &estimated) {
+    if !measures(sol, estimated.ok) {
         return estimated;
     }
     judged(&estimated, &strip_check(sol), sol.model)
 }
 
-/// Whether `verdict` measures the solution against the strip model: the estimate doubts it, the
-/// inputs are the parabola's with the linear laws, and the strip model is cheap there.
-pub(crate) fn measures(sol: &PlaneSolution, estimated: &Validity) -> bool {
-    !estimated.ok && sol.inputs.is_classical() && runs_strip(sol)
+/// Whether `verdict` measures the solution against the strip model: the estimate doubts it
+/// (`estimated_ok` false), the inputs are the parabola's with the linear laws, and the strip model
+/// is cheap there.
+pub(crate) fn measures(sol: &PlaneSolution, estimated_ok: bool) -> bool {
+    !estimated_ok && sol.inputs.is_classical() && runs_strip(sol)
 }
 
 /// The verdict on an operating point whose model was checked against the strip model (`check`

@@ -6,8 +6,8 @@
 use rayon::prelude::*;
 
 use crate::physics::plane::PlaneSolution;
-use crate::physics::plane::strip_check::{StripCheck, judged, measures, strip_check};
-use crate::physics::plane::validity::{Aspect, Validity, estimate};
+use crate::physics::plane::strip_check::{StripCheck, measures, strip_check};
+use crate::physics::plane::validity::{Passes, passes};
 
 /// Points between two measured points of a run of doubted points.
 const SPAN: usize = 8;
@@ -24,15 +24,19 @@ pub(crate) struct Measured {
     pub ratios: Option<[f64; 2]>,
 }
 
-pub(crate) fn measure(sol: &PlaneSolution, estimated: &Validity) -> Measured {
-    let check = strip_check(sol);
-    let ratios = match &check {
-        StripCheck::Measured(d) => Some(d.ratios()),
-        _ => None,
-    };
-    Measured {
-        ok: judged(estimated, &check, sol.model).ok,
-        ratios,
+/// The solution measured against the strip model (`strip_check`), its verdict as
+/// `strip_check::judged` gives it: where measured, the measurement within the tolerances and the
+/// models' assumptions holding; else the study's estimate (`passes`: `estimate` without its words).
+pub(crate) fn measure(sol: &PlaneSolution, passes: Passes) -> Measured {
+    match strip_check(sol) {
+        StripCheck::Measured(d) => Measured {
+            ok: passes.assumptions_hold && d.within_tolerance(),
+            ratios: Some(d.ratios()),
+        },
+        _ => Measured {
+            ok: passes.ok,
+            ratios: None,
+        },
     }
 }
 
@@ -47,12 +51,12 @@ pub(crate) fn measure(sol: &PlaneSolution, estimated: &Validity) -> Measured {
 /// BAND; elsewhere the point is measured. Its own assumptions (small slopes, ...) still decide as
 /// in `judged`. A run of 100 doubted points costs about 15 strip solves instead of 100.
 pub fn holds_along(sols: &[Option<PlaneSolution>]) -> Vec<Option<bool>> {
-    let estimates: Vec<Option<Validity>> = sols.iter().map(|s| s.as_ref().map(estimate)).collect();
+    let estimates: Vec<Option<Passes>> = sols.iter().map(|s| s.as_ref().map(passes)).collect();
     let doubted: Vec<bool> = (sols.iter().zip(&estimates))
-        .map(|(s, e)| matches!((s, e), (Some(s), Some(e)) if measures(s, e)))
+        .map(|(s, e)| matches!((s, e), (Some(s), Some(e)) if measures(s, e.ok)))
         .collect();
-    let mut holds: Vec<Option<bool>> = estimates.iter().map(|e| e.as_ref().map(|e| e.ok)).collect();
-    let measure_at = |i: usize| match (&sols[i], &estimates[i]) {
+    let mut holds: Vec<Option<bool>> = estimates.iter().map(|e| e.map(|e| e.ok)).collect();
+    let measure_at = |i: usize| match (&sols[i], estimates[i]) {
         (Some(sol), Some(estimated)) => measure(sol, estimated),
         _ => Measured {
             ok: false,
@@ -88,9 +92,7 @@ pub fn holds_along(sols: &[Option<PlaneSolution>]) -> Vec<Option<bool>> {
         let exact: Vec<Measured> = unread.par_iter().map(|&k| measure_at(k)).collect();
         for (k, inside) in between {
             if let Some(inside) = inside {
-                let own = estimates[k]
-                    .as_ref()
-                    .is_some_and(|e| e.reasons.iter().all(|r| r.aspect != Aspect::Assumption));
+                let own = estimates[k].is_some_and(|e| e.assumptions_hold);
                 holds[k] = Some(inside && own);
             }
         }

@@ -92,22 +92,96 @@ pub struct Reason {
     pub text: Phrase,
 }
 
+/// A criterion of the study the solution fails, with the numbers its words need.
+enum Failed {
+    /// Not the parabola with the linear laws and no cap: the study's formulas do not apply.
+    Unjudged,
+    /// Inputs outside the study: which of nu, mu, k m, tau0.
+    Outside([bool; 4]),
+    /// The wide model beyond its limit on (a+b)/h.
+    WideLimit(f64),
+    /// The Winkler model's contact width: the (a+b)/h it needs.
+    WinklerWidth(f64),
+    /// The Winkler model lacks the friction part of mu* - mu.
+    WinklerMu,
+}
+
+/// An assumption of every model the solution breaks, with its number (the punch shape's own
+/// assumptions are `shape_validity`'s).
+enum Broken {
+    /// theta close to +-1/2.
+    Theta(f64),
+    /// The parabola's (a+b)/R above 0.1.
+    Slopes(f64),
+}
+
+/// What the study's criteria and the models' assumptions find at a solution, before words.
+struct Findings {
+    lambda: f64,
+    error: Deviation,
+    failed: Vec<Failed>,
+    broken: Vec<Broken>,
+}
+
+fn findings(sol: &PlaneSolution) -> Findings {
+    let inputs = &sol.inputs;
+    let h = inputs.material.thickness;
+    let l = sol.contact_width();
+    let lambda = if h.is_finite() { l / h } else { 0.0 };
+    let (error, failed) = match sol.model {
+        _ if !h.is_finite() => (Deviation::NONE, Vec::new()),
+        Model::Strip => (Deviation::NONE, Vec::new()),
+        Model::Wide | Model::Narrow => criteria_of(sol, lambda),
+    };
+    let mut broken = Vec::new();
+    if let Some(theta) = sol.theta
+        && theta.abs() > 0.45
+    {
+        broken.push(Broken::Theta(theta));
+    }
+    let l_over_r = l / inputs.radius();
+    if inputs.shape.parabola_radius().is_some() && l_over_r > 0.1 {
+        broken.push(Broken::Slopes(l_over_r));
+    }
+    Findings {
+        lambda,
+        error,
+        failed,
+        broken,
+    }
+}
+
+/// What decides the verdict at a solution, without its words (for the verdicts along a sweep):
+/// whether the study's estimate passes it (`estimate(sol).ok`) and whether the assumptions of
+/// every model hold there (no warning of `Aspect::Assumption`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Passes {
+    pub ok: bool,
+    pub assumptions_hold: bool,
+}
+
+/// `estimate` without the words: the same findings.
+pub(crate) fn passes(sol: &PlaneSolution) -> Passes {
+    let found = findings(sol);
+    let assumptions_hold = found.broken.is_empty() && shape_validity::warnings(sol).is_empty();
+    Passes {
+        ok: found.failed.is_empty() && assumptions_hold,
+        assumptions_hold,
+    }
+}
+
 /// Checks the operating point against the model's assumptions and the study's criteria: the
 /// study's estimate of its deviation from the strip model, not measured (`strip_check::judged`
 /// measures it where that is cheap).
 pub fn estimate(sol: &PlaneSolution) -> Validity {
-    let inputs = &sol.inputs;
-    let h = inputs.material.thickness;
-    let l = sol.contact_width();
-    let l_over_h = if h.is_finite() { l / h } else { 0.0 };
-    let (estimated_error, failed) = match sol.model {
-        _ if !h.is_finite() => (Deviation::NONE, Vec::new()),
-        Model::Strip => (Deviation::NONE, Vec::new()),
-        Model::Wide | Model::Narrow => criteria_of(sol, l_over_h),
-    };
-    let (reasons, failed_criteria): (Vec<Reason>, Vec<String>) = failed
-        .into_iter()
-        .map(|(aspect, text, long)| (Reason { aspect, text }, long))
+    let found = findings(sol);
+    let (reasons, failed_criteria): (Vec<Reason>, Vec<String>) = found
+        .failed
+        .iter()
+        .map(|f| {
+            let (aspect, text, long) = failed_words(sol, &found, f);
+            (Reason { aspect, text }, long)
+        })
         .unzip();
     let mut warnings = failed_criteria.clone();
     let mut reasons = reasons;
@@ -118,37 +192,38 @@ pub fn estimate(sol: &PlaneSolution) -> Validity {
             text: short,
         });
     };
-    if let Some(theta) = sol.theta
-        && theta.abs() > 0.45
-    {
-        let edge = if theta > 0.0 { "trailing" } else { "leading" };
-        assumption(
-            format!(
-                "theta = {theta:.3} is close to +-1/2: the pressure is nearly singular at the \
-                 {edge} edge"
+    for broken in &found.broken {
+        match *broken {
+            Broken::Theta(theta) => {
+                let edge = if theta > 0.0 { "trailing" } else { "leading" };
+                assumption(
+                    format!(
+                        "theta = {theta:.3} is close to +-1/2: the pressure is nearly singular at \
+                         the {edge} edge"
+                    ),
+                    Phrase::whole(format!("theta = {theta:.3}")).then_words(&format!(
+                        "near +-1/2: pressure nearly singular at the {edge} edge"
+                    )),
+                );
+            }
+            Broken::Slopes(l_over_r) => assumption(
+                format!(
+                    "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not \
+                     small"
+                ),
+                Phrase::whole(format!("(a+b)/R = {l_over_r:.3} > 0.1:"))
+                    .then_words("slopes not small"),
             ),
-            Phrase::whole(format!("theta = {theta:.3}")).then_words(&format!(
-                "near +-1/2: pressure nearly singular at the {edge} edge"
-            )),
-        );
-    }
-    let l_over_r = l / inputs.radius();
-    if inputs.shape.parabola_radius().is_some() && l_over_r > 0.1 {
-        assumption(
-            format!(
-                "contact width/radius (a+b)/R = {l_over_r:.3} > 0.1: the punch slopes are not small"
-            ),
-            Phrase::whole(format!("(a+b)/R = {l_over_r:.3} > 0.1:")).then_words("slopes not small"),
-        );
+        }
     }
     for (long, short) in shape_validity::warnings(sol) {
         assumption(long, short);
     }
     Validity {
         ok: warnings.is_empty(),
-        contact_width_over_thickness: l_over_h,
+        contact_width_over_thickness: found.lambda,
         warnings,
-        estimated_error,
+        estimated_error: found.error,
         measured_error: None,
         failed_criteria,
         reasons,
@@ -156,66 +231,26 @@ pub fn estimate(sol: &PlaneSolution) -> Validity {
 }
 
 /// The estimated deviation of a wide or narrow solution on a finite strip, and the criteria it
-/// fails: what each is about, in a few words and at length.
-fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phrase, String)>) {
+/// fails.
+fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<Failed>) {
     let inputs = &sol.inputs;
     let nu = inputs.material.poisson_ratio;
     let mu = inputs.friction.coefficient;
     let km = inputs.wear.coefficient * inputs.material.plane_modulus();
     let h_over_r = inputs.material.thickness / inputs.radius();
-    let mut failed = Vec::new();
-    let name = if sol.model == Model::Wide {
-        "the wide model"
-    } else {
-        "the Winkler (narrow) model"
-    };
     if !inputs.is_classical() {
         // the study's formulas are fits to the parabola with the linear law and no cap
-        let kind = inputs.shape.kind();
-        let holds = if sol.model == Model::Wide {
-            "where the contact is narrow against the thickness ((a+b)/h small)"
-        } else {
-            "where the contact is many thicknesses wide ((a+b)/h large)"
-        };
-        failed.push((
-            Aspect::Unstudied,
-            Phrase::words(&format!("not judged for this punch and laws ({kind})")),
-            format!(
-                "{name} is judged against the strip model only for the parabolic punch with the \
-                 linear wear law and no shear cap (the validity study); its error for a {kind} \
-                 punch with these laws is not estimated: it holds {holds}"
-            ),
-        ));
-        return (Deviation::NONE, failed);
+        return (Deviation::NONE, vec![Failed::Unjudged]);
     }
-    // each written only when outside: a fit estimates the validity of every row it solves
-    let outside: Vec<String> = [
-        (nu > STUDIED_NU).then(|| format!("nu = {nu}")),
-        (mu > STUDIED_MU).then(|| format!("mu = {mu}")),
-        (km > STUDIED_KM).then(|| format!("k m = {km:.3}")),
-        (inputs.friction.adhesion != 0.0)
-            .then(|| format!("tau0 = {:.3e} Pa", inputs.friction.adhesion)),
-    ]
-    .into_iter()
-    .flatten()
-    .collect();
-    if !outside.is_empty() {
-        failed.push((
-            Aspect::Unstudied,
-            outside
-                .iter()
-                .enumerate()
-                .fold(Phrase::words("not judged at"), |p, (i, what)| {
-                    let end = if i + 1 == outside.len() { ":" } else { "," };
-                    p.then(format!("{what}{end}"))
-                })
-                .then_words("use the strip model"),
-            format!(
-                "{name} is judged against the strip model only where that was studied (nu <= \
-                 0.499, mu <= 1, k m <= 3, no adhesion); here {}: use the strip model",
-                outside.join(", ")
-            ),
-        ));
+    let mut failed = Vec::new();
+    let outside = [
+        nu > STUDIED_NU,
+        mu > STUDIED_MU,
+        km > STUDIED_KM,
+        inputs.friction.adhesion != 0.0,
+    ];
+    if outside.contains(&true) {
+        failed.push(Failed::Outside(outside));
     }
     let error = if sol.model == Model::Wide {
         let error = Deviation {
@@ -225,18 +260,7 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phr
         let limit = criteria::wide_mu_star_limit(nu)
             .min((WIDTH_TOLERANCE / criteria::wide_width_error(nu, 1.0)).sqrt());
         if lambda > limit {
-            failed.push((
-                Aspect::Both,
-                Phrase::words("wide needs")
-                    .then(format!("(a+b)/h < {limit:.2}"))
-                    .then_words(&format!("here, not {lambda:.3}")),
-                format!(
-                    "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width \
-                     within 2 %, mu* - mu within 5 % of the exact strip solution); here (a+b)/h = \
-                     {lambda:.3}, estimated error {}: use the strip model",
-                    percentages(&error)
-                ),
-            ));
+            failed.push(Failed::WideLimit(limit));
         }
         error
     } else {
@@ -251,49 +275,128 @@ fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<(Aspect, Phr
                 lambda * h_over_r,
             ),
         };
-        let needed = criteria::narrow_width_limit(nu, mu, km);
         if error.contact_width > WIDTH_TOLERANCE {
-            failed.push((
-                Aspect::ContactWidth,
-                Phrase::words("Winkler needs")
-                    .then(format!("(a+b)/h > {needed:.0}"))
-                    .then_words(&format!("here, not {lambda:.1}")),
-                format!(
-                    "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} \
-                     for its contact width within 2 % of the exact strip solution; here (a+b)/h = \
-                     {lambda:.3}, estimated error {:.1} %: use the strip model",
-                    100.0 * error.contact_width
-                ),
-            ));
+            failed.push(Failed::WinklerWidth(criteria::narrow_width_limit(
+                nu, mu, km,
+            )));
         }
         if error.mu_star_minus_mu > MU_STAR_TOLERANCE {
-            failed.push(if km == 0.0 {
-                (
-                    Aspect::MuStarMinusMu,
-                    Phrase::words("Winkler lacks the friction part of mu* - mu")
-                        .then("(mu* = mu without wear)"),
-                    "without wear the Winkler model gives mu* = mu exactly, while friction alone \
-                     makes the strip's mu* - mu nonzero: use the strip model"
-                        .to_string(),
-                )
-            } else {
-                let part = 100.0 * error.mu_star_minus_mu;
-                (
-                    Aspect::MuStarMinusMu,
-                    Phrase::words("Winkler lacks the friction part of mu* - mu, estimated up to")
-                        .then(format!("{part:.0} %"))
-                        .then_words("of it"),
-                    format!(
-                        "the Winkler model lacks the friction-induced part of mu* - mu, estimated \
-                         {part:.0} % of what it gives (at most 5 %: wear must dominate): use the \
-                         strip model"
-                    ),
-                )
-            });
+            failed.push(Failed::WinklerMu);
         }
         error
     };
     (error, failed)
+}
+
+/// A failed criterion: what it is about, in a few words and at length.
+fn failed_words(
+    sol: &PlaneSolution,
+    found: &Findings,
+    failed: &Failed,
+) -> (Aspect, Phrase, String) {
+    let inputs = &sol.inputs;
+    let nu = inputs.material.poisson_ratio;
+    let mu = inputs.friction.coefficient;
+    let km = inputs.wear.coefficient * inputs.material.plane_modulus();
+    let (lambda, error) = (found.lambda, &found.error);
+    let name = if sol.model == Model::Wide {
+        "the wide model"
+    } else {
+        "the Winkler (narrow) model"
+    };
+    match failed {
+        Failed::Unjudged => {
+            let kind = inputs.shape.kind();
+            let holds = if sol.model == Model::Wide {
+                "where the contact is narrow against the thickness ((a+b)/h small)"
+            } else {
+                "where the contact is many thicknesses wide ((a+b)/h large)"
+            };
+            (
+                Aspect::Unstudied,
+                Phrase::words(&format!("not judged for this punch and laws ({kind})")),
+                format!(
+                    "{name} is judged against the strip model only for the parabolic punch with \
+                     the linear wear law and no shear cap (the validity study); its error for a \
+                     {kind} punch with these laws is not estimated: it holds {holds}"
+                ),
+            )
+        }
+        Failed::Outside(which) => {
+            let outside: Vec<String> = [
+                format!("nu = {nu}"),
+                format!("mu = {mu}"),
+                format!("k m = {km:.3}"),
+                format!("tau0 = {:.3e} Pa", inputs.friction.adhesion),
+            ]
+            .into_iter()
+            .zip(which)
+            .filter_map(|(what, out)| out.then_some(what))
+            .collect();
+            (
+                Aspect::Unstudied,
+                outside
+                    .iter()
+                    .enumerate()
+                    .fold(Phrase::words("not judged at"), |p, (i, what)| {
+                        let end = if i + 1 == outside.len() { ":" } else { "," };
+                        p.then(format!("{what}{end}"))
+                    })
+                    .then_words("use the strip model"),
+                format!(
+                    "{name} is judged against the strip model only where that was studied (nu \
+                     <= 0.499, mu <= 1, k m <= 3, no adhesion); here {}: use the strip model",
+                    outside.join(", ")
+                ),
+            )
+        }
+        Failed::WideLimit(limit) => (
+            Aspect::Both,
+            Phrase::words("wide needs")
+                .then(format!("(a+b)/h < {limit:.2}"))
+                .then_words(&format!("here, not {lambda:.3}")),
+            format!(
+                "the wide model needs (a+b)/h < {limit:.2} at nu = {nu} (contact width within 2 \
+                 %, mu* - mu within 5 % of the exact strip solution); here (a+b)/h = \
+                 {lambda:.3}, estimated error {}: use the strip model",
+                percentages(error)
+            ),
+        ),
+        Failed::WinklerWidth(needed) => (
+            Aspect::ContactWidth,
+            Phrase::words("Winkler needs")
+                .then(format!("(a+b)/h > {needed:.0}"))
+                .then_words(&format!("here, not {lambda:.1}")),
+            format!(
+                "Winkler needs (a+b)/h > {needed:.0} at nu = {nu}, mu = {mu}, k m = {km:.3} for \
+                 its contact width within 2 % of the exact strip solution; here (a+b)/h = \
+                 {lambda:.3}, estimated error {:.1} %: use the strip model",
+                100.0 * error.contact_width
+            ),
+        ),
+        Failed::WinklerMu if km == 0.0 => (
+            Aspect::MuStarMinusMu,
+            Phrase::words("Winkler lacks the friction part of mu* - mu")
+                .then("(mu* = mu without wear)"),
+            "without wear the Winkler model gives mu* = mu exactly, while friction alone makes \
+             the strip's mu* - mu nonzero: use the strip model"
+                .to_string(),
+        ),
+        Failed::WinklerMu => {
+            let part = 100.0 * error.mu_star_minus_mu;
+            (
+                Aspect::MuStarMinusMu,
+                Phrase::words("Winkler lacks the friction part of mu* - mu, estimated up to")
+                    .then(format!("{part:.0} %"))
+                    .then_words("of it"),
+                format!(
+                    "the Winkler model lacks the friction-induced part of mu* - mu, estimated \
+                     {part:.0} % of what it gives (at most 5 %: wear must dominate): use the \
+                     strip model"
+                ),
+            )
+        }
+    }
 }
 
 /// "1.2 % in contact width, 3.4 % in mu* - mu".

@@ -12,7 +12,7 @@ use std::sync::Mutex;
 
 use crate::physics::plane::strip_check::measures;
 use crate::physics::plane::sweep_verdicts::{BAND, Measured, combined, measure};
-use crate::physics::plane::validity::{Aspect, estimate};
+use crate::physics::plane::validity::passes;
 use crate::physics::plane::{Model, PlaneSolution, exponent};
 
 /// The largest step in ln((a+b)/h) between two measurements read across.
@@ -43,8 +43,8 @@ impl VerdictTable {
     /// interpolation's error h^2 |f''|/8, f'' the largest second divided difference around, plus
     /// BAND), else measured and kept.
     pub fn holds(&self, sol: &PlaneSolution) -> bool {
-        let estimated = estimate(sol);
-        if !measures(sol, &estimated) {
+        let estimated = passes(sol);
+        if !measures(sol, estimated.ok) {
             return estimated.ok;
         }
         let inputs = &sol.inputs;
@@ -66,13 +66,9 @@ impl VerdictTable {
             .ok()
             .and_then(|t| t.get(&groups).and_then(|list| read(list, x)));
         if let Some(inside) = read {
-            let own = estimated
-                .reasons
-                .iter()
-                .all(|r| r.aspect != Aspect::Assumption);
-            return inside && own;
+            return inside && estimated.assumptions_hold;
         }
-        let Measured { ok, ratios } = measure(sol, &estimated);
+        let Measured { ok, ratios } = measure(sol, estimated);
         if let (Some(ratios), Ok(mut table)) = (ratios, self.measured.lock()) {
             let list = table.entry(groups).or_default();
             let at = list.partition_point(|(y, _)| *y < x);
