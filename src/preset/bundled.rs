@@ -41,6 +41,7 @@ pub const BUNDLED: &[Bundled] = bundled![
     "wear-law-squared.toml",
     "polymer-shear-strength.toml",
     "energy-split.toml",
+    "sharp-flat-punch.toml",
     "ground-profile.toml",
     "lab-friction.toml",
 ];

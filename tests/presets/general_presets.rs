@@ -127,3 +127,60 @@ fn the_wear_share_of_the_energy_grows_with_k() {
         last = s;
     }
 }
+
+#[test]
+fn the_sharp_flat_punch_is_singular_at_both_corners() {
+    let p = preset("sharp-flat-punch.toml");
+    assert!(matches!(
+        p.plane.shape,
+        Some(Shape::Flat { half_width, edge_radius }) if half_width == 1e-3 && edge_radius == 0.0
+    ));
+    let s = at(&p, p.plane.load);
+    // "theta = 0.011 > 0"; "k m = 0.11"
+    assert!(near(s.theta.unwrap(), 0.011, 0.0005), "{:?}", s.theta);
+    let m = p.material.plane_modulus();
+    assert!(near(p.wear * m, 0.11, 0.005));
+    // "3.18 MPa at the middle (0.64 of the mean 5 MPa)"
+    let mean = p.plane.load / 2e-3;
+    assert!(near(mean, 5e6, 1e-6));
+    assert!(
+        near(s.pressure(0.0), 3.18e6, 0.005e6),
+        "{}",
+        s.pressure(0.0)
+    );
+    assert!(near(s.pressure(0.0) / mean, 0.64, 0.005));
+    // "23.9 MPa 10 um from the trailing corner, 21.3 MPa 10 um from the leading one"
+    let trailing = s.pressure(-1e-3 + 1e-5);
+    let leading = s.pressure(1e-3 - 1e-5);
+    assert!(near(trailing, 23.9e6, 0.05e6), "{trailing}");
+    assert!(near(leading, 21.3e6, 0.05e6), "{leading}");
+    // "infinite at both corners": it grows without bound towards each
+    assert!(s.pressure(-1e-3 + 1e-9) > 10.0 * trailing);
+    assert!(s.pressure(1e-3 - 1e-9) > 10.0 * leading);
+    // "a = b = 1 mm and mu* = mu = 0.3 at every load"; "psi = 0"; "T = Q1 = 3000 N/m"
+    for load in [p.plane.sweep.min, p.plane.load, p.plane.sweep.max] {
+        let s = at(&p, load);
+        assert_eq!((s.a, s.b, s.psi), (1e-3, 1e-3, 0.0));
+        assert!(near(s.mu_star, 0.3, 1e-12), "{}", s.mu_star);
+    }
+    assert!(near(s.tangential_force, 3000.0, 1e-9));
+    // "I, J, the friction loss and the wear loss diverge ... T stays finite"
+    let undefined = energy(&s).unwrap_err();
+    assert!(undefined.note.contains("diverge"), "{}", undefined.note);
+    assert!(near(undefined.external, 3000.0, 1e-9));
+    // "raise k past pi chi mu/m = 4.05e-11 1/Pa: theta turns negative"
+    let threshold = std::f64::consts::PI * p.material.chi() * p.friction.coefficient / m;
+    assert!(near(threshold, 4.05e-11, 0.005e-11), "{threshold}");
+    let theta = |k: f64| {
+        let mut q = p.clone();
+        q.wear = k;
+        at(&q, q.plane.load).theta.unwrap()
+    };
+    assert!(theta(0.99 * threshold) > 0.0 && theta(1.01 * threshold) < 0.0);
+    let strong = {
+        let mut q = p.clone();
+        q.wear = 1.01 * threshold;
+        at(&q, q.plane.load)
+    };
+    assert!(strong.pressure(1e-3 - 1e-5) > strong.pressure(-1e-3 + 1e-5));
+}

@@ -38,7 +38,7 @@ fn turn(lo: f64, hi: f64, holds: impl Fn(f64) -> bool) -> f64 {
 }
 
 /// Where each bundled preset's description is checked against the program.
-const CHECKED: [(&str, &str); 22] = [
+const CHECKED: [(&str, &str); 23] = [
     ("polymer-coating.toml", "presets.rs, plane_descriptions.rs"),
     ("hertz-check.toml", "plane_descriptions.rs"),
     ("friction-half-plane.toml", "plane_descriptions.rs"),
@@ -59,6 +59,7 @@ const CHECKED: [(&str, &str); 22] = [
     ("wear-law-squared.toml", "general_presets.rs"),
     ("polymer-shear-strength.toml", "general_presets.rs"),
     ("energy-split.toml", "general_presets.rs"),
+    ("sharp-flat-punch.toml", "general_presets.rs"),
     ("ground-profile.toml", "surfaces.rs"),
     ("lab-friction.toml", "presets.rs"),
 ];
