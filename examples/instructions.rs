@@ -23,8 +23,10 @@ fn axis(p: &Preset, key: &str, ends: [f64; 2], n: usize) -> Axis {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let (Some(workload), Some(count)) = (args.get(1), args.get(2).and_then(|n| n.parse::<usize>().ok()))
-    else {
+    let (Some(workload), Some(count)) = (
+        args.get(1),
+        args.get(2).and_then(|n| n.parse::<usize>().ok()),
+    ) else {
         eprintln!("usage: instructions WORKLOAD N");
         std::process::exit(2);
     };
