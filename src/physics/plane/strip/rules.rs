@@ -10,7 +10,7 @@ use crate::physics::plane::strip::jacobi_transforms::Spectral;
 use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
 
 /// Rules kept by `Rules::cached`.
-const CACHED_RULES: usize = 12;
+const CACHED_RULES: usize = 128;
 
 /// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns at one theta.
 #[derive(Debug, PartialEq)]
