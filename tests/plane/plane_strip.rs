@@ -320,3 +320,35 @@ fn a_contact_wider_than_the_model_resolves_is_an_error_not_a_number() {
     }
     assert_eq!(MAX_NODES, nodes_for(242.0));
 }
+
+#[test]
+fn a_solution_to_check_against_agrees_with_the_full_solution_to_1e_8() {
+    // the accuracy `strip_check` measures with (width to 1e-9, linear solves to 1e-10) against
+    // the full solve (width to 1e-15), from a contact narrower than the layer to one wide enough
+    // for the two-grid solve (N >= 224 nodes from (a+b)/h about 46; the widest here about 155)
+    let mut widest = 0.0_f64;
+    for (h, p) in [
+        (1e-3, 1e3),
+        (1e-4, 1e3),
+        (2e-5, 1e4),
+        (1e-5, 1e5),
+        (5e-6, 2e5),
+    ] {
+        let inputs = table_inputs(h, p);
+        let full = solve(&inputs, Model::Strip).unwrap();
+        let check = wearlab::physics::plane::strip::solve_to_check(&inputs).unwrap();
+        let l = full.contact_width();
+        widest = widest.max(l / h);
+        assert!(
+            rel(check.contact_width(), l) < 1e-8,
+            "h = {h}, P = {p}: width"
+        );
+        assert!(
+            (check.mu_star - full.mu_star).abs() < 1e-8 * (full.mu_star - 0.3).abs(),
+            "h = {h}, P = {p}: mu* {} vs {}",
+            check.mu_star,
+            full.mu_star
+        );
+    }
+    assert!(widest > 50.0, "(a+b)/h reached only {widest}");
+}

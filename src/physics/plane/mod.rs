@@ -345,6 +345,20 @@ pub fn solve(inputs: &PlaneInputs, model: Model) -> Result<PlaneSolution, SolveE
     Ok(sol)
 }
 
+/// The strip model's solution against which `strip_check` measures another model: as `solve`
+/// gives it, for the parabola with the linear laws to the accuracy a measurement needs
+/// (`strip::solve_to_check`).
+pub(crate) fn solve_strip_to_check(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
+    if !inputs.is_classical() {
+        return solve(inputs, Model::Strip);
+    }
+    inputs.validate()?;
+    scope::check(inputs, Model::Strip)?;
+    let sol = strip::solve_to_check(inputs)?;
+    checks::check(&sol)?;
+    Ok(sol)
+}
+
 /// The narrow model: the closed form (5.7) for the parabola with the linear law and no cap, the
 /// shooting of `narrow_ode` for every other shape and law.
 pub(crate) fn solve_narrow(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {

@@ -6,7 +6,7 @@ use crate::phrase::Phrase;
 use crate::physics::SolveError;
 use crate::physics::plane::criteria::MU_STAR_FLOOR;
 use crate::physics::plane::validity::{Aspect, Deviation, Reason, Validity, estimate, percentages};
-use crate::physics::plane::{Model, PlaneSolution, solve};
+use crate::physics::plane::{Model, PlaneSolution, solve_strip_to_check};
 
 /// The largest (a+b)/h at which `against_strip` runs the strip model (about 400 nodes, a few
 /// milliseconds).
@@ -40,7 +40,7 @@ pub enum StripCheck {
 /// The shown solution against the strip model: measured when the strip model is cheap (a contact
 /// at most CHEAP_STRIP_WIDTH thicknesses wide), else estimated by the study's formulas.
 pub fn strip_check(sol: &PlaneSolution) -> StripCheck {
-    measured_with(sol, || solve(&sol.inputs, Model::Strip))
+    measured_with(sol, || solve_strip_to_check(&sol.inputs))
 }
 
 /// Whether `strip_check` runs the strip model for this solution (a wide or narrow model on a
@@ -221,6 +221,13 @@ pub(crate) fn measures(sol: &PlaneSolution, estimated_ok: bool) -> bool {
     !estimated_ok && sol.inputs.is_classical() && runs_strip(sol)
 }
 
+/// Whether a model measured against the strip model holds: its assumptions (small slopes, ...)
+/// hold and the measured deviation is within the tolerances (2 % in contact width, 5 % in
+/// mu* - mu: docs/models.md, "Validity").
+pub(crate) fn holds_measured(assumptions_hold: bool, d: &Deviation) -> bool {
+    assumptions_hold && d.within_tolerance()
+}
+
 /// The verdict on an operating point whose model was checked against the strip model (`check`
 /// from `strip_check` of the same solution): where it was measured, the measurement replaces the
 /// study's estimates (their warnings about the contact width, mu* - mu and inputs outside the
@@ -259,7 +266,7 @@ pub fn judged(estimated: &Validity, check: &StripCheck, model: Model) -> Validit
         );
     }
     Validity {
-        ok: warnings.is_empty(),
+        ok: holds_measured(kept.is_empty(), d),
         contact_width_over_thickness: estimated.contact_width_over_thickness,
         warnings,
         estimated_error: estimated.estimated_error,

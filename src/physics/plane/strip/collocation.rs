@@ -30,9 +30,12 @@ use crate::physics::plane::strip::two_grid::Coarse;
 
 pub use crate::physics::plane::strip::rules::Rules;
 
-/// Two-grid solves refine to round-off: they contract by some 1e-3 a step, so that stopping at an
-/// estimated 1e-14 left errors of that order in P(L), and the width search took one more width
-/// (one more assembly) to settle than after a factorization.
+/// Two-grid solves for a system whose tolerance is this or finer refine to round-off
+/// (`TWO_GRID_TOLERANCE`): they contract by some 1e-3 a step, so that stopping at an estimated
+/// 1e-14 left errors of that order in P(L), and a width search to 1e-15 took one more width (one
+/// more assembly) to settle than after a factorization. A coarser tolerance (a width to 1e-9 for
+/// a measurement) is its own.
+const ROUND_OFF_FROM: f64 = 1e-12;
 const TWO_GRID_TOLERANCE: f64 = 1e-16;
 
 /// The collocation solution at one contact width.
@@ -289,7 +292,12 @@ impl<'a> System<'a> {
             (None, Some(coarse)) => {
                 let (rules, scale) = (&self.rules, &self.scratch.2);
                 let start = guess.unwrap_or_else(|| DVector::zeros(b.len()));
-                refine(a, &b, start, TWO_GRID_TOLERANCE.min(self.tolerance), |r| {
+                let tolerance = if self.tolerance <= ROUND_OFF_FROM {
+                    TWO_GRID_TOLERANCE
+                } else {
+                    self.tolerance
+                };
+                refine(a, &b, start, tolerance, |r| {
                     coarse.precondition(rules, scale, r)
                 })
             }
