@@ -6,7 +6,7 @@
 use rayon::prelude::*;
 
 use crate::physics::plane::PlaneSolution;
-use crate::physics::plane::strip_check::{StripCheck, measures, strip_check};
+use crate::physics::plane::strip_check::{StripCheck, holds_measured, measures, strip_check};
 use crate::physics::plane::validity::{Passes, passes};
 
 /// Points between two measured points of a run of doubted points.
@@ -25,12 +25,12 @@ pub(crate) struct Measured {
 }
 
 /// The solution measured against the strip model (`strip_check`), its verdict as
-/// `strip_check::judged` gives it: where measured, the measurement within the tolerances and the
-/// models' assumptions holding; else the study's estimate (`passes`: `estimate` without its words).
+/// `strip_check::judged` gives it: where measured, `holds_measured`; else the study's estimate
+/// (`passes`: `estimate` without its words).
 pub(crate) fn measure(sol: &PlaneSolution, passes: Passes) -> Measured {
     match strip_check(sol) {
         StripCheck::Measured(d) => Measured {
-            ok: passes.assumptions_hold && d.within_tolerance(),
+            ok: holds_measured(passes.assumptions_hold, &d),
             ratios: Some(d.ratios()),
         },
         _ => Measured {

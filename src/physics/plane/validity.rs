@@ -115,8 +115,19 @@ enum Broken {
     Slopes(f64),
 }
 
+/// The inputs the study's criteria are functions of.
+struct Studied {
+    /// Poisson's ratio nu [-].
+    nu: f64,
+    /// The friction coefficient mu [-].
+    mu: f64,
+    /// The wear coefficient times the plane modulus, k m [-].
+    km: f64,
+}
+
 /// What the study's criteria and the models' assumptions find at a solution, before words.
 struct Findings {
+    studied: Studied,
     lambda: f64,
     error: Deviation,
     failed: Vec<Failed>,
@@ -128,10 +139,15 @@ fn findings(sol: &PlaneSolution) -> Findings {
     let h = inputs.material.thickness;
     let l = sol.contact_width();
     let lambda = if h.is_finite() { l / h } else { 0.0 };
+    let studied = Studied {
+        nu: inputs.material.poisson_ratio,
+        mu: inputs.friction.coefficient,
+        km: inputs.wear.coefficient * inputs.material.plane_modulus(),
+    };
     let (error, failed) = match sol.model {
         _ if !h.is_finite() => (Deviation::NONE, Vec::new()),
         Model::Strip => (Deviation::NONE, Vec::new()),
-        Model::Wide | Model::Narrow => criteria_of(sol, lambda),
+        Model::Wide | Model::Narrow => criteria_of(sol, &studied, lambda),
     };
     let mut broken = Vec::new();
     if let Some(theta) = sol.theta
@@ -144,6 +160,7 @@ fn findings(sol: &PlaneSolution) -> Findings {
         broken.push(Broken::Slopes(l_over_r));
     }
     Findings {
+        studied,
         lambda,
         error,
         failed,
@@ -232,11 +249,9 @@ pub fn estimate(sol: &PlaneSolution) -> Validity {
 
 /// The estimated deviation of a wide or narrow solution on a finite strip, and the criteria it
 /// fails.
-fn criteria_of(sol: &PlaneSolution, lambda: f64) -> (Deviation, Vec<Failed>) {
+fn criteria_of(sol: &PlaneSolution, studied: &Studied, lambda: f64) -> (Deviation, Vec<Failed>) {
     let inputs = &sol.inputs;
-    let nu = inputs.material.poisson_ratio;
-    let mu = inputs.friction.coefficient;
-    let km = inputs.wear.coefficient * inputs.material.plane_modulus();
+    let &Studied { nu, mu, km } = studied;
     let h_over_r = inputs.material.thickness / inputs.radius();
     if !inputs.is_classical() {
         // the study's formulas are fits to the parabola with the linear law and no cap
@@ -295,9 +310,7 @@ fn failed_words(
     failed: &Failed,
 ) -> (Aspect, Phrase, String) {
     let inputs = &sol.inputs;
-    let nu = inputs.material.poisson_ratio;
-    let mu = inputs.friction.coefficient;
-    let km = inputs.wear.coefficient * inputs.material.plane_modulus();
+    let Studied { nu, mu, km } = found.studied;
     let (lambda, error) = (found.lambda, &found.error);
     let name = if sol.model == Model::Wide {
         "the wide model"
