@@ -1,8 +1,10 @@
 //! A regime map for the explorer: one quantity over two parameters, with the lines that matter
 //! drawn from the library's own verdicts:
-//! - theta = 0, between friction-dominated (theta > 0) and wear-dominated (theta < 0) contacts:
-//!   the sign of the wide model's theta (4.5) at the point (the preset model's when the wide model
-//!   has no solution there);
+//! - theta = 0: the sign of the wide model's theta (4.5) at the point (the preset model's when the
+//!   wide model has no solution there); on a half-plane theta = 0 is where mu* - mu changes sign,
+//!   the line between contacts where friction dominates (mu* < mu, a > b) and where wear does;
+//!   which effect dominates at a point is said from that point's own mu* - mu and a - b
+//!   (`Sample::dominance`);
 //! - the validity boundaries of the wide and the narrow models: `strip_check::verdict`'s `ok` of
 //!   each model solved at the point (whatever the preset's model), its measurements against the
 //!   strip model shared between the samples whose groups agree (`verdict_table`; the lines'
@@ -54,7 +56,8 @@ pub struct MapSpec {
 pub struct Sample {
     /// The quantity (the preset's model), or why there is none.
     pub value: Result<f64, String>,
-    /// Plane: theta (4.5): > 0 friction shifts the edge exponents more than wear, < 0 wear does.
+    /// Plane: theta (4.5) [-], the shift of the edge exponents: > 0 where friction shifts them
+    /// more than wear, < 0 where wear does (`PlaneSolution::theta`).
     pub theta: Option<f64>,
     /// Plane: which effect dominates, from the signs of the preset's model's mu* - mu and a - b.
     pub dominance: Option<Dominance>,
