@@ -1,14 +1,18 @@
 //! The model a fit compares with the data: the preset with its free parameters set (each in its
 //! fitting coordinate, the logarithm for a positive dimensional value), solved at each row's x
 //! through `sweeps::point`, the pipeline of `wearlab solve`, and read for each measured quantity.
+//! Rows at times of the spatial problem are read from one running-in (`spatial::at_times`, the
+//! same pipeline's results at each time) instead of one from t = 0 per row.
 
 use nalgebra::DVector;
 
 use crate::data::DataSet;
 use crate::physics::SolveError;
+use crate::physics::spatial::at_times;
+use crate::physics::spatial::partial::running_in::Stopped;
 use crate::physics::stop::{STOPPED, Stop};
-use crate::preset::{Key, Preset};
-use crate::sweeps::point;
+use crate::preset::{Key, Preset, Problem};
+use crate::sweeps::point::{self, Point, SpatialPoint};
 
 /// A free parameter and its fitting coordinate.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,42 +92,105 @@ impl Model<'_> {
     /// The preset with the free parameters at `theta` (their limits and the rules between fields
     /// checked).
     pub fn preset(&self, theta: &DVector<f64>) -> Result<Preset, String> {
+        let values: Vec<f64> = (self.free.iter().zip(theta.iter()))
+            .map(|(f, c)| f.value(*c))
+            .collect();
+        self.preset_at(&values)
+    }
+
+    /// The preset with the free parameters at `values` [SI], one per free parameter (their
+    /// limits and the rules between fields checked).
+    pub fn preset_at(&self, values: &[f64]) -> Result<Preset, String> {
         let mut preset = self.base.clone();
-        for (f, c) in self.free.iter().zip(theta.iter()) {
-            preset.assign(f.key, f.value(*c))?;
+        for (f, v) in self.free.iter().zip(values) {
+            preset.assign(f.key, *v)?;
         }
         preset.check_rules()?;
         Ok(preset)
     }
 
     /// The model's value of each measured value, row by row; Err names the row's line and why the
-    /// model has no answer there.
+    /// model has no answer there. Rows at times of the spatial problem share one running-in
+    /// (`at_times`), read at every row's time.
     pub fn predictions(&self, theta: &DVector<f64>) -> Result<Vec<f64>, String> {
+        self.predictions_of(self.preset(theta)?)
+    }
+
+    /// As [`Model::predictions`] for the preset `at` (the base with the free parameters set).
+    pub fn predictions_of(&self, mut at: Preset) -> Result<Vec<f64>, String> {
         // one preset for every row: each row assigns the x it was measured at over the last
-        let mut at = self.preset(theta)?;
         let mut out = Vec::with_capacity(self.weights.len());
-        for (i, x) in self.data.x.values.iter().enumerate() {
-            let line = self.data.lines[i];
-            at.assign(self.data.x.key, *x)
-                .and_then(|()| at.check_rules())
-                .map_err(|why| format!("line {line}: {why}"))?;
+        if at.problem == Problem::Spatial && Key::of("spatial.time") == Some(self.data.x.key) {
+            for (i, point) in self.along_the_running_in(&mut at)?.into_iter().enumerate() {
+                let point = point.map_err(|e| self.at_line(i, SolveError::from(e)))?;
+                self.read(i, &point, &mut out)?;
+            }
+            return Ok(out);
+        }
+        for i in 0..self.data.len() {
+            self.set_x(&mut at, i)?;
             if self.stop.now() {
                 return Err(STOPPED.into());
             }
-            let p = point::solve_until(&at, self.stop)
-                .map_err(|e| format!("line {line}: {}", SolveError::from(e)))?;
-            for m in &self.data.measured {
-                let v = m
-                    .quantity
-                    .value(&p)
-                    .map_err(|why| format!("line {line}: {}: {why}", m.quantity))?;
-                if !v.is_finite() {
-                    return Err(format!("line {line}: {} is not finite here", m.quantity));
-                }
-                out.push(v);
-            }
+            let point = point::solve_until(&at, self.stop)
+                .map_err(|e| self.at_line(i, SolveError::from(e)))?;
+            self.read(i, &point, &mut out)?;
         }
         Ok(out)
+    }
+
+    /// The spatial problem of `at` at every row's time, from one running-in.
+    fn along_the_running_in(&self, at: &mut Preset) -> Result<Vec<Result<Point, Stopped>>, String> {
+        for i in 0..self.data.len() {
+            self.set_x(at, i)?;
+        }
+        if self.stop.now() {
+            return Err(STOPPED.into());
+        }
+        let inputs = at.spatial_inputs();
+        let results = at_times::solve_at_times_until(
+            &inputs,
+            &at.spatial_state_at(),
+            &self.data.x.values,
+            self.stop,
+        )
+        .map_err(|e| self.at_line(0, SolveError::from(e)))?;
+        Ok((results.into_iter())
+            .map(|r| {
+                r.map(|result| {
+                    Point::Spatial(Box::new(SpatialPoint {
+                        inputs: inputs.clone(),
+                        result,
+                    }))
+                })
+            })
+            .collect())
+    }
+
+    /// Row `i`'s x assigned to `at`, the rules between fields checked.
+    fn set_x(&self, at: &mut Preset, i: usize) -> Result<(), String> {
+        at.assign(self.data.x.key, self.data.x.values[i])
+            .and_then(|()| at.check_rules())
+            .map_err(|why| format!("line {}: {why}", self.data.lines[i]))
+    }
+
+    fn at_line(&self, i: usize, why: impl std::fmt::Display) -> String {
+        format!("line {}: {why}", self.data.lines[i])
+    }
+
+    /// Each measured quantity of row `i` read from its solved `point`, onto `out`.
+    fn read(&self, i: usize, point: &Point, out: &mut Vec<f64>) -> Result<(), String> {
+        for m in &self.data.measured {
+            let v = m
+                .quantity
+                .value(point)
+                .map_err(|why| self.at_line(i, format!("{}: {why}", m.quantity)))?;
+            if !v.is_finite() {
+                return Err(self.at_line(i, format!("{} is not finite here", m.quantity)));
+            }
+            out.push(v);
+        }
+        Ok(())
     }
 
     /// The weighted residuals (model - data) * weight.

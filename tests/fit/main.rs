@@ -5,6 +5,7 @@
 mod coverage;
 mod identifiability;
 mod lab_data;
+mod running_in;
 mod saved;
 
 use std::io::Write;

@@ -6,6 +6,7 @@
 //! Frame: x along the sliding line (the friction force on the layer points in +x), y across it,
 //! z up out of the layer. Shape g = gbar(t) + U(x, y, t) (1.6).
 
+pub mod at_times;
 pub mod checks;
 pub mod contact;
 pub mod field;

@@ -14,7 +14,9 @@ use std::ops::ControlFlow;
 use crate::physics::spatial::contact::{self, Contact};
 use crate::physics::spatial::harmonic::Evolution;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::{MAX_STEPS, Stopped, cancelled_or, run_in_to};
+use crate::physics::spatial::partial::running_in::{
+    MAX_STEPS, RunningIn, Stopped, cancelled_or, run_in_to,
+};
 use crate::physics::spatial::partial::state::State;
 use crate::physics::spatial::partial::sweep::load_curve;
 use crate::physics::spatial::result::{
@@ -131,6 +133,13 @@ fn on_the_cell(
     pressures: Option<Vec<f64>>,
     stop: Stop,
 ) -> Result<SpatialResult, Stopped> {
+    let run = run_in_for(setup, at, stop)?;
+    from_the_run(&run, closed, at, probes, pressures, stop)
+}
+
+/// The running-in of `setup` that answers the state at `at.time` (`run_in_to`), refused where it
+/// reached its bound of steps.
+pub(crate) fn run_in_for(setup: &Setup, at: &StateAt, stop: Stop) -> Result<RunningIn, Stopped> {
     let run = run_in_to(setup, at.time_tolerance, at.time, stop)?;
     if run.step_bound_reached() {
         let partial = if setup.inputs.linear_wear() {
@@ -146,6 +155,20 @@ fn on_the_cell(
             at.time_tolerance
         ))));
     }
+    Ok(run)
+}
+
+/// The result at `at.time` from `run` (of `run_in_for` at that time or a later one); `closed` as
+/// for `on_the_cell`.
+pub(crate) fn from_the_run(
+    run: &RunningIn,
+    closed: Option<&SpatialState>,
+    at: &StateAt,
+    probes: &[[f64; 2]],
+    pressures: Option<Vec<f64>>,
+    stop: Stop,
+) -> Result<SpatialResult, Stopped> {
+    let setup = &run.setup;
     let state = run
         .state_at_until(at.time, stop)
         .map_err(|why| cancelled_or(why, stop))?;
