@@ -110,12 +110,32 @@ pub const CLEAN_DIGITS: usize = 12;
 /// 3e9 * 1.1 gives exactly the literal 3.3e9). Changes a value by at most half a unit in its
 /// twelfth digit (5e-12 relative); 0, infinities and NaN are returned as they are.
 pub fn clean(value: f64) -> f64 {
+    significant(value, CLEAN_DIGITS)
+}
+
+/// `value` rounded to `digits` (at least 1) significant digits, as the nearest f64 to that
+/// decimal; 0, infinities and NaN are returned as they are.
+pub fn significant(value: f64, digits: usize) -> f64 {
     if !value.is_finite() || value == 0.0 {
         return value;
     }
     // Rust's `{:.Ne}` rounds the exact binary value correctly; parsing gives the nearest f64
-    let digits = CLEAN_DIGITS - 1;
+    let digits = digits.max(1) - 1;
     format!("{value:.digits$e}").parse().unwrap_or(value)
+}
+
+/// `value` to the digits an uncertainty of `half_width` (> 0) supports: rounded at the place of
+/// the half-width's second significant digit (0.2997514 with +-0.00085 gives 0.29975), at least
+/// one significant digit kept and at most `CLEAN_DIGITS`. The value moves by at most 5 % of the
+/// half-width.
+pub fn supported(value: f64, half_width: f64) -> f64 {
+    if !value.is_finite() || value == 0.0 || !(half_width.is_finite() && half_width > 0.0) {
+        return clean(value);
+    }
+    let place = half_width.log10().floor() as i64 - 1;
+    let top = value.abs().log10().floor() as i64;
+    let digits = (top - place + 1).clamp(1, CLEAN_DIGITS as i64) as usize;
+    significant(value, digits)
 }
 
 /// Formats `value` with an SI prefix on `unit` like `format_si`, but with every significant
@@ -274,6 +294,23 @@ mod tests {
         assert_eq!(clean(2e-9 / 10.0), 2e-10);
         assert_eq!(clean(0.0), 0.0);
         assert_eq!(clean(f64::INFINITY), f64::INFINITY);
+    }
+
+    #[test]
+    fn a_value_keeps_the_digits_its_uncertainty_supports() {
+        // rounded at the second significant digit of the half-width, by hand
+        assert_eq!(supported(0.299_751_391_856_090_2, 0.000_85), 0.299_75);
+        assert_eq!(supported(3.001_234_5e9, 5.1e6), 3.0012e9);
+        assert_eq!(supported(2.012_345_6e-11, 3.4e-13), 2.012e-11);
+        assert_eq!(supported(-1.234_567, 0.12), -1.23);
+        // a half-width larger than the value: one digit is kept
+        assert_eq!(supported(0.000_312, 0.05), 0.0003);
+        assert_eq!(
+            format_si_exact(supported(0.299_751_4, 0.000_85), ""),
+            "0.29975"
+        );
+        // no half-width to go by: 12 digits, as `clean`
+        assert_eq!(supported(0.1 + 0.2, 0.0), 0.3);
     }
 
     #[test]

@@ -11,10 +11,10 @@ use std::process::ExitCode;
 use serde_json::{Map, Value, json};
 
 use wearlab::data::{self, DataSet};
+use wearlab::finite;
 use wearlab::fit::{self, Fit, FitError};
 use wearlab::physics::stop::Stop;
 use wearlab::preset::{self, Key, Links, Origin, Preset};
-use wearlab::{finite, units};
 
 use super::{
     EXIT_INVALID, EXIT_OUTPUT, EXIT_UNSOLVABLE, finished, load, print, say, settled, within,
@@ -158,15 +158,14 @@ fn json(data: &DataSet, f: &Fit, write: Option<&Path>) -> Value {
         .estimates
         .iter()
         .map(|e| {
-            let unit = e.key.param().unit;
-            format!(
-                "{} = {} (95 %: {} .. {}){}",
-                e.key,
-                units::format_si(e.value, unit),
-                units::format_si(e.interval[0], unit),
-                units::format_si(e.interval[1], unit),
-                if e.determined { "" } else { ", not determined" }
-            )
+            let (value, [low, high]) = e.texts();
+            match e.kept_words() {
+                None => format!("{} = {value} (95 %: {low} .. {high})", e.key),
+                Some(kept) => format!(
+                    "{} = {value} ({kept}), not determined: {low} .. {high} fit within the noise",
+                    e.key
+                ),
+            }
         })
         .collect();
     json!({

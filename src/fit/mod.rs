@@ -13,6 +13,7 @@ pub mod profile;
 pub mod student;
 pub mod synthetic;
 pub mod uncertainty;
+pub mod written;
 
 use nalgebra::DVector;
 use rayon::prelude::*;
@@ -20,7 +21,7 @@ use rayon::prelude::*;
 use crate::data::DataSet;
 use crate::physics::stop::Stop;
 use crate::preset::{Key, Preset};
-use crate::units::format_si;
+use crate::units::{format_si, format_si_exact, supported};
 
 pub use model::{Free, Model};
 
@@ -45,10 +46,16 @@ pub enum FitError {
 pub struct Estimate {
     /// The parameter.
     pub key: Key,
-    /// The best value [the parameter's SI unit].
+    /// The value written into the fitted preset [the parameter's SI unit] (`written`): when
+    /// determined, the best value to the digits its interval supports; when not, the preset's
+    /// value where that fits within the noise, else the end of the range that fits nearest to
+    /// it.
     pub value: f64,
+    /// The value the fit started from, the preset's [SI].
+    pub start: f64,
     /// The 95 % interval [SI]: from the Jacobian when determined, else the range of values that
-    /// fit within the noise (the profile's).
+    /// fit within the noise (the profile's; from 0 for a logarithmic parameter whose profile
+    /// stays within the noise down to the end of its scan: any value up to the high end fits).
     pub interval: [f64; 2],
     /// The range of the profile [SI] (the values that fit within the noise, to the scan's ends).
     pub profile: [f64; 2],
@@ -58,14 +65,48 @@ pub struct Estimate {
     pub reason: Option<String>,
 }
 
+impl Estimate {
+    /// The value and the interval's ends as text: when determined, each to the digits the
+    /// interval supports (`units::supported`, written with every such digit); when not, the
+    /// value as written and the range that fits to four digits.
+    pub fn texts(&self) -> (String, [String; 2]) {
+        let unit = self.key.param().unit;
+        if !self.determined {
+            return (
+                format_si_exact(self.value, unit),
+                self.interval.map(|v| show(v, unit)),
+            );
+        }
+        let half = 0.5 * (self.interval[1] - self.interval[0]);
+        let text = |v: f64| format_si_exact(supported(v, half), unit);
+        (text(self.value), self.interval.map(text))
+    }
+
+    /// Where an undetermined parameter's written value comes from, in words ("the preset's
+    /// value, kept"); None when determined.
+    pub fn kept_words(&self) -> Option<String> {
+        if self.determined {
+            None
+        } else if self.value == self.start {
+            Some("the preset's value, kept".into())
+        } else {
+            Some(format!(
+                "the value nearest the preset's {} that fits within the noise",
+                format_si_exact(self.start, self.key.param().unit)
+            ))
+        }
+    }
+}
+
 /// A fit.
 #[derive(Clone, Debug)]
 pub struct Fit {
     /// The free parameters, in the order asked.
     pub estimates: Vec<Estimate>,
-    /// Data minus model for each measured value, row by row [the quantity's SI unit].
+    /// Data minus model for each measured value, row by row [the quantity's SI unit], at the
+    /// values written into `preset`.
     pub residuals: Vec<f64>,
-    /// The sum of squared weighted residuals at the minimum.
+    /// The sum of squared weighted residuals at the values written.
     pub sum_of_squares: f64,
     /// True when the data give standard deviations (the residuals weighted by 1/sd).
     pub weighted: bool,
@@ -75,7 +116,7 @@ pub struct Fit {
     pub degrees_of_freedom: usize,
     /// Iterations of the minimisation.
     pub iterations: usize,
-    /// The preset at the best values.
+    /// The preset at the values written (`Estimate::value`).
     pub preset: Preset,
 }
 
@@ -176,7 +217,7 @@ pub fn fit_until(
     let errors = uncertainty::errors(&best.jacobian, s2);
     let threshold = quantile * quantile * s2;
     // the parameters' profiles are independent of each other: scanned in parallel (rayon)
-    let estimates = free
+    let mut estimates = free
         .par_iter()
         .enumerate()
         .map(|(j, fr)| {
@@ -188,23 +229,33 @@ pub fn fit_until(
                 (_, false) => 0.1 * best.x[j].abs().max(fr.key.param().typical().unwrap_or(1.0)),
             };
             let range = profile::range(&model, &best, j, step, threshold);
-            judge(*fr, best.x[j], se, errors.deficient[j], range, quantile)
+            let start = preset.get(fr.key).unwrap_or(f64::NAN);
+            judge(
+                *fr,
+                best.x[j],
+                start,
+                se,
+                errors.deficient[j],
+                range,
+                quantile,
+            )
         })
-        .collect();
-    let predicted = model
-        .predictions(&best.x)
-        .map_err(|why| FitError::NoFit(format!("the fitted model has no answer: {why}")))?;
-    let residuals = model
-        .observed()
-        .iter()
+        .collect::<Vec<_>>();
+    let values = written::values(&model, &best, &mut estimates, &errors.standard, quantile)?;
+    let no_answer = |why| FitError::NoFit(format!("the fitted model has no answer: {why}"));
+    let fitted = model.preset_at(&values).map_err(no_answer)?;
+    let predicted = model.predictions_of(fitted.clone()).map_err(no_answer)?;
+    let residuals: Vec<f64> = (model.observed().iter())
         .zip(&predicted)
         .map(|(o, m)| o - m)
         .collect();
-    let fitted = model.preset(&best.x).map_err(FitError::NoFit)?;
+    let sum_of_squares = (residuals.iter().zip(&model.weights))
+        .map(|(r, w)| (r * w) * (r * w))
+        .sum();
     Ok(Fit {
         estimates,
         residuals,
-        sum_of_squares: best.sum_of_squares,
+        sum_of_squares,
         weighted,
         residual_variance: s2,
         degrees_of_freedom: dof,
@@ -214,7 +265,7 @@ pub fn fit_until(
 }
 
 /// An interval cut to the parameter's allowed values (an interval of mu near 0 stops at 0).
-fn within_limit(key: Key, [low, high]: [f64; 2]) -> [f64; 2] {
+pub(crate) fn within_limit(key: Key, [low, high]: [f64; 2]) -> [f64; 2] {
     let Some(limit) = key.param().limit() else {
         return [low, high];
     };
@@ -226,11 +277,12 @@ fn within_limit(key: Key, [low, high]: [f64; 2]) -> [f64; 2] {
     [low.max(floor), high.min(limit.max)]
 }
 
-/// The verdict on one parameter from its estimate (coordinate `c`), standard error, rank and
-/// profile range.
+/// The verdict on one parameter from its estimate (coordinate `c`), its starting value `start`
+/// [SI], standard error, rank and profile range.
 fn judge(
     fr: Free,
     c: f64,
+    start: f64,
     se: Option<f64>,
     deficient: bool,
     range: profile::Range,
@@ -245,20 +297,27 @@ fn judge(
         range.low_open && range.high_open
     };
     let determined = !deficient && !flat && se.is_some();
+    // a positive parameter that fits within the noise down to the end of its scan (16 decades):
+    // any value up to the high end fits, the scan's end is no bound worth a number
+    let down_to_zero = fr.log && range.low_open;
     let reason = (!determined).then(|| {
         let symbol = key.symbol();
         let [low, high] = span.map(|v| show(v, unit));
-        let fits = match (range.low_open, range.high_open) {
-            (false, false) => format!("{low} .. {high} fit within the noise"),
-            (true, false) => format!(
+        let fits = match (down_to_zero, range.low_open, range.high_open) {
+            (true, _, false) => format!("any {symbol} up to {high} fits within the noise"),
+            (true, _, true) => {
+                format!("any {symbol} up to {high}, where the scan stops, fits within the noise")
+            }
+            (false, false, false) => format!("{low} .. {high} fit within the noise"),
+            (false, true, false) => format!(
                 "any {symbol} up to {high} fits within the noise (no lower end down to {low}, \
                  where the scan stops)"
             ),
-            (false, true) => format!(
+            (false, false, true) => format!(
                 "any {symbol} from {low} up fits within the noise (no upper end up to {high}, \
                  where the scan stops)"
             ),
-            (true, true) => format!(
+            (false, true, true) => format!(
                 "every {symbol} from {low} to {high}, where the scan stops, fits within the noise"
             ),
         };
@@ -275,16 +334,23 @@ fn judge(
             advice::measurement_for(key)
         )
     });
-    let interval = match (determined, se) {
-        (true, Some(se)) => within_limit(
-            key,
-            [fr.value(c - quantile * se), fr.value(c + quantile * se)],
+    let (value, interval) = match (determined, se) {
+        (true, Some(se)) => (
+            fr.value(c),
+            within_limit(
+                key,
+                [fr.value(c - quantile * se), fr.value(c + quantile * se)],
+            ),
         ),
-        _ => span,
+        _ => (
+            written::kept(fr, start, &range),
+            [if down_to_zero { 0.0 } else { span[0] }, span[1]],
+        ),
     };
     Estimate {
         key,
-        value: fr.value(c),
+        value,
+        start,
         interval,
         profile: span,
         determined,

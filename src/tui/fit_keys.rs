@@ -226,21 +226,16 @@ pub fn fitted(app: &mut App, answer: FitAnswer) -> Vec<Command> {
     commands
 }
 
-/// An estimate's line: "mu = 0.3001, 95 % interval 0.2992 .. 0.301".
+/// An estimate's line: "mu = 0.29975, 95 % interval 0.2989 .. 0.3006", each number to the
+/// digits the interval supports; an undetermined one says where its value comes from.
 fn estimate_line(e: &crate::fit::Estimate) -> String {
-    let unit = e.key.param().unit;
-    let value = format_si(e.value, unit);
-    if e.determined {
-        let [low, high] = e.interval.map(|v| format_si(v, unit));
-        format!(
-            "{} = {value}, 95 % interval {low} .. {high}",
-            e.key.symbol()
-        )
-    } else {
-        format!(
-            "{} = {value}, not determined: the best fit, but any value of the range below fits",
-            e.key.symbol()
-        )
+    let (value, [low, high]) = e.texts();
+    let symbol = e.key.symbol();
+    match e.kept_words() {
+        None => format!("{symbol} = {value}, 95 % interval {low} .. {high}"),
+        Some(kept) => {
+            format!("{symbol} = {value}, {kept}: not determined, any value of the range below fits")
+        }
     }
 }
 
