@@ -18,7 +18,8 @@ pub const OFFSETS: [f64; 17] = [
 ];
 /// The step of a logarithmic coordinate at most: a quarter decade.
 pub const LOG_STEP: f64 = std::f64::consts::LN_10 / 4.0;
-/// Bisections of the step in which the profile crosses the threshold: the end to 1/256 of it.
+/// The end is found to 2^-BISECTIONS = 1/256 of the step in which the profile crosses the
+/// threshold (as this many bisections of it would give it; `crossing`).
 const BISECTIONS: usize = 8;
 /// Iterations of the fit of the other parameters at each step (warm-started from the last).
 const REFIT_ITERATIONS: usize = 50;
@@ -68,8 +69,8 @@ fn profiled(
 
 /// The profile range of parameter `j` about the minimum `best`: steps of `step` times `OFFSETS`
 /// outwards on each side until the sum of squares exceeds its minimum by `threshold`, the
-/// crossing then bisected. A step where the model has no answer (a value outside the
-/// parameter's range) ends the scan on that side, open. The two sides are scanned in parallel
+/// crossing then found to 1/256 of the step (`crossing`). A step where the model has no answer
+/// (a value outside the parameter's range) ends the scan on that side, open. The two sides are scanned in parallel
 /// (rayon): each starts from the minimum and reads nothing of the other.
 pub fn range(model: &Model, best: &Minimum, j: usize, step: f64, threshold: f64) -> Range {
     let scan = |sign: f64| side(model, best, j, sign * step, threshold);
@@ -91,29 +92,80 @@ fn side(model: &Model, best: &Minimum, j: usize, step: f64, threshold: f64) -> (
             .map(|(s, fitted)| ((s - best.sum_of_squares).max(0.0), fitted))
     };
     let mut others: DVector<f64> = best.x.clone().remove_row(j);
-    let mut inside = centre;
-    let mut end = (inside, true);
+    let mut inside = (centre, 0.0);
+    let mut before = 0.0;
     for offset in OFFSETS {
         let at = centre + step * offset;
         match rise(at, &others) {
             Err(_) => break,
             Ok((r, _)) if r > threshold => {
-                let mut outside = at;
-                for _ in 0..BISECTIONS {
-                    let mid = 0.5 * (inside + outside);
-                    match rise(mid, &others) {
-                        Ok((r, fitted)) if r <= threshold => (inside, others) = (mid, fitted),
-                        _ => outside = mid,
+                let width = (step * (offset - before)).abs() / f64::from(1u32 << BISECTIONS);
+                let mut within = |x: f64| match rise(x, &others) {
+                    Ok((r, fitted)) if r <= threshold => {
+                        others = fitted;
+                        Some(r)
                     }
-                }
-                end = (0.5 * (inside + outside), false);
-                break;
+                    Ok((r, _)) => Some(r),
+                    Err(_) => None,
+                };
+                return (
+                    crossing(inside, (at, r), threshold, width, &mut within),
+                    false,
+                );
             }
-            Ok((_, fitted)) => {
-                (inside, others) = (at, fitted);
-                end = (inside, true);
+            Ok((r, fitted)) => (inside, others) = ((at, r), fitted),
+        }
+        before = offset;
+    }
+    (inside.0, true)
+}
+
+/// Where the rise crosses `threshold` between `inside` and `outside` (each a coordinate and its
+/// rise, the first within the threshold, the second above it), to `width`: the middle of a
+/// bracket at most `width` wide, as `BISECTIONS` halvings of the step give it, in fewer solves.
+/// The square root of the rise is close to linear in the coordinate (the sum of squares close
+/// to quadratic about its minimum): a secant of it lands next to the crossing, and a point
+/// `width` beyond closes the bracket; each third try halves the bracket, so that the loop ends
+/// as bisection would at the latest. `rise` is None where the model has no answer (counted as
+/// above the threshold).
+fn crossing(
+    mut inside: (f64, f64),
+    mut outside: (f64, f64),
+    threshold: f64,
+    width: f64,
+    rise: &mut dyn FnMut(f64) -> Option<f64>,
+) -> f64 {
+    let g = |r: f64| r.sqrt() - threshold.sqrt();
+    // which end the last secant point became (true: the inside one)
+    let mut secant_moved: Option<bool> = None;
+    for attempt in 0..3 * BISECTIONS {
+        let (a, b) = (inside.0, outside.0);
+        if (b - a).abs() <= width {
+            break;
+        }
+        let towards = (b - a).signum();
+        let x = match (secant_moved.take(), attempt % 3) {
+            (Some(true), _) => a + 0.99 * width * towards,
+            (Some(false), _) => b - 0.99 * width * towards,
+            (None, 2) => 0.5 * (a + b),
+            (None, _) if !outside.1.is_finite() => 0.5 * (a + b),
+            (None, _) => {
+                let (ga, gb) = (g(inside.1), g(outside.1));
+                let t = (-ga / (gb - ga)).clamp(0.01, 0.99);
+                a + t * (b - a)
+            }
+        };
+        let secant = attempt % 3 == 0 && outside.1.is_finite();
+        match rise(x) {
+            Some(r) if r <= threshold => {
+                inside = (x, r);
+                secant_moved = secant.then_some(true);
+            }
+            r => {
+                outside = (x, r.unwrap_or(f64::INFINITY));
+                secant_moved = secant.then_some(false);
             }
         }
     }
-    end
+    0.5 * (inside.0 + outside.0)
 }
