@@ -115,17 +115,32 @@ fn the_power_punch_of_exponent_two_is_the_parabola() {
     }
 }
 
+/// What the independent integration finds on [-a, b]: q2(-a) over the peak, and by the
+/// trapezoidal rule Q2, phi = int Pi(q2) g', Q1 = int Pi(q2) and psi = int q2 g' [N/m].
+struct Integrated {
+    end: f64,
+    peak: f64,
+    q2: f64,
+    phi: f64,
+    q1: f64,
+    psi: f64,
+}
+
 /// q2 on [-a, b] by 80 000 fixed RK4 steps of q2' = (F(q2) - g'(x))/beta from q2(b) = 0, with
-/// the load integral by the trapezoidal rule on the same points.
-fn integrate(sol: &PlaneSolution) -> (f64, f64, f64) {
+/// the integrals by the trapezoidal rule on the same points.
+fn integrate(sol: &PlaneSolution) -> Integrated {
     let inp = &sol.inputs;
     let beta = winkler_beta(inp);
     let f = |x: f64, q: f64| (inp.wear.rate(q) - inp.shape.slope(x)) / beta;
     let steps = 80_000;
     let h = -(sol.a + sol.b) / steps as f64;
     let (mut x, mut q, mut peak) = (sol.b, 0.0f64, 0.0f64);
-    let (mut q2, mut phi) = (0.0, 0.0);
-    let mut last = (0.0, inp.shear_at(0.0) * inp.shape.slope(x));
+    let integrands = |x: f64, q: f64| {
+        let (shear, slope) = (inp.shear_at(q), inp.shape.slope(x));
+        [q, shear * slope, shear, q * slope]
+    };
+    let mut sums = [0.0; 4];
+    let mut last = integrands(x, q);
     for _ in 0..steps {
         let k1 = f(x, q);
         let k2 = f(x + h / 2.0, q + h / 2.0 * k1);
@@ -134,19 +149,28 @@ fn integrate(sol: &PlaneSolution) -> (f64, f64, f64) {
         q += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
         x += h;
         peak = peak.max(q);
-        let now = (q, inp.shear_at(q) * inp.shape.slope(x));
-        q2 -= h * 0.5 * (last.0 + now.0);
-        phi -= h * 0.5 * (last.1 + now.1);
+        let now = integrands(x, q);
+        for (s, (l, n)) in sums.iter_mut().zip(last.iter().zip(&now)) {
+            *s -= h * 0.5 * (l + n);
+        }
         last = now;
     }
-    (q / peak, q2, phi)
+    let [q2, phi, q1, psi] = sums;
+    Integrated {
+        end: q / peak,
+        peak,
+        q2,
+        phi,
+        q1,
+        psi,
+    }
 }
 
 #[test]
 fn the_shot_satisfies_the_end_conditions_and_the_load_by_an_independent_integration() {
     for inp in general() {
         let sol = solve(&inp, Model::Narrow).unwrap_or_else(|e| panic!("{e}: {inp:?}"));
-        let (end, q2, phi) = integrate(&sol);
+        let Integrated { end, q2, phi, .. } = integrate(&sol);
         // q2(-a) = 0 to the fine integration's accuracy (its uniform steps lose order at the
         // blunt power punch's tip: 5e-9 of the peak there); the trapezoidal load to (h/L)^2
         assert!(end.abs() < 1e-7, "q2(-a)/peak = {end}: {inp:?}");
@@ -162,6 +186,69 @@ fn the_shot_satisfies_the_end_conditions_and_the_load_by_an_independent_integrat
         assert!(en.contact_residual < 1e-6, "{en:?}");
         assert!((en.friction_loss + en.wear_loss - en.external).abs() < 1e-6 * en.external);
     }
+}
+
+/// The power punch n = 3 with the wear law n = 2 and a shear cap on a 0.1 mm layer, the case of
+/// benches/plane_general.rs: E = 10 GPa, nu = 0.3, mu = 0.3, tau0 = 0.1 MPa, tau_max = 2 MPa,
+/// k m = 0.5, p0 = 100 MPa, R = 50 mm.
+fn capped_power(load: f64) -> PlaneInputs {
+    let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);
+    PlaneInputs {
+        shape: Shape::Power {
+            radius: 0.05,
+            exponent: 3.0,
+        },
+        shear_strength: 2e6,
+        wear: WearLaw {
+            coefficient: 0.5 / m,
+            exponent: 2.0,
+            reference_pressure: 1e8,
+        },
+        ..plane(1e10, 0.3, 1e-4, 0.3, 1e5, 0.0, 0.05, load)
+    }
+}
+
+#[test]
+fn the_capped_power_punch_answers_across_its_load_sweep_where_the_cap_holds() {
+    // P = 1e3 to 1e5 N/m as the bench's sweep: the cap starts to hold where mu q2 + tau0 reaches
+    // tau_max (q2 = 6.33 MPa, near P = 7e3 N/m) and covers most of the contact at 1e5 N/m
+    let cap_from = (2e6 - 1e5) / 0.3;
+    let mut capped = 0;
+    for i in 0..12 {
+        let inp = capped_power(1e3 * 100f64.powf(i as f64 / 11.0));
+        let sol = solve(&inp, Model::Narrow).unwrap_or_else(|e| panic!("{e}: {inp:?}"));
+        let fine = integrate(&sol);
+        capped += usize::from(fine.peak > cap_from);
+        assert!(fine.end.abs() < 1e-7, "q2(-a)/peak = {}: {inp:?}", fine.end);
+        // the load balance P = Q2 - phi (2.1), Q2, phi and mu* = (Q1 + psi - tau0 L)/P (3.13)
+        // with the cap's Pi(q2) integrated by the trapezoidal rule: (h/L)^2 ~ 2e-10 away from
+        // the kink where the cap starts, (h/L) (h/L-jump of Pi') at it
+        let p = inp.load;
+        assert!(
+            rel(fine.q2 - fine.phi, p) < 1e-6,
+            "{} vs {p}",
+            fine.q2 - fine.phi
+        );
+        assert!(rel(fine.q2, sol.normal_force) < 1e-6);
+        assert!(
+            (fine.phi - sol.phi).abs() < 1e-6 * p,
+            "phi {} vs {}",
+            fine.phi,
+            sol.phi
+        );
+        let mu_star = (fine.q1 + fine.psi - 1e5 * sol.contact_width()) / p;
+        assert!(
+            (mu_star - sol.mu_star).abs() < 1e-6,
+            "{mu_star} vs {}",
+            sol.mu_star
+        );
+        // N against 2N Runge-Kutta steps
+        let twice = narrow_ode::solve_refined(&inp, 2).unwrap();
+        assert!(rel(twice.contact_width(), sol.contact_width()) < 1e-6);
+        assert!((twice.mu_star - sol.mu_star).abs() < 1e-6);
+    }
+    // the seven loads from 8.1e3 N/m
+    assert!(capped >= 7, "the cap holds at {capped} of the 12 loads");
 }
 
 #[test]

@@ -55,12 +55,9 @@ pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
             "{what} fails a check: {why}"
         )))
     };
-    // phi = integral of q1 g' is mu psi + tau0 Delta_g where no shear cap holds (every law but
-    // the general solver's)
-    let phi = match sol.law {
-        PressureLaw::General { .. } => sol.phi,
-        _ => mu * sol.psi + tau0 * sol.delta_g,
-    };
+    // phi = integral of q1 g', as the solver integrated it where a shear cap may hold (the
+    // general solver, the narrow shot), else mu psi + tau0 Delta_g
+    let phi = sol.phi;
     let terms = [sol.normal_force, mu * sol.psi, tau0 * sol.delta_g, phi];
     let balance = terms[0] - phi;
     let scale = terms.iter().fold(p, |s, t| s.max(t.abs()));
@@ -240,13 +237,15 @@ mod tests {
         assert!(why(&s).contains("does not contain the punch tip"));
         // also where adhesion tilts the surface
         s.inputs.friction.adhesion = 1.0;
-        s.inputs.load = s.normal_force - s.inputs.friction.adhesion * s.delta_g;
+        s.phi = s.inputs.friction.adhesion * s.delta_g;
+        s.inputs.load = s.normal_force - s.phi;
         assert!(why(&s).contains("does not contain the punch tip"));
         // a load carried mostly by the adhesion on the punch's slope: P - Q2 = tau0 Delta_g
         let mut s = good.clone();
         s.delta_g = 1e-6;
         s.inputs.friction.adhesion = 0.5 * good.normal_force / s.delta_g;
-        s.inputs.load = good.normal_force - s.inputs.friction.adhesion * s.delta_g;
+        s.phi = s.inputs.friction.adhesion * s.delta_g;
+        s.inputs.load = good.normal_force - s.phi;
         assert!(why(&s).contains("by 100.0 % of it"), "{}", why(&s));
     }
 }

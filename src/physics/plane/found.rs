@@ -21,9 +21,9 @@ pub(crate) struct Found {
     /// theta and gamma of the wide and strip models; None for the narrow model.
     pub theta: Option<f64>,
     pub gamma: Option<f64>,
-    /// Q1 = int Pi(q2) dx [N/m] where the solver integrates it (a capped friction law); None:
-    /// mu Q2 + tau0 L.
-    pub friction_force: Option<f64>,
+    /// Q1 = int Pi(q2) dx [N/m] and phi = int Pi(q2) g' dx [N/m] (2.1) where the solver
+    /// integrates them (a capped friction law); None: mu Q2 + tau0 L and mu psi + tau0 Delta_g.
+    pub friction_integrals: Option<(f64, f64)>,
 }
 
 impl PlaneSolution {
@@ -35,9 +35,11 @@ impl PlaneSolution {
         found: Found,
         law: PressureLaw,
     ) -> PlaneSolution {
-        let friction_force = found.friction_force.unwrap_or(
-            inputs.friction.coefficient * found.q2 + inputs.friction.adhesion * found.width,
-        );
+        let (mu, tau0) = (inputs.friction.coefficient, inputs.friction.adhesion);
+        let (friction_force, phi) = found.friction_integrals.unwrap_or((
+            mu * found.q2 + tau0 * found.width,
+            mu * found.psi + tau0 * found.delta_g,
+        ));
         PlaneSolution {
             model,
             inputs: inputs.clone(),
@@ -50,17 +52,10 @@ impl PlaneSolution {
             gamma: found.gamma,
             psi: found.psi,
             delta_g: found.delta_g,
-            // the shot integrates phi into its load balance: Q2 - P to its root's accuracy
-            phi: match found.friction_force {
-                Some(_) => found.q2 - inputs.load,
-                None => {
-                    inputs.friction.coefficient * found.psi
-                        + inputs.friction.adhesion * found.delta_g
-                }
-            },
-            mu_star: match found.friction_force {
+            phi,
+            mu_star: match found.friction_integrals {
                 // (3.13) as T - tau0 L over P, which holds with the cap too
-                Some(q1) => (q1 + found.psi - inputs.friction.adhesion * found.width) / inputs.load,
+                Some((q1, _)) => (q1 + found.psi - tau0 * found.width) / inputs.load,
                 None => total_friction(&inputs.friction, found.psi, found.delta_g, inputs.load),
             },
             law,

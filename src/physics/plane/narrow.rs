@@ -197,7 +197,7 @@ pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
             delta_g: s.delta_g,
             theta: None,
             gamma: None,
-            friction_force: None,
+            friction_integrals: None,
         },
         PressureLaw::Narrow { lambda, beta },
     ))

@@ -265,7 +265,7 @@ pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolutio
             delta_g: inputs.shape.g(b) - inputs.shape.g(-shot.a),
             theta: None,
             gamma: None,
-            friction_force: Some(q1),
+            friction_integrals: Some((q1, phi)),
         },
         PressureLaw::Shooting(Arc::new(Nodes { nodes: shot.nodes })),
     ))

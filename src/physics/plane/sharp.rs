@@ -67,7 +67,7 @@ pub fn solve_refined(
         delta_g: 0.0,
         theta,
         gamma,
-        friction_force: None,
+        friction_integrals: None,
     };
     Ok(PlaneSolution::assemble(model, inputs, found, law))
 }

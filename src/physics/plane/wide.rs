@@ -136,7 +136,7 @@ pub fn solve_with(c: &WideConstants, inputs: &PlaneInputs) -> Result<PlaneSoluti
             delta_g: s.delta_g,
             theta: Some(c.theta),
             gamma: Some(c.gamma),
-            friction_force: None,
+            friction_integrals: None,
         },
         PressureLaw::Wide {
             c: c.m * (PI * c.theta).cos() / (PI * inputs.radius()),

@@ -276,7 +276,7 @@ pub fn solution(inputs: &PlaneInputs, col: Collocation, model: Model) -> PlaneSo
         delta_g: col.delta_g,
         theta: Some(col.theta),
         gamma: Some(gamma),
-        friction_force: None,
+        friction_integrals: None,
     };
     PlaneSolution::assemble(model, inputs, found, PressureLaw::Strip(Arc::new(col)))
 }
