@@ -197,11 +197,15 @@ impl Preset {
 
     /// The duration [s] of a preset that gives none: five of the slowest decay times 1/beta
     /// (`docs/physics/spatial.md`, section 3), so that the time charts show the run-in; the
-    /// default section's 200 s when nothing decays (no wear); within `limits::DURATION`.
+    /// default section's 200 s when nothing decays (no wear); within `limits::DURATION`. A wear
+    /// law n != 1 decays a small wave at the linear law's rate times F'(pbar)/k =
+    /// n (pbar/p0)^(n-1), its slope at the mean pressure.
     pub fn auto_duration(&self) -> f64 {
-        let slowest = crate::physics::spatial::evolutions(&self.spatial_inputs())
+        let inputs = self.spatial_inputs();
+        let linearised = inputs.worn_pressure_slope(inputs.mean_pressure);
+        let slowest = crate::physics::spatial::evolutions(&inputs)
             .iter()
-            .map(|e| e.decay_rate)
+            .map(|e| e.decay_rate * linearised)
             .filter(|b| b.is_finite() && *b > 0.0)
             .fold(f64::INFINITY, f64::min);
         if slowest.is_finite() {

@@ -37,7 +37,12 @@ fn a_spatial_preset_takes_the_wear_law_and_says_it_is_simulated() {
          n = 1 only"
     );
     assert_eq!(v["harmonics_hold"], "for n = 1 only");
-    assert_eq!(v["contact"]["complete"], true);
+    let contact = &v["contact"];
+    assert_eq!(contact["complete"], true);
+    // the bound pbar - sum A/M and its time are the linear law's closed form: the bound is the
+    // simulated shape's nodal minimum instead, and no time is given
+    assert_eq!(contact["lower_bound"], contact["min_pressure"]);
+    assert!(contact["complete_after"].is_null());
     // n = 1 says nothing of it
     let (code, out, err) = solve(&["presets/wave-thick-layer.toml", "--time", "10"]);
     assert_eq!(code, Some(0), "{err}");
@@ -83,4 +88,27 @@ fn the_spatial_wear_law_is_refused_in_words_where_it_cannot_be_simulated() {
     ]);
     assert_eq!(code, Some(3), "{err}");
     assert!(err.contains("raise wear.reference_pressure"), "{err}");
+}
+
+#[test]
+fn a_duration_left_out_follows_the_wear_law_s_rate_at_the_mean_pressure() {
+    // wave-thick-layer without its duration: five of the slowest decay times; under n = 2 with
+    // p0 = pbar/4 a small wave decays at n (pbar/p0)^(n-1) = 8 times the linear law's rate
+    // (tests/spatial/spatial_wear_law.rs checks that rate against the simulation)
+    let text: String = std::fs::read_to_string("presets/wave-thick-layer.toml")
+        .unwrap()
+        .lines()
+        .filter(|l| !l.starts_with("duration"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let squared = text.replace(
+        "[wear]\n",
+        "[wear]\nexponent = 2.0\nreference_pressure = 5.0e6\n",
+    );
+    let path = std::path::Path::new("presets/wave.toml");
+    let linear = wearlab::preset::parse(&text, path).unwrap();
+    let squared = wearlab::preset::parse(&squared, path).unwrap();
+    assert_eq!(squared.wear_exponent, 2.0);
+    let ratio = linear.spatial.duration / squared.spatial.duration;
+    assert!((ratio - 8.0).abs() < 1e-12, "{ratio}");
 }

@@ -187,6 +187,12 @@ pub(crate) fn from_the_run(
         .filter(|_| from_start || at.time == 0.0 || run.stepping.is_none())
         .map(|c| &c.contact);
     let friction = setup.inputs.friction;
+    // the bound pbar - sum A/M and its time hold for the closed-form amplitudes: of the linear
+    // law, and of any law while the shape is still the preset's
+    let linear = setup.inputs.linear_wear();
+    let bound = closed
+        .filter(|_| linear || closed_contact.is_some())
+        .map(|c| &c.contact);
     let contact = ContactResult {
         complete: o.complete,
         fraction: o.contact_fraction,
@@ -194,10 +200,12 @@ pub(crate) fn from_the_run(
         time_error: run.time_error(at.time),
         min_pressure: closed_contact.map_or(o.min_pressure_complete, |c| c.min_pressure),
         at: closed_contact.map_or(Some(o.min_pressure_complete_at), |c| c.at),
-        lower_bound: closed.map_or(o.min_pressure_complete, |c| c.contact.lower_bound),
+        lower_bound: bound.map_or(o.min_pressure_complete, |c| c.lower_bound),
         exact: closed_contact.is_some_and(|c| c.exact),
         not_certified: closed_contact.and_then(|c| c.not_certified),
-        complete_after: closed.and_then(|c| c.contact.complete_after),
+        complete_after: closed
+            .filter(|_| linear)
+            .and_then(|c| c.contact.complete_after),
     };
     let shear = state.shear(&friction);
     let probes = probes

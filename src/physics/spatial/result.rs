@@ -66,7 +66,8 @@ pub struct ContactResult {
     pub min_pressure: f64,
     /// Where [x, y] [m] (null when only the bound is known).
     pub at: Option<[f64; 2]>,
-    /// pbar - sum A_n(t)/M_n [Pa] with the closed-form amplitudes.
+    /// pbar - sum A_n(t)/M_n [Pa] with the closed-form amplitudes; for a wear law n != 1, whose
+    /// amplitudes have no closed form, the nodal minimum of p_cc once the shape has worn.
     pub lower_bound: f64,
     /// True when `min_pressure` is the certified cell minimum; false for the bound or a minimum
     /// over the grid's nodes.
@@ -75,7 +76,8 @@ pub struct ContactResult {
     /// `min_pressure` is over the grid's nodes).
     pub not_certified: Option<NotCertified>,
     /// The formal closed-form time [s] after which the bound guarantees complete contact (null
-    /// without wear); not the running-in time, which is `time_to_complete`.
+    /// without wear, and for a wear law n != 1, which has no closed form); not the running-in
+    /// time, which is `time_to_complete`.
     pub complete_after: Option<f64>,
 }
 
