@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use crate::physics::plane::laws::power;
 use crate::physics::plane::spline::Spline;
 use crate::physics::{SolveError, limits};
 
@@ -158,7 +159,12 @@ impl Shape {
     /// g'(x), the slope (dimensionless; sign(x) times the rise away from the tip). Sharp corners:
     /// +-inf beyond the face.
     pub fn slope(&self, x: f64) -> f64 {
-        self.eval(x).1
+        match self {
+            Shape::Power { radius, exponent } => {
+                x.signum() * power(x.abs() / radius, exponent - 1.0)
+            }
+            _ => self.eval(x).1,
+        }
     }
 
     /// g''(x) [1/m], the curvature. Power punch with n < 2: +inf at the tip; the flat's edges:
@@ -177,11 +183,11 @@ impl Shape {
                 let curvature = if u == 0.0 && n < 2.0 {
                     f64::INFINITY
                 } else {
-                    (n - 1.0) * u.powf(n - 2.0) / radius
+                    (n - 1.0) * power(u, n - 2.0) / radius
                 };
                 (
-                    radius / n * u.powf(n),
-                    x.signum() * u.powf(n - 1.0),
+                    radius / n * power(u, n),
+                    x.signum() * power(u, n - 1.0),
                     curvature,
                 )
             }
