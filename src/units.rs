@@ -174,6 +174,18 @@ pub fn format_si_exact(value: f64, unit: &str) -> String {
     }
 }
 
+/// A fraction of a whole (0..1: the contact fraction) as `format_si` writes a pure number, four
+/// significant digits ("0.5781"), except that a fraction short of 1 never reads "1" (a partial
+/// contact of 0.99996 reads "0.9999"; one above 0 reads in scientific notation, never "0").
+pub fn format_fraction(value: f64) -> String {
+    let text = format_si(value, "");
+    if value < 1.0 && text == "1" {
+        "0.9999".into()
+    } else {
+        text
+    }
+}
+
 /// Whether a unit takes SI prefixes ("Pa", "m", "N/m"); "", "1/Pa" and "rad/m" read badly with
 /// them and do not.
 pub fn prefixable(unit: &str) -> bool {
@@ -262,6 +274,16 @@ pub fn parse_si(text: &str, unit: &str) -> Result<f64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_fraction_short_of_one_never_reads_one() {
+        // 37 of 64 nodes in contact
+        assert_eq!(format_fraction(0.578125), "0.5781");
+        assert_eq!(format_fraction(0.99996), "0.9999");
+        assert_eq!(format_fraction(1.0), "1");
+        assert_eq!(format_fraction(1.0 / 262_144.0), "3.815e-6");
+        assert_eq!(format_fraction(0.0), "0");
+    }
 
     #[test]
     fn formats_with_prefixes() {

@@ -19,7 +19,7 @@ pub const PLANE: [Entry; 10] = [
     ("mu", "-", "the sliding friction coefficient of the preset, for comparison with mu*"),
     ("I-J residual", "-", "|I - J| over the gross work: how well the solution meets the energy identity I = J (eq. 2.9); small is good"),
     ("(a+b)/h", "-", "contact width over strip thickness: wide model for << 1, narrow (Winkler) for >> 1, strip for any"),
-    ("mu* - mu = ..., a < b: wear dominates", "-", "which effect dominates, read from the solution: wear tilts the pressure forwards (a < b, mu* > mu), friction backwards (a > b, mu* < mu); 'not wear (k = 0)' where it leans forwards without wear (the friction of a thin strip, or the punch's shape), 'the two signs disagree' where mu* - mu and a - b point different ways, 'neither dominates' where mu* = mu and a = b (to 1e-9)"),
+    ("mu* - mu = ..., a < b: wear dominates", "-", "which effect dominates, read from the solution: wear tilts the pressure forwards (a < b, mu* > mu), friction backwards (a > b, mu* < mu); 'not wear (k = 0)' where it leans forwards without wear (the friction of a thin strip, or the punch's shape), 'the two signs disagree' where mu* - mu and a - b point different ways, 'neither dominates' where mu* = mu and a = b (to 1e-9); under a flat punch with sharp corners the contact is the face at every load (mu* = mu, a = b: 'contact fixed by the corners'), and theta's sign names the corner whose pressure singularity is the stronger (> 0: the trailing one, q2 ~ r^(-1/2-theta) there)"),
     ("valid / !", "", "whether the model holds at this operating point, or why not"),
 ];
 
@@ -27,7 +27,7 @@ pub const PLANE: [Entry; 10] = [
 #[rustfmt::skip]
 pub const SPATIAL: [Entry; 16] = [
     ("t", "s", "the instant shown (space plays time)"),
-    ("partial contact (N%)", "-", "the contact, solved on the nodes of the period cell, is partial: N % of the cell touches (p > 0); 'complete contact' when all of it does"),
+    ("partial contact (fraction f)", "-", "the contact, solved on the nodes of the period cell, is partial: the fraction f of the cell touches (p > 0), four digits as the running-in chart's cursor reads it; 'complete contact' when all of it does"),
     ("p_max", "Pa", "largest contact pressure in the cell (p_min (nodes): the smallest, once contact is complete)"),
     ("running in", "s", "the wear of the punch is being simulated, step by step: the simulated time reached and the time asked for; until t is reached the state shown is the last one reached"),
     ("complete after t (simulated)", "s", "when the simulated running-in makes the contact complete; wear concentrates on the crests that touch, so the closed-form bound (formal bound: complete contact assumed all along) can be far off"),

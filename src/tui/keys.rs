@@ -242,7 +242,7 @@ pub const BINDINGS: [Binding; 26] = [
     ),
     binding(
         &[(ch('c'), Action::Pin), (ch('C'), Action::ClearPins)],
-        "c, C", "pin the chart's curves to compare with later edits (up to three, drawn dim with their number, named by what differs); C clears the chart's pins",
+        "c, C", "pin the chart's curves to compare with later edits (up to three, drawn dim with their number, without colour the number and each curve's own character in turn, 1* 1+; named by what differs); C clears the chart's pins",
         ("c/C", "pin", "", 7), ALL,
     ),
     binding(
@@ -302,7 +302,7 @@ pub const BINDINGS: [Binding; 26] = [
     ),
     binding(
         &[(ch('i'), Action::About)],
-        "i", "about this preset: its name and whole description (Up/Down, PgUp/PgDn scroll; Esc closes)",
+        "i", "about this preset: its name and whole description, and the status in full: every value of the point and of the cursor's readout, which a crowded status counts as '+2 more: i' (Up/Down, PgUp/PgDn scroll; Esc closes)",
         ("i", "about", "", 5), ALL,
     ),
     binding(

@@ -5,10 +5,13 @@
 //! 2 theta L; (4.7): psi = -(4/3) theta L Q2/R); on a strip of finite thickness the thickness
 //! term of (4.5) shifts the pressure forwards even without wear (mu* > mu at h = 0.1 mm with
 //! k = 0 on `polymer-coating.toml`), and adhesion or a measured profile shifts it too, so the
-//! solution's own signs are read and the effect is named only where the inputs have it.
+//! solution's own signs are read and the effect is named only where the inputs have it. A flat
+//! punch with sharp corners touches along its face at every load (a = b, psi = 0, mu* = mu):
+//! there theta says which corner's pressure singularity is the stronger, q2 ~ r^(-1/2-theta) at
+//! the trailing corner and r^(-1/2+theta) at the leading one (Galin; Soldatenkov (2007) (4.5)).
 
 use crate::phrase::Phrase;
-use crate::physics::plane::PlaneSolution;
+use crate::physics::plane::{PlaneSolution, Shape};
 use crate::units::format_si;
 
 /// |mu* - mu| at or below which mu* counts as equal to mu (dimensionless). Symmetric inputs
@@ -48,6 +51,11 @@ pub struct Dominance {
     pub wear: bool,
     /// mu > 0 or tau0 > 0: there is friction.
     pub friction: bool,
+    /// A flat punch with sharp corners: its contact is the face at every load.
+    pub sharp_corners: bool,
+    /// theta (dimensionless) of the wide and strip models: > 0 where the trailing corner's
+    /// singularity is the stronger; None for the narrow model, whose pressure stays finite.
+    pub theta: Option<f64>,
 }
 
 impl Dominance {
@@ -78,12 +86,19 @@ impl Dominance {
             lean,
             wear: s.inputs.wear.coefficient > 0.0,
             friction: mu > 0.0 || s.inputs.friction.adhesion > 0.0,
+            sharp_corners: matches!(
+                &s.inputs.shape,
+                Shape::Flat { edge_radius, .. } if *edge_radius == 0.0
+            ),
+            theta: s.theta,
         }
     }
 
     /// In one phrase, the evidence then the effect: "mu* - mu = -1.777e-4, a > b: friction
     /// dominates"; an effect the inputs lack is never named ("mu* - mu = +7.555e-5, a < b: not
-    /// wear (k = 0)").
+    /// wear (k = 0)"); under a flat punch with sharp corners, which corner's singularity is the
+    /// stronger ("mu* = mu, a = b: contact fixed by the corners; theta > 0: the trailing corner's
+    /// singularity is the stronger").
     pub fn describe(&self) -> Phrase {
         let excess = format_si(self.mu_star_minus_mu, "");
         let excess = if self.mu_star_minus_mu > 0.0 {
@@ -99,7 +114,28 @@ impl Dominance {
         let evidence = |joint: &str| {
             Phrase::whole(format!("mu* - mu = {excess},")).then(format!("{joint}{width}:"))
         };
+        let fixed = || Phrase::whole("mu* = mu, a = b:").then_words("contact fixed by the corners");
         match (self.lean, self.wear, self.friction) {
+            (Lean::Even, ..) if self.sharp_corners => match self.theta {
+                None => fixed(),
+                Some(0.0) => fixed()
+                    .ending(";")
+                    .then("theta = 0:")
+                    .then_words("the corners' singularities are alike"),
+                Some(t) => {
+                    let (sign, corner) = if t > 0.0 {
+                        (">", "trailing")
+                    } else {
+                        ("<", "leading")
+                    };
+                    fixed()
+                        .ending(";")
+                        .then(format!("theta {sign} 0:"))
+                        .then_words(&format!(
+                            "the {corner} corner's singularity is the stronger"
+                        ))
+                }
+            },
             (Lean::Even, ..) => Phrase::whole("mu* = mu, a = b:").then_words("neither dominates"),
             (Lean::Forwards, true, _) => evidence("").then_words("wear dominates"),
             (Lean::Forwards, false, _) => evidence("").then_words("not wear (k = 0)"),
@@ -113,7 +149,7 @@ impl Dominance {
 #[cfg(test)]
 mod tests {
     use super::{Dominance, Lean};
-    use crate::physics::plane::{Model, PlaneInputs, solve};
+    use crate::physics::plane::{Model, PlaneInputs, Shape, solve};
     use crate::physics::{Friction, Material};
 
     fn at(thickness: f64, mu: f64, k: f64, model: Model) -> Dominance {
@@ -177,5 +213,42 @@ mod tests {
         }
         // the Winkler model has no friction-induced part: mu* = mu exactly, a = b
         assert_eq!(at(1e-2, 0.3, 0.0, Model::Narrow).lean, Lean::Even);
+    }
+
+    #[test]
+    fn sharp_corners_name_the_stronger_corner_by_theta() {
+        // sharp-flat-punch.toml: c = 1 mm on a half-plane, theta = +0.0111 at k = 2e-11 1/Pa
+        // and -0.0323 at k = 1e-10 1/Pa (the parabola's theta above: theta depends on mu, k and
+        // the material only, Soldatenkov (2007) (4.5))
+        let flat = |k: f64, model: Model| {
+            let material = Material {
+                youngs_modulus: 3.0e9,
+                poisson_ratio: 0.35,
+                thickness: f64::INFINITY,
+            };
+            let friction = Friction {
+                coefficient: 0.3,
+                adhesion: 0.0,
+            };
+            let mut inputs = PlaneInputs::parabolic(material, friction, k, 0.05, 1.0e4);
+            inputs.shape = Shape::Flat {
+                half_width: 1e-3,
+                edge_radius: 0.0,
+            };
+            Dominance::of(&solve(&inputs, model).expect("solves"))
+        };
+        let trailing = flat(2e-11, Model::Wide);
+        assert_eq!(trailing.lean, Lean::Even);
+        assert_eq!(
+            trailing.describe().to_string(),
+            "mu* = mu, a = b: contact fixed by the corners; theta > 0: the trailing corner's \
+             singularity is the stronger"
+        );
+        assert!(
+            flat(1e-10, Model::Wide)
+                .describe()
+                .to_string()
+                .ends_with("theta < 0: the leading corner's singularity is the stronger")
+        );
     }
 }

@@ -24,10 +24,12 @@ impl YieldCheck {
                     Phrase::words("yields at the sharp corners (the pressure is unbounded there)")
                 }
                 Some(NotJudged::BelowLayer { depth, thickness }) => {
-                    Phrase::words("yield not judged: the peak stress of a half-plane lies at")
-                        .then(format!("depth {},", format_si(depth, "m")))
-                        .then_words("below the layer")
-                        .then(format!("(h = {})", format_si(thickness, "m")))
+                    // short enough for two rows of the status at 80x24; `describe` says that
+                    // the stress is the half-plane's
+                    Phrase::words("yield not judged: peak stress")
+                        .then(format!("{} deep,", format_si(depth, "m")))
+                        .then_words("below")
+                        .then(format!("h = {}", format_si(thickness, "m")))
                 }
                 _ => Phrase::words("yield not judged under the narrow model"),
             };

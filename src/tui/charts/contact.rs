@@ -141,6 +141,7 @@ pub fn running_in(preset: &Preset, c: &CellOutput) -> Result<Figure, NoFigure> {
         }],
     );
     fraction.markers = now(|s| s.outputs.contact_fraction);
+    fraction.fraction = true;
     fraction.x_marks = mark.clone();
     let mut mu = Plot::new(
         t(),

@@ -72,7 +72,9 @@ fn field(text: &str) -> String {
 /// columns of its axes (plots that share an axis share its column); the overlaid data file's
 /// points follow a plot's curves ("data: friction.csv"), their standard deviations in a column
 /// of their own ("mu* sd [-]"); a pinned curve follows, named by its pin and its own name ("pin:
-/// mu = 0.2: mu* wide").
+/// mu = 0.2: mu* wide"). A curve without an answer at some points has a comment line naming
+/// them before the header ("# mu* wide: no answer at P >= 1.70 kN/m (11 of 40 loads),
+/// none at P [N/m] = 1.70e3 ...").
 pub fn csv(
     chart: Chart,
     answer: &Answer,
@@ -131,6 +133,19 @@ pub fn csv(
                 .iter()
                 .map(|p| (p.data.iter().any(|d| d.sd.is_some())).then(|| at(sd_column(&p.y))))
                 .collect();
+            // a curve without an answer at some points: named with them before the header
+            for p in &plots {
+                for u in &p.unanswered {
+                    let at: Vec<String> = u.at.iter().map(|x| format!("{x:e}")).collect();
+                    out.push_str(&format!(
+                        "# {}: {}, none at {} = {}\n",
+                        p.series[u.curve].name,
+                        u.words,
+                        column(&p.x),
+                        at.join(" ")
+                    ));
+                }
+            }
             let header: Vec<String> = columns.iter().map(|c| field(c)).collect();
             out.push_str(&format!("curve,{}\n", header.join(",")));
             let row_with = |name: &str,

@@ -127,6 +127,24 @@ pub struct Plot {
     /// Differences of y below this (absolute, the y unit) are round-off: y values that differ by
     /// no more are drawn as the one value they round to (0: only equal values are).
     pub resolution: f64,
+    /// The y values are the contact fraction: the cursor reads them as the status writes it
+    /// (`units::format_fraction`), not to six digits as mu*.
+    pub fraction: bool,
+    /// The curves that have no value at some of the points they were computed at: said in their
+    /// legend entries, the points named in the CSV.
+    pub unanswered: Vec<Unanswered>,
+}
+
+/// Where a curve has no value among the points it was computed at (its model has no solution
+/// there).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unanswered {
+    /// The curve's index in `Plot::series`.
+    pub curve: usize,
+    /// In words, for the legend: "no answer at P >= 1.70 kN/m (11 of 40 loads)".
+    pub words: String,
+    /// The x of those points (the x axis' unit).
+    pub at: Vec<f64>,
 }
 
 impl Plot {
@@ -145,6 +163,8 @@ impl Plot {
             dim_label: String::new(),
             data: Vec::new(),
             resolution: 0.0,
+            fraction: false,
+            unanswered: Vec::new(),
         }
     }
 

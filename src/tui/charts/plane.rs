@@ -2,12 +2,12 @@
 
 use crate::engine::PlaneOutput;
 use crate::physics::Spacing;
-use crate::physics::plane::OperatingPoint;
 use crate::physics::plane::energy::{Energy, Undefined};
 use crate::physics::plane::sweep::Sweep;
+use crate::physics::plane::{Model, OperatingPoint};
 use crate::preset::Preset;
 
-use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, zip};
+use crate::tui::charts::{Axis, Figure, Mark, NoFigure, Plot, Scale, Series, axis, gaps, zip};
 
 fn point(out: &PlaneOutput) -> Result<&OperatingPoint, NoFigure> {
     out.point
@@ -121,17 +121,30 @@ fn wear_law(exponent: f64) -> (&'static str, String) {
     }
 }
 
+/// mu* of each model against the load, dim where the model fails its validity check (as the
+/// status judges the operating point), each curve's loads without an answer said in its legend.
 pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
     let own = sweep(out)?;
     let model = preset.plane.model;
-    let series = std::iter::once((model, own))
+    let sweeps: Vec<(Model, &Sweep)> = std::iter::once((model, own))
         .chain(out.overlays.iter().map(|(m, s)| (*m, &**s)))
         // a model that needs a finite thickness has no curve on a half-plane
         .filter(|(m, _)| !(m.needs_finite_thickness() && preset.material.is_half_space()))
+        .collect();
+    let series = (sweeps.iter())
         .map(|(m, s)| of_load(format!("mu* {}", m.name()), &s.load, &s.mu_star))
         .collect();
     let (x, y) = against_load(preset, "mu*", "");
     let mut plot = Plot::new(x, y, series);
+    for (i, (m, s)) in sweeps.iter().enumerate() {
+        let point = |k: usize| Some((s.load[k], s.mu_star[k]?));
+        let fails = format!("{} fails", m.name());
+        plot.dim
+            .extend(gaps::failing_runs(i, &fails, &s.valid, point));
+        plot.unanswered
+            .extend(gaps::unanswered(i, &s.load, &s.mu_star, &plot.x, "loads"));
+    }
+    plot.dim_label = super::sweep::dim_label(preset.problem).into();
     plot.focus = 1;
     plot.markers = point(out).ok().map(|p| Series {
         name: "now".into(),

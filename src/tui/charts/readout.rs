@@ -1,6 +1,6 @@
 //! The cursor readout: the x under the cursor and every curve's value there, with units.
 
-use crate::units::{format_si, prefixable};
+use crate::units::{format_fraction, format_si, prefixable};
 
 use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::{Scale, Series};
@@ -97,7 +97,15 @@ pub fn readout(frames: &[Frame], cursor: f64) -> Vec<String> {
     for f in frames {
         let unit = f.plot.y.unit;
         let span = (f.y_scale == Scale::Linear).then_some(f.y[1] - f.y[0]);
-        let read = |s: &Series| at(s, xp, f.plot.x.scale, f.y_scale).map(|v| value(v, unit, span));
+        let read = |s: &Series| {
+            at(s, xp, f.plot.x.scale, f.y_scale).map(|v| {
+                if f.plot.fraction {
+                    format_fraction(v)
+                } else {
+                    value(v, unit, span)
+                }
+            })
+        };
         // the dim parts of curve i under the cursor: plane models "fail", the spatial contact
         // is partial
         let tag = |i: usize| {

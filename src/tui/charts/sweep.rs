@@ -143,22 +143,8 @@ pub fn figure(
             points: through_now(curve, point, now.zip(s.current_y)),
         });
         // each run of points where the verdict fails, as its own dim piece
-        let mut run: Vec<(f64, f64)> = Vec::new();
-        for k in 0..=curve.x.len() {
-            let failing = k < curve.x.len() && s.holds[k] == Some(false);
-            match (failing, point(k.min(curve.x.len() - 1))) {
-                (true, Some(p)) => run.push(p),
-                _ if !run.is_empty() => dim.push((
-                    i,
-                    Series {
-                        // the legend's name of this model's dim parts, where curves have marks
-                        name: model.map_or_else(String::new, |m| format!("{m} fails")),
-                        points: std::mem::take(&mut run),
-                    },
-                )),
-                _ => {}
-            }
-        }
+        let fails = model.map_or_else(String::new, |m| format!("{m} fails"));
+        dim.extend(super::gaps::failing_runs(i, &fails, &s.holds, point));
         // a model's check holds or fails; the spatial problem's contact is complete or partial
         let (holds, fails) = match model {
             Some(_) => ("ok", "fails"),
@@ -199,6 +185,7 @@ pub fn figure(
     plot.x_marks = x_marks;
     plot.dim = dim;
     plot.dim_label = dim_label(problem).into();
+    plot.fraction = quantity.name == "contact.fraction";
     // against mu itself the reference is the diagonal mu* = mu, a curve over the swept range
     let swept_mu = !dimensionless && spec.axis.key.param().key == "friction.coefficient";
     match quantity.name {

@@ -25,6 +25,7 @@ fn entries(n: usize, width: usize) -> Vec<Entry> {
 const INK: Ink = Ink {
     glyph: '*',
     solid: false,
+    second: None,
     style: Style::new(),
 };
 

@@ -48,6 +48,26 @@ fn partial_contact_screens() {
 }
 
 #[test]
+fn the_status_and_the_cursor_write_the_contact_fraction_alike() {
+    // contact-lost.toml at t = 0: half the cell touches (`wearlab solve` gives contact.fraction
+    // = 0.5); the time history's cursor starts on the operating point, t = 0
+    let mut history = on(&solved("contact-lost.toml"), SpatialChart::History);
+    press(&mut history, KeyCode::Char('x'));
+    let s = screen(&history, 120, 40, PLAIN);
+    assert!(s.contains("partial contact (fraction 0.5)"), "{s}");
+    assert!(s.contains("contact fraction = 0.5 "), "{s}");
+    // between two steps of the running-in, interpolated: four digits, as the status writes it
+    press(&mut history, KeyCode::Char(']'));
+    let s = screen(&history, 120, 40, PLAIN);
+    let read = s
+        .split("contact fraction = ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .unwrap_or_default();
+    assert!(read.len() <= 6 && read.starts_with("0."), "{read}:\n{s}");
+}
+
+#[test]
 fn the_zones_out_of_contact_are_grey_and_named_beside_the_bar() {
     let lost = solved("contact-lost.toml");
     let grey = COLOUR.empty().1;
@@ -111,7 +131,8 @@ fn a_time_step_replays_the_cached_running_in() {
         (1, steps)
     );
     let s = screen(&app, 80, 24, PLAIN);
-    assert!(s.contains("partial contact (53%)  t = 3.00 s"), "{s}");
+    // `wearlab solve presets/contact-lost.toml --time 3` gives contact.fraction = 0.53125
+    assert!(s.contains("partial contact (fraction 0.5313)  t = 3.00 s"), "{s}");
     // playing does the same
     press(&mut app, KeyCode::Char(' '));
     let cmds = update(&mut app, Msg::Tick);
@@ -202,7 +223,7 @@ fn the_help_explains_the_partial_contact_status() {
         .map(|l| format!("{l}\n"))
         .collect();
     for symbol in [
-        "partial contact (N%)",
+        "partial contact (fraction f)",
         "p_max",
         "running in",
         "complete after t (simulated)",

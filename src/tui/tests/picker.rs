@@ -1,5 +1,5 @@
 //! The picker: every description shown whole, presets listed by folder and file, typed text
-//! that finds presets or opens a typed path.
+//! that finds presets or opens a typed path, and what opening one leaves of the last one.
 
 use super::update::message;
 use super::*;
@@ -155,4 +155,38 @@ fn typed_text_finds_presets_and_a_typed_path_opens_its_file() {
     update(&mut app, crate::tui::effects::read_preset(path.clone()));
     assert_eq!(app.doc.path.as_ref(), Some(&path));
     assert_eq!(app.doc.preset, bundled("hertz-check.toml"));
+}
+
+/// Opens the bundled preset whose file `file` names through the picker, its solve delivered.
+fn open_bundled(app: &mut App, file: &str) {
+    update(app, crate::tui::effects::list_presets(&Places::default()));
+    type_text(app, file);
+    let commands = press(app, KeyCode::Enter);
+    assert_eq!(
+        app.doc.source.as_deref(),
+        Some(&*format!("bundled: {file}"))
+    );
+    settle(app, commands);
+}
+
+#[test]
+fn opening_a_preset_turns_the_cursors_off_and_keeps_the_pins() {
+    // the pressure map's cell cursor of a spatial preset
+    let mut app = solved("dispersion.toml");
+    press(&mut app, KeyCode::Char('x'));
+    assert!(app.ui.map_cell.is_some());
+    open_bundled(&mut app, "polymer-coating.toml");
+    assert_eq!(app.ui.map_cell, None);
+    // the chart cursor of a plane preset, with a pin on its chart
+    let chart = app.ui.chart;
+    press(&mut app, KeyCode::Char('x'));
+    press(&mut app, KeyCode::Char('c'));
+    assert!(app.ui.cursor.is_some());
+    assert_eq!(app.ui.pins_of(chart).len(), 1);
+    open_bundled(&mut app, "hertz-check.toml");
+    assert_eq!(app.ui.cursor, None);
+    assert_eq!(app.ui.pins_of(chart).len(), 1);
+    // no readout of the last preset's chart is left in the status
+    let s = screen(&app, 80, 24, PLAIN);
+    assert!(!s.contains("cursor "), "{s}");
 }

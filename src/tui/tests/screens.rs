@@ -157,8 +157,8 @@ fn the_help_explains_every_status_symbol_of_both_problems() {
 
 #[test]
 fn every_help_line_fits_and_long_symbols_stand_above_their_text() {
-    // no help line is cut (e.g. "partial contact (N%) [-]the contact, solved on the nodes of the
-    // period cel"): a long symbol stands on a line above its text
+    // no help line is cut (e.g. "partial contact (fraction f) [-]the contact, solved on the
+    // nodes of the period cel"): a long symbol stands on a line above its text
     for file in ["polymer-coating.toml", "contact-lost.toml"] {
         let app = app(file);
         for width in [76, 98] {

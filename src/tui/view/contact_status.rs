@@ -1,27 +1,17 @@
 //! The status of a contact solved on the period cell: partial or complete, the
-//! contact fraction, p_max, mu* and psi of the state shown, and where the running-in stands
+//! contact fraction (`units::format_fraction`, as the charts' cursor reads it), p_max, mu* and psi of the state shown, and where the running-in stands
 //! (stepping, with the simulated time reached, or the simulated time to complete contact).
 
 use crate::engine::{CellOutput, Progress};
 use crate::phrase::Phrase;
 use crate::physics::spatial::partial::running_in::{HORIZON_DECAY_TIMES, MAX_STEPS};
-use crate::units::format_si;
+use crate::units::{format_fraction, format_si};
 use ratatui::text::Line;
 
 use crate::tui::view::status_values::mu_star;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
 use crate::tui::view::wrapping::{lines_of, pack};
-
-/// The contact fraction as a whole percentage, never rounded up to 100 % nor down to 0 %.
-pub fn percent(fraction: f64) -> String {
-    let p = (100.0 * fraction).floor();
-    if p < 1.0 && fraction > 0.0 {
-        "<1%".into()
-    } else {
-        format!("{p:.0}%")
-    }
-}
 
 /// The head of the status for the state on the cell, and whether the harmonics' closed-form
 /// rates do not hold now (the state shown is partial: they hold after complete contact; a
@@ -51,7 +41,11 @@ pub fn head(
     let (verdict, verdict_style) = if o.complete {
         ("complete contact".to_string(), style.ok())
     } else {
-        let partial = format!("partial contact ({})", percent(o.contact_fraction));
+        // as the running-in chart's cursor reads it
+        let partial = format!(
+            "partial contact (fraction {})",
+            format_fraction(o.contact_fraction)
+        );
         (partial, ratatui::style::Style::default())
     };
     // the verdict and the time, then the values (packed apart, so that a longer time never

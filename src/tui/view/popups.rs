@@ -13,6 +13,7 @@ use crate::tui::view::layout::centered;
 use crate::tui::view::sweep;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap;
+use crate::tui::view::wrapping::pack;
 use crate::tui::{glossary, keys};
 
 /// A two-column row: `left` padded to `indent` columns, `right` wrapped in the rest; a `left`
@@ -147,8 +148,9 @@ pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, are
     text_window("help", layout, scroll, frame, area);
 }
 
-/// The preset's name, its file, and its whole description wrapped at spaces to `width`, a
-/// blank line before "Look at:" and "Try:".
+/// The preset's name, its file, the status in full (what a crowded status counts as "+2 more:
+/// i"), and its whole description wrapped at spaces to `width`, a blank line before "Look at:"
+/// and "Try:".
 pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
     let doc = &app.doc;
     let mut lines = vec![Line::styled(doc.preset.name.clone(), style.heading())];
@@ -173,6 +175,12 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
                 .into_iter()
                 .map(|l| Line::styled(l, style.error())),
         );
+    }
+    let full = crate::tui::view::status::in_full(app);
+    if !full.is_empty() {
+        lines.push(Line::from(""));
+        lines.push(Line::styled("the status in full:", style.heading()));
+        lines.extend(pack(&full, width, "  ").into_iter().map(Line::from));
     }
     lines.extend(paragraphs(&doc.preset.description, width));
     lines

@@ -16,6 +16,10 @@ pub struct Ink {
     pub glyph: char,
     /// Drawn with its glyph even on a Braille raster (pins, markers).
     pub solid: bool,
+    /// In character cells, the character of every other column (a pinned curve in character
+    /// mode: the pin's number and the curve's own glyph in turn, "1+1+", so that the pinned
+    /// curves of a pin stay apart without colour).
+    pub second: Option<char>,
     /// Colour and modifiers.
     pub style: Style,
 }
@@ -70,7 +74,10 @@ impl Raster {
         }
         let cell = &mut self.cells[row as usize * self.width as usize + col as usize];
         if rx == 1.0 {
-            *cell = Cell::Glyph(ink);
+            *cell = Cell::Glyph(match ink.second {
+                Some(glyph) if col % 2 == 1 => Ink { glyph, ..ink },
+                _ => ink,
+            });
             return;
         }
         let bit = BITS[(dx % 2) as usize][(dy % 4) as usize];

@@ -59,18 +59,10 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
     // or a map, whose chart marks the point, the readout of the sweep comes first and the point
     // gives up rows before the verdict does
     let kept = kept_rows(app, answer, width);
-    let (readout, room) = match app.explore.view {
-        Some(_) => (
-            crate::tui::view::sweep::readout(app),
-            rows.saturating_sub(kept.map_or(0, |(_, verdict)| verdict)),
-        ),
-        None => (
-            cursor_readout(app, answer).or_else(|| {
-                crate::tui::view::map_readout::status(app)
-                    .map(|items| items.into_iter().map(Phrase::from).collect())
-            }),
-            rows.saturating_sub(kept.map_or(main(0).len() + 1, |(all, _)| all)),
-        ),
+    let readout = status_readout(app, answer);
+    let room = match app.explore.view {
+        Some(_) => rows.saturating_sub(kept.map_or(0, |(_, verdict)| verdict)),
+        None => rows.saturating_sub(kept.map_or(main(0).len() + 1, |(all, _)| all)),
     };
     let mut lines: Vec<Line> = readout
         .map(|items| pack_within(&items, width, "  ", room))
@@ -83,6 +75,41 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
     }
+}
+
+/// The readout the status starts with: of the sweep or map view's cursor, else of the chart's
+/// cursor or the pressure map's cell cursor; None while no cursor is on.
+fn status_readout(app: &App, answer: &Answer) -> Option<Vec<Phrase>> {
+    match app.explore.view {
+        Some(_) => crate::tui::view::sweep::readout(app),
+        None => cursor_readout(app, answer).or_else(|| {
+            crate::tui::view::map_readout::status(app)
+                .map(|items| items.into_iter().map(Phrase::from).collect())
+        }),
+    }
+}
+
+/// What the status shows of the shown result before a crowded status counts some of it ("+2
+/// more: i"), for the `i` window: the cursor's readout, then a plane point's values (as the
+/// status writes them, in groups in the dimensionless view); empty where there is neither.
+pub fn in_full(app: &App) -> Vec<Phrase> {
+    let Some((answer, _)) = crate::tui::on_screen::on_screen(app).answer() else {
+        return Vec::new();
+    };
+    let mut items = status_readout(app, answer).unwrap_or_default();
+    if let Output::Plane(out) = &answer.output
+        && let Ok(p) = &out.point
+    {
+        items.extend(if app.explore.dimensionless {
+            groups_status::plane_items(p)
+                .into_iter()
+                .map(Into::into)
+                .collect()
+        } else {
+            plane_items(p)
+        });
+    }
+    items
 }
 
 /// The rows of a plane point's status that a readout never takes: (its values but those that

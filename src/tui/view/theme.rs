@@ -205,6 +205,7 @@ impl RenderOptions {
         Ink {
             glyph: GLYPHS[i % GLYPHS.len()],
             solid: false,
+            second: None,
             style: self.series(i),
         }
     }
@@ -221,6 +222,7 @@ impl RenderOptions {
         Ink {
             glyph: if self.ascii { '@' } else { '●' },
             solid: true,
+            second: None,
             style,
         }
     }
@@ -238,22 +240,26 @@ impl RenderOptions {
         let point = Ink {
             glyph: if self.ascii { 'O' } else { '◆' },
             solid: true,
+            second: None,
             style,
         };
         let bar = Ink {
             glyph: if self.ascii { '|' } else { '│' },
             solid: true,
+            second: None,
             style: style.remove_modifier(Modifier::BOLD),
         };
         (point, bar)
     }
 
     /// How the i-th curve of pin `pin` (from 0) is drawn: the pin's number, dim, in the curve's
-    /// colour.
+    /// colour; in character mode the number and the curve's own glyph in turn ("1+1+" for the
+    /// second curve of pin 1), so that each pinned curve is told apart without colour.
     pub fn pin_ink(self, pin: usize, i: usize) -> Ink {
         Ink {
             glyph: char::from_digit(pin as u32 + 1, 10).unwrap_or('#'),
             solid: true,
+            second: (!self.braille()).then_some(GLYPHS[i % GLYPHS.len()]),
             style: self.series(i).add_modifier(Modifier::DIM),
         }
     }
@@ -264,13 +270,17 @@ impl RenderOptions {
         Ink {
             glyph: DIM_GLYPHS[i % DIM_GLYPHS.len()],
             solid: false,
+            second: None,
             style: self.series(i).add_modifier(Modifier::DIM),
         }
     }
 
-    /// A legend sample of an ink: a short line in its colour, or its character twice.
+    /// A legend sample of an ink: a short line in its colour, its two characters in turn, or
+    /// its character twice.
     pub fn sample(self, ink: Ink) -> String {
-        if self.braille() && !ink.solid {
+        if let Some(second) = ink.second {
+            format!("{}{second}", ink.glyph)
+        } else if self.braille() && !ink.solid {
             "──".into()
         } else if ink.solid && !ink.glyph.is_ascii_digit() {
             ink.glyph.to_string()

@@ -15,7 +15,7 @@ use ratatui::text::Line;
 use crate::tui::view::status_values::{number, prose};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::wrap_within;
-use crate::tui::view::wrapping::{lines_of, pack, pack_giving_up};
+use crate::tui::view::wrapping::{lines_of, more, pack, pack_giving_up};
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
 /// the verdict when the model holds, which effect dominates (after the verdict, so that a
@@ -184,7 +184,7 @@ pub fn kept_rows<P: Clone + Into<Phrase>>(
         .map(|(_, item)| item.clone().into())
         .collect();
     if !give_up.is_empty() {
-        kept.push(Phrase::whole(format!("+{} more", give_up.len())));
+        kept.push(Phrase::whole(more(give_up.len())));
     }
     pack(&kept, width, "").len() + verdict_rows(p, width)
 }

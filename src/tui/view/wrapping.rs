@@ -44,8 +44,14 @@ pub fn pack<P: Clone + Into<Phrase>>(items: &[P], width: usize, indent: &str) ->
     lines
 }
 
+/// The count of the items a crowded status leaves out, with the key whose window shows them all
+/// (`i`: the status in full).
+pub fn more(n: usize) -> String {
+    format!("+{n} more: i")
+}
+
 /// `pack` in at most `rows` lines: where the items do not fit, the first ones that do with a
-/// count of the others ("+2 more") after them; no line at all when not even that fits.
+/// count of the others ("+2 more: i") after them; no line at all when not even that fits.
 pub fn pack_within<P: Clone + Into<Phrase>>(
     items: &[P],
     width: usize,
@@ -61,7 +67,7 @@ pub fn pack_within<P: Clone + Into<Phrase>>(
         .rev()
         .map(|shown| {
             let mut kept = items[..shown].to_vec();
-            kept.push(Phrase::whole(format!("+{} more", items.len() - shown)));
+            kept.push(Phrase::whole(more(items.len() - shown)));
             pack(&kept, width, indent)
         })
         .find(|lines| lines.len() <= rows)
@@ -69,7 +75,7 @@ pub fn pack_within<P: Clone + Into<Phrase>>(
 }
 
 /// `pack_within`, leaving out first the items at the indices `give_up` names, in its order (their
-/// count "+2 more" after the others), and only then the last ones.
+/// count "+2 more: i" after the others), and only then the last ones.
 pub fn pack_giving_up<P: Clone + Into<Phrase>>(
     items: &[P],
     width: usize,
@@ -87,7 +93,7 @@ pub fn pack_giving_up<P: Clone + Into<Phrase>>(
                 .filter(|(i, _)| !give_up[..n].contains(i))
                 .map(|(_, item)| item.clone())
                 .collect();
-            kept.push(Phrase::whole(format!("+{n} more")));
+            kept.push(Phrase::whole(more(n)));
             pack(&kept, width, "")
         })
         .find(|lines| lines.len() <= rows)

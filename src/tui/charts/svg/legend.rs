@@ -74,7 +74,13 @@ pub fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> 
     let mut y = top + 8;
     for (i, s) in p.series.iter().enumerate() {
         let style = colour(i).stroke_width(2);
-        y = entry(root, (x, y), &curve_lines(s, f), line_sample(root, style))?;
+        let mut lines = curve_lines(s, f);
+        lines.extend(
+            (p.unanswered.iter())
+                .filter(|u| u.curve == i)
+                .map(|u| u.words.clone()),
+        );
+        y = entry(root, (x, y), &lines, line_sample(root, style))?;
     }
     if let Some(m) = &p.markers {
         y = entry(root, (x, y), std::slice::from_ref(&m.name), |x, y| {

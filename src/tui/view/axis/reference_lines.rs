@@ -52,6 +52,7 @@ pub fn with_marks(raster: &Raster, frame: &Frame) -> Raster {
     let ink = Ink {
         glyph: '-',
         solid: true,
+        second: None,
         style: Style::default(),
     };
     let clamped = |v: f64, range: [f64; 2]| frac(v, range).clamp(0.0, 1.0);

@@ -1,5 +1,5 @@
-//! The legend entries of a plot: its curves, markers, reference lines, shaded ranges and pins,
-//! each named as the legend shows it.
+//! The legend entries of a plot: its curves, markers, reference lines, shaded ranges and pins
+//! (each curve of a pin of several), each named as the legend shows it.
 
 use crate::tui::charts::range::{Frame, plotted};
 use crate::tui::charts::readout::short_name;
@@ -9,8 +9,8 @@ use crate::tui::view::theme::RenderOptions;
 use crate::units::format_si;
 
 /// The legend entries of a frame in a plot area `size`: its curves (those off the y range named
-/// with their range, those that cannot be seen with why), markers, reference lines, shaded
-/// ranges and pins.
+/// with their range, those that cannot be seen with why, each followed by where it has no
+/// answer), markers, reference lines, shaded ranges and pins.
 pub(super) fn entries(
     frame: &Frame,
     style: RenderOptions,
@@ -24,7 +24,7 @@ pub(super) fn entries(
         .series
         .iter()
         .enumerate()
-        .map(|(i, s)| {
+        .flat_map(|(i, s)| {
             let ink = match hidden[i] {
                 Some(Hidden::Fails) => style.dim_ink(i),
                 _ => style.series_ink(i),
@@ -52,11 +52,18 @@ pub(super) fn entries(
                     None => s.name.clone(),
                 }
             };
-            Entry {
+            // the points where the curve has no answer: an entry of their own after it, with its
+            // sample ("++ no answer at P >= 1.70 kN/m (11 of 40 loads)")
+            let entry = move |text: String| Entry {
                 sample: style.sample(ink),
                 style: ink.style,
                 text,
-            }
+            };
+            std::iter::once(entry(text)).chain(
+                (plot.unanswered.iter())
+                    .filter(move |u| u.curve == i)
+                    .map(move |u| entry(u.words.clone())),
+            )
         })
         .collect();
     let marker = style.marker_ink();
@@ -127,18 +134,23 @@ pub(super) fn entries(
         style: shade_style,
         text: s.label.clone(),
     }));
-    out.extend(
-        pins.iter()
-            .enumerate()
-            .take(frame.pins.len())
-            .map(|(p, name)| {
-                let ink = style.pin_ink(p, 0);
-                Entry {
-                    sample: style.sample(ink),
-                    style: ink.style,
-                    text: name.clone(),
-                }
-            }),
-    );
+    // a pin of several curves: an entry for each, the first with the pin's name ("1* pin: h =
+    // 50 um, mu* wide", "1+ mu* narrow"), so that its curves are told apart by their marks
+    for (p, (name, pin)) in pins.iter().zip(&frame.pins).enumerate() {
+        let many = pin.series.len() > 1;
+        out.extend(pin.series.iter().enumerate().map(|(i, s)| {
+            let ink = style.pin_ink(p, i);
+            let text = match (many, i) {
+                (false, _) => name.clone(),
+                (true, 0) => format!("{name}, {}", short_name(&s.name)),
+                (true, _) => short_name(&s.name).to_string(),
+            };
+            Entry {
+                sample: style.sample(ink),
+                style: ink.style,
+                text,
+            }
+        }));
+    }
     out
 }

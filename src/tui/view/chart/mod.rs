@@ -47,12 +47,12 @@ fn rasterize(frame: &Frame, style: RenderOptions, plot: Rect) -> Raster {
             raster.line(&fit(&s.points), style.pin_ink(p, i));
         }
     }
-    // the first curve last, on top; then its dim parts over it
+    // the first curve last, on top; each curve's dim parts over it, under the curves before it
     for (i, s) in frame.plot.series.iter().enumerate().rev() {
         raster.line(&fit(&s.points), style.series_ink(i));
-    }
-    for (i, s) in frame.plot.dim.iter().rev() {
-        raster.line(&fit(&s.points), style.dim_ink(*i));
+        for (_, d) in frame.plot.dim.iter().rev().filter(|(j, _)| *j == i) {
+            raster.line(&fit(&d.points), style.dim_ink(i));
+        }
     }
     if let Some(m) = &frame.plot.markers {
         for p in fit(&m.points) {
