@@ -132,7 +132,10 @@ fn a_time_step_replays_the_cached_running_in() {
     );
     let s = screen(&app, 80, 24, PLAIN);
     // `wearlab solve presets/contact-lost.toml --time 3` gives contact.fraction = 0.53125
-    assert!(s.contains("partial contact (fraction 0.5313)  t = 3.00 s"), "{s}");
+    assert!(
+        s.contains("partial contact (fraction 0.5313)  t = 3.00 s"),
+        "{s}"
+    );
     // playing does the same
     press(&mut app, KeyCode::Char(' '));
     let cmds = update(&mut app, Msg::Tick);
