@@ -118,8 +118,9 @@ fn the_operating_point_and_its_verdict_stay_when_the_cursor_reads_pins_at_80x24(
     press(&mut app, KeyCode::Char('x'));
     press(&mut app, KeyCode::Char('c'));
     let s = status(&app, 80, 24);
-    // the cursor's values and the pinned curve's do not all fit in the six rows: counted
-    for shown in ["cursor x = ", "mu* = 0.299822", "valid: ", "+2 more"] {
+    // the cursor's values and the pinned curve's do not all fit in the six rows: counted, with
+    // the key that shows them all
+    for shown in ["cursor x = ", "mu* = 0.299822", "valid: ", "more: i"] {
         assert!(s.contains(shown), "{shown} missing:\n{s}");
     }
     // with room for all of them, nothing is counted as hidden
