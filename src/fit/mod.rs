@@ -188,13 +188,7 @@ pub fn fit_until(
              more values than free parameters"
         )));
     }
-    let model = Model {
-        base: preset,
-        data,
-        free: &free,
-        weights,
-        stop,
-    };
+    let model = Model::new(preset, data, &free, weights, stop);
     let start = DVector::from_iterator(
         p,
         free.iter()

@@ -2,13 +2,14 @@
 //! fitting coordinate, the logarithm for a positive dimensional value), solved at each row's x
 //! through `sweeps::point`, the pipeline of `wearlab solve`, and read for each measured quantity.
 //! Rows at times of the spatial problem are read from one running-in (`spatial::at_times`, the
-//! same pipeline's results at each time) instead of one from t = 0 per row.
+//! same pipeline's results at each time) instead of one from t = 0 per row; under the linear wear
+//! law one running-in serves every k the fit tries (`at_times::Kept`), its time scaled.
 
 use nalgebra::DVector;
 
 use crate::data::DataSet;
 use crate::physics::SolveError;
-use crate::physics::spatial::at_times;
+use crate::physics::spatial::at_times::Kept;
 use crate::physics::spatial::partial::running_in::Stopped;
 use crate::physics::stop::{STOPPED, Stop};
 use crate::preset::{Key, Preset, Problem};
@@ -67,6 +68,7 @@ impl Free {
 }
 
 /// The data, the preset and the free parameters: predictions and weighted residuals.
+#[derive(Debug)]
 pub struct Model<'a> {
     /// The preset the fit starts from.
     pub base: &'a Preset,
@@ -79,9 +81,36 @@ pub struct Model<'a> {
     /// Asked before every row's solve and inside it: once it says so, every prediction fails
     /// at once, so the fit's bounded loops end quickly.
     pub stop: Stop<'a>,
+    /// The running-ins of the linear law met so far, reused for every k (`at_times::Kept`).
+    kept: Kept,
 }
 
-impl Model<'_> {
+impl<'a> Model<'a> {
+    /// The model of `data` by `base` with `free` parameters, `weights` and `stop` as in the
+    /// fields.
+    pub fn new(
+        base: &'a Preset,
+        data: &'a DataSet,
+        free: &'a [Free],
+        weights: Vec<f64>,
+        stop: Stop<'a>,
+    ) -> Model<'a> {
+        Model {
+            base,
+            data,
+            free,
+            weights,
+            stop,
+            kept: Kept::default(),
+        }
+    }
+
+    /// The running-ins stepped from t = 0 and kept so far (`at_times::Kept`; at most
+    /// `at_times::KEPT`): one for a fit of k alone under the linear law.
+    pub fn running_ins_stepped(&self) -> usize {
+        self.kept.len()
+    }
+
     /// The measured values, row by row (each row's columns in file order).
     pub fn observed(&self) -> Vec<f64> {
         (0..self.data.len())
@@ -148,13 +177,14 @@ impl Model<'_> {
             return Err(STOPPED.into());
         }
         let inputs = at.spatial_inputs();
-        let results = at_times::solve_at_times_until(
-            &inputs,
-            &at.spatial_state_at(),
-            &self.data.x.values,
-            self.stop,
-        )
-        .map_err(|e| self.at_line(0, SolveError::from(e)))?;
+        let results = (self.kept)
+            .solve_at_times_until(
+                &inputs,
+                &at.spatial_state_at(),
+                &self.data.x.values,
+                self.stop,
+            )
+            .map_err(|e| self.at_line(0, SolveError::from(e)))?;
         Ok((results.into_iter())
             .map(|r| {
                 r.map(|result| {

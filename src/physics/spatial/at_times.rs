@@ -10,11 +10,17 @@
 //! their error estimate alone, except near the stepping's horizon (100 decay times), which a time
 //! beyond it moves out. The state at each time is read from the steps as `RunningIn::state_at`
 //! reads it.
+//!
+//! `Kept` keeps the linear law's running-ins for problems that differ only in the wear
+//! coefficient, on which the running-in depends only through k t (`RunningIn::scaled_to`): a fit
+//! of k steps one running-in, not one per value of k it tries.
+
+use std::sync::{Arc, Mutex};
 
 use crate::physics::SolveError;
 use crate::physics::limits;
 use crate::physics::spatial::partial::Setup;
-use crate::physics::spatial::partial::running_in::Stopped;
+use crate::physics::spatial::partial::running_in::{RunningIn, Stopped};
 use crate::physics::spatial::pipeline::{self, from_the_run, run_in_for};
 use crate::physics::spatial::result::SpatialResult;
 use crate::physics::spatial::state::{StateAt, state_at};
@@ -30,6 +36,99 @@ pub fn solve_at_times_until(
     times: &[f64],
     stop: Stop,
 ) -> Result<Vec<Result<SpatialResult, Stopped>>, Stopped> {
+    solve_with(inputs, at, times, stop, &|setup, latest| {
+        run_in_for(setup, latest, stop)
+    })
+}
+
+/// Running-ins of the linear wear law kept for problems that differ from theirs only in the
+/// wear coefficient (a fit of k tries many): each such problem's running-in is a kept one with
+/// its time scaled (`RunningIn::scaled_to`), the same steps, instead of one stepped from t = 0.
+/// A nonlinear law's is stepped for each problem.
+#[derive(Debug, Default)]
+pub struct Kept {
+    /// The running-ins, the latest used last (at most `KEPT`).
+    runs: Mutex<Vec<Arc<RunningIn>>>,
+}
+
+/// Running-ins kept at most (each holds at most `running_in::SNAPSHOT_VALUES` shape values).
+pub const KEPT: usize = 4;
+
+impl Kept {
+    /// As [`solve_at_times_until`], the running-in of a linear law scaled from a kept one that
+    /// differs only in the wear coefficient, else stepped and kept.
+    pub fn solve_at_times_until(
+        &self,
+        inputs: &SpatialInputs,
+        at: &StateAt,
+        times: &[f64],
+        stop: Stop,
+    ) -> Result<Vec<Result<SpatialResult, Stopped>>, Stopped> {
+        solve_with(inputs, at, times, stop, &|setup, latest| {
+            if !setup.inputs.linear_wear() {
+                return run_in_for(setup, latest, stop);
+            }
+            if let Some(run) = self.scaled(setup, latest.time_tolerance) {
+                return Ok(run);
+            }
+            let run = run_in_for(setup, latest, stop)?;
+            self.keep(Arc::new(run.clone()));
+            Ok(run)
+        })
+    }
+
+    /// The running-ins kept.
+    pub fn len(&self) -> usize {
+        self.runs.lock().map_or(0, |runs| runs.len())
+    }
+
+    /// True when none is kept.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The running-in of `setup` with `tolerance` scaled from a kept one of the same problem but
+    /// for its wear coefficient (None: none kept).
+    fn scaled(&self, setup: &Setup, tolerance: f64) -> Option<RunningIn> {
+        let found = {
+            let mut runs = self.runs.lock().ok()?;
+            let same = |run: &Arc<RunningIn>| {
+                let kept = &run.setup;
+                let inputs = SpatialInputs {
+                    wear: kept.inputs.wear,
+                    ..setup.inputs.clone()
+                };
+                kept.grid == setup.grid
+                    && run.stepping.is_some_and(|s| s.tolerance == tolerance)
+                    && kept.inputs == inputs
+            };
+            let i = runs.iter().position(same)?;
+            let run = runs.remove(i);
+            runs.push(run.clone());
+            run
+        };
+        found.scaled_to(setup)
+    }
+
+    /// Keeps `run`, forgetting the least recently used beyond `KEPT`.
+    fn keep(&self, run: Arc<RunningIn>) {
+        if let Ok(mut runs) = self.runs.lock() {
+            if runs.len() == KEPT {
+                runs.remove(0);
+            }
+            runs.push(run);
+        }
+    }
+}
+
+/// As [`solve_at_times_until`], the running-in for the latest time from `run_in`.
+fn solve_with(
+    inputs: &SpatialInputs,
+    at: &StateAt,
+    times: &[f64],
+    stop: Stop,
+    run_in: &dyn Fn(&Setup, &StateAt) -> Result<RunningIn, Stopped>,
+) -> Result<Vec<Result<SpatialResult, Stopped>>, Stopped> {
     inputs.validate()?;
     let at_time = |time: f64| StateAt { time, ..*at };
     let refused = |why: String| Stopped::Failed(SolveError::InvalidInput(why));
@@ -42,7 +141,7 @@ pub fn solve_at_times_until(
             return Ok(every_one_refused(checked));
         };
         let setup = Setup::new(inputs, at.grid)?;
-        let run = run_in_for(&setup, &at_time(latest), stop)?;
+        let run = run_in(&setup, &at_time(latest))?;
         return Ok((checked.into_iter())
             .map(|t| from_the_run(&run, None, &at_time(t?), &[], None, stop))
             .collect());
@@ -74,7 +173,7 @@ pub fn solve_at_times_until(
     let Some(latest) = latest(&checked) else {
         return Ok(every_one_refused(checked));
     };
-    let run = run_in_for(&setup, &at_time(latest), stop)?;
+    let run = run_in(&setup, &at_time(latest))?;
     Ok((closed.into_iter())
         .map(|c| {
             let (t, closed) = c?;

@@ -16,6 +16,7 @@
 
 mod extend;
 pub mod nonlinear;
+mod scaled;
 pub mod stepper;
 
 use std::ops::ControlFlow;
