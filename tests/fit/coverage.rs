@@ -1,7 +1,8 @@
 //! The 95 % intervals cover the true values about 95 % of the time: data made by the model with a
 //! known noise over many seeds, fitted, and each interval checked against the truth.
 //! `WEARLAB_FIT_SEEDS=200 cargo test --release --test fit coverage -- --nocapture` runs the 200
-//! seeds of the verification (the figures are in the commit log); `cargo test` runs 40.
+//! seeds of the verification (the figure is in docs/performance.md, Fitting); `cargo test`
+//! runs 40.
 
 use wearlab::fit;
 
