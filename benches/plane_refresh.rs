@@ -1,35 +1,24 @@
-//! A full plane refresh: the operating point, a 201-point profile and a 200-point load sweep.
+//! A full plane refresh: what the screen draws first (the operating point, a 201-point profile
+//! and a 200-point load sweep's curve), the sweep's verdicts that follow it, and the energy
+//! identity of the operating point.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use wearlab::physics::plane::profile::profile;
-use wearlab::physics::plane::sweep::sweep;
-use wearlab::physics::plane::{Model, solve};
-use wearlab::physics::{Spacing, SweepRange};
-use wearlab::preset::bundled;
+
+#[path = "common/refresh.rs"]
+mod refresh;
 
 fn refresh(c: &mut Criterion) {
-    for (file, model) in [
-        ("polymer-coating.toml", Model::Wide),
-        ("thin-strip-winkler.toml", Model::Narrow),
-    ] {
-        let preset = bundled(file).unwrap().unwrap();
-        let inputs = preset.plane_inputs();
-        let loads = SweepRange {
-            points: 200,
-            spacing: Spacing::Log,
-            ..preset.plane.sweep
-        };
-        c.bench_function(&format!("plane_refresh/{}", model.name()), |b| {
-            b.iter(|| {
-                let sol = solve(black_box(&inputs), model).unwrap();
-                let prof = profile(&sol, 201);
-                let sw = sweep(&inputs, model, &loads);
-                black_box((prof, sw))
-            })
+    for r in refresh::refreshes() {
+        c.bench_function(&format!("plane_refresh/{}", r.name), |b| {
+            b.iter(|| black_box(r.curve()))
         });
-        c.bench_function(&format!("plane_energy/{}", model.name()), |b| {
-            let sol = solve(&inputs, model).unwrap();
+        let solved = r.solved();
+        c.bench_function(&format!("plane_sweep_verdicts/{}", r.name), |b| {
+            b.iter(|| black_box(black_box(&solved).clone().judged()))
+        });
+        c.bench_function(&format!("plane_energy/{}", r.name), |b| {
+            let sol = r.point();
             b.iter(|| black_box(wearlab::physics::plane::energy::energy(black_box(&sol))))
         });
     }

@@ -2,24 +2,19 @@
 //! process, for counting instructions under callgrind (docs/performance.md, "Instructions against
 //! the code before the reshaping"): the count of 2N runs less that of N is N runs' work without the
 //! process's start. Usage: `instructions WORKLOAD N`, WORKLOAD one of refresh_wide,
-//! refresh_narrow, curve_wide, curve_with_narrow, map_wide.
+//! refresh_narrow, verdicts_wide, verdicts_narrow, curve_wide, curve_with_narrow, judged_wide,
+//! judged_with_narrow, map_wide.
 
 use std::hint::black_box;
 use std::sync::atomic::AtomicBool;
 
-use wearlab::physics::plane::profile::profile;
-use wearlab::physics::plane::sweep::sweep;
-use wearlab::physics::plane::{Model, solve};
-use wearlab::physics::{Spacing, SweepRange};
-use wearlab::preset::{Preset, bundled};
-use wearlab::sweeps::axis::Axis;
-use wearlab::sweeps::curve::{CurveSpec, curve};
-use wearlab::sweeps::map::{MapSpec, regime_map};
-use wearlab::sweeps::quantity::QuantityKey;
+use wearlab::sweeps::curve::{curve, solve};
+use wearlab::sweeps::map::regime_map;
 
-fn axis(p: &Preset, key: &str, ends: [f64; 2], n: usize) -> Axis {
-    Axis::new(p, p.key(key).unwrap(), ends, n, Spacing::Log).unwrap()
-}
+#[path = "../benches/common/explore_sweeps.rs"]
+mod explore_sweeps;
+#[path = "../benches/common/refresh.rs"]
+mod refresh;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -31,46 +26,29 @@ fn main() {
         std::process::exit(2);
     };
     let never = AtomicBool::new(false);
-    for (file, model, name) in [
-        ("polymer-coating.toml", Model::Wide, "refresh_wide"),
-        ("thin-strip-winkler.toml", Model::Narrow, "refresh_narrow"),
-    ] {
-        if workload != name {
-            continue;
+    for r in refresh::refreshes() {
+        if *workload == format!("refresh_{}", r.name) {
+            (0..count).for_each(|_| drop(black_box(r.curve())));
         }
-        let preset = bundled(file).unwrap().unwrap();
-        let inputs = preset.plane_inputs();
-        let loads = SweepRange {
-            points: 200,
-            spacing: Spacing::Log,
-            ..preset.plane.sweep
-        };
-        for _ in 0..count {
-            let sol = solve(black_box(&inputs), model).unwrap();
-            black_box((profile(&sol, 201), sweep(&inputs, model, &loads)));
+        if *workload == format!("verdicts_{}", r.name) {
+            let solved = r.solved();
+            (0..count).for_each(|_| drop(black_box(solved.clone().judged())));
         }
     }
-    let p = bundled("polymer-coating.toml").unwrap().unwrap();
-    let mu_star = QuantityKey::parse("mu_star", &p).unwrap();
-    let spec = CurveSpec {
-        axis: axis(&p, "material.thickness", [1e-4, 1e-1], 200),
-        quantity: mu_star,
-        models: vec![Model::Wide],
-    };
-    let overlays = CurveSpec {
-        models: vec![Model::Wide, Model::Narrow],
-        ..spec.clone()
-    };
-    let map = MapSpec {
-        x: axis(&p, "plane.load", [1e2, 1e7], 64),
-        y: axis(&p, "material.thickness", [1e-5, 1e-1], 64),
-        quantity: mu_star,
-    };
+    let s = explore_sweeps::explore_sweeps();
+    let unjudged = |spec| solve(&s.preset, spec, (&never).into()).map(|c| c.unjudged());
     for _ in 0..count {
         match workload.as_str() {
-            "curve_wide" => drop(black_box(curve(&p, &spec, &never))),
-            "curve_with_narrow" => drop(black_box(curve(&p, &overlays, &never))),
-            "map_wide" => drop(black_box(regime_map(&p, &map, &never, &mut |_| {}))),
+            "curve_wide" => drop(black_box(unjudged(&s.wide))),
+            "curve_with_narrow" => drop(black_box(unjudged(&s.with_narrow))),
+            "judged_wide" => drop(black_box(curve(&s.preset, &s.wide, &never))),
+            "judged_with_narrow" => drop(black_box(curve(&s.preset, &s.with_narrow, &never))),
+            "map_wide" => drop(black_box(regime_map(
+                &s.preset,
+                &s.map,
+                &never,
+                &mut |_| {},
+            ))),
             _ => {}
         }
     }

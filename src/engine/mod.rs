@@ -22,7 +22,7 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use crate::physics::plane::strip_check::StripCheck;
-use crate::physics::plane::sweep::{EnergySweep, Sweep, energy_sweep, sweep};
+use crate::physics::plane::sweep::{self, EnergySweep, Sweep, energy_sweep};
 use crate::physics::plane::yield_onset::{Strength, YieldCheck};
 use crate::physics::plane::{Model, OperatingPoint, PlaneInputs, operating_point};
 use crate::physics::spatial::harmonic::Evolution;
@@ -236,15 +236,26 @@ impl Engine {
                 return;
             }
         }
-        let mut sweep_of = |m: Model| {
-            self.sweeps.get_or(
-                (unloaded.clone(), m, range),
-                &mut self.counts.load_sweep,
-                || Arc::new(sweep(&unloaded, m, &range)),
-            )
-        };
-        out.sweep = Some(sweep_of(model));
-        out.overlays = others.into_iter().map(|m| (m, sweep_of(m))).collect();
+        // each model's curve is delivered as soon as it is solved; its verdicts, which measure
+        // it against the strip model where the study's estimate doubts it, follow
+        for m in std::iter::once(model).chain(others) {
+            let key = (unloaded.clone(), m, range);
+            let judged = match self.sweeps.get(&key) {
+                Some(judged) => judged,
+                None => {
+                    self.counts.load_sweep += 1;
+                    let solved = sweep::solve(&unloaded, m, &range);
+                    out.put_sweep(model, m, Arc::new(solved.unjudged()));
+                    if !deliver(Output::Plane(out.clone()), false) {
+                        return;
+                    }
+                    let judged = Arc::new(solved.judged());
+                    self.sweeps.insert(key, Arc::clone(&judged));
+                    judged
+                }
+            };
+            out.put_sweep(model, m, judged);
+        }
         if request.energies {
             if !deliver(Output::Plane(out.clone()), false) {
                 return;

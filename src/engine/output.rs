@@ -40,12 +40,26 @@ pub struct PlaneOutput {
     /// The point's largest von Mises stress against the strip's yield stress; None until
     /// computed, without a point, and where the preset gives neither Y nor H.
     pub yield_check: Option<YieldCheck>,
-    /// The preset's model swept over the preset's loads; None until computed.
+    /// The preset's model swept over the preset's loads; None until computed, its verdicts
+    /// not yet measured while `judged` is false.
     pub sweep: Option<Arc<Sweep>>,
     /// The other models' sweeps, when asked for and computed.
     pub overlays: Vec<(Model, Arc<Sweep>)>,
     /// The energy losses along the preset's load sweep, when asked for and computed.
     pub energies: Option<Arc<EnergySweep>>,
+}
+
+impl PlaneOutput {
+    /// Sets the sweep of model `m` (`own`: the preset's model) or replaces it among the overlays.
+    pub(super) fn put_sweep(&mut self, own: Model, m: Model, sweep: Arc<Sweep>) {
+        if m == own {
+            self.sweep = Some(sweep);
+        } else if let Some(o) = self.overlays.iter_mut().find(|(o, _)| *o == m) {
+            o.1 = sweep;
+        } else {
+            self.overlays.push((m, sweep));
+        }
+    }
 }
 
 /// What is known of the spatial problem.

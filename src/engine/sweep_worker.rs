@@ -12,7 +12,7 @@ use crate::engine::footprint::Footprint;
 use crate::engine::latest::{Delivery, LatestJob};
 use crate::preset::Preset;
 use crate::sweeps::Opening;
-use crate::sweeps::curve::{Curve, curve};
+use crate::sweeps::curve::{self, Curve};
 use crate::sweeps::map::{Map, regime_map};
 
 /// A sweep or a map of a preset.
@@ -27,7 +27,7 @@ pub struct SweepRequest {
 /// What is known of a request.
 #[derive(Clone, Debug)]
 pub enum SweepResult {
-    /// The curve (complete).
+    /// The curve (`Curve::judged` false before its verdicts).
     Curve(Arc<Curve>),
     /// The map after a pass (`Map::stride` is 1 once complete).
     Map(Arc<Map>),
@@ -46,20 +46,24 @@ pub struct SweepAnswer {
     pub complete: bool,
 }
 
-/// Computes a request: `on_pass` gets each coarse pass of a map; None when `cancel` was set
-/// before the end.
+/// Computes a request: `on_pass` gets what is known before the end (a curve before its
+/// verdicts, each coarse pass of a map); None when `cancel` was set before the end.
 pub fn explore(
     request: &SweepRequest,
     cancel: &AtomicBool,
-    on_pass: &mut dyn FnMut(&Map),
+    on_pass: &mut dyn FnMut(SweepResult),
 ) -> Option<SweepResult> {
     match &request.job {
         Opening::Curve(spec) => {
-            curve(&request.preset, spec, cancel).map(|c| SweepResult::Curve(c.into()))
+            let solved = curve::solve(&request.preset, spec, cancel.into())?;
+            on_pass(SweepResult::Curve(Arc::new(solved.unjudged())));
+            solved
+                .judged(cancel.into())
+                .map(|c| SweepResult::Curve(c.into()))
         }
         Opening::Map(spec) => regime_map(&request.preset, spec, cancel, &mut |m: &Map| {
             if m.stride > 1 {
-                on_pass(m)
+                on_pass(SweepResult::Map(Arc::new(m.clone())))
             }
         })
         .map(|m| SweepResult::Map(m.into())),
@@ -103,8 +107,8 @@ impl SweepWorker {
                 return deliver(answer(done, true));
             }
             let mut listening = true;
-            let result = explore(&request, cancel, &mut |m| {
-                listening &= deliver(answer(SweepResult::Map(Arc::new(m.clone())), false));
+            let result = explore(&request, cancel, &mut |pass| {
+                listening &= deliver(answer(pass, false));
             });
             if let Some(done) = result {
                 kept.insert((*request).clone(), done.clone());

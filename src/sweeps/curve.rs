@@ -106,6 +106,9 @@ pub struct Curve {
     /// The dimensionless group the swept input is the natural variable of
     /// (`groups::of_input`), evaluated at every point into `Series::group`.
     pub group: Option<QuantityKey>,
+    /// Whether the series' `holds` and `changes` are known: false for the curve delivered before
+    /// its verdicts (`Solved::unjudged`), whose `holds` are None and `changes` empty.
+    pub judged: bool,
 }
 
 /// The verdict at a point: the model holds (plane: `PlanePoint::verdict`, as `wearlab solve`
@@ -197,6 +200,43 @@ fn verdicts(judges: &[Option<&Judge>]) -> Vec<Option<bool>> {
 /// ends within one step of its running-in).
 pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -> Option<Curve> {
     let stop = stop.into();
+    solve(preset, spec, stop)?.judged(stop)
+}
+
+/// A curve's points solved, before their verdicts: the curve can be drawn from it at once, and
+/// the verdicts (strip solves where the study's estimate doubts a plane model, a bisection where
+/// they change) follow (`Solved::judged`).
+pub struct Solved {
+    preset: Preset,
+    axis: Axis,
+    /// What decides the verdict at each point of each series (None where there is no solution).
+    judges: Vec<Vec<Option<Judge>>>,
+    /// The curve without verdicts.
+    curve: Curve,
+}
+
+impl Solved {
+    /// The curve without its verdicts (`judged` false).
+    pub fn unjudged(&self) -> Curve {
+        self.curve.clone()
+    }
+
+    /// The curve with the verdict at every point and where it changes; None when `stop` said so
+    /// before it finished.
+    pub fn judged(mut self, stop: Stop) -> Option<Curve> {
+        for (series, judges) in self.curve.series.iter_mut().zip(&self.judges) {
+            series.holds = verdicts(&judges.iter().map(Option::as_ref).collect::<Vec<_>>());
+            let (axis, x) = (&self.axis, &self.curve.x);
+            series.changes = changes(&self.preset, axis, x, &series.holds, series.model, stop)?;
+        }
+        self.curve.judged = true;
+        Some(self.curve)
+    }
+}
+
+/// Solves every point of the curve, its verdicts not yet judged; None when `stop` said so before
+/// it finished.
+pub fn solve(preset: &Preset, spec: &CurveSpec, stop: Stop) -> Option<Solved> {
     let models: Vec<Option<Model>> = match preset.problem {
         Problem::Plane => spec.models.iter().copied().map(Some).collect(),
         Problem::Spatial => vec![None],
@@ -234,7 +274,7 @@ pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -
             (!stop.now()).then(|| answer(solved))
         })
         .collect();
-    let answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
+    let mut answers: Vec<_> = answers.into_iter().collect::<Option<_>>()?;
     // each model at the preset's own value: where "now" lies and what the curve reads there
     let current = preset.get(spec.axis.key).ok()?;
     let at_current: Vec<Answer> = models
@@ -248,25 +288,33 @@ pub fn curve<'s>(preset: &Preset, spec: &CurveSpec, stop: impl Into<Stop<'s>>) -
         })
         .collect::<Option<_>>()?;
     let mut series = Vec::new();
-    for (m, model) in models.iter().enumerate() {
-        let own = &answers[m * x.len()..(m + 1) * x.len()];
-        let holds = verdicts(&own.iter().map(|a| a.1.as_ref()).collect::<Vec<_>>());
-        let changes = changes(preset, &spec.axis, &x, &holds, *model, stop)?;
+    let mut judges = Vec::new();
+    for (m, model) in models.iter().enumerate().rev() {
+        let own: Vec<Answer> = answers.split_off(m * x.len());
         series.push(Series {
             model: *model,
             y: own.iter().map(|a| a.0.clone()).collect(),
-            holds,
-            changes,
+            holds: vec![None; x.len()],
+            changes: Vec::new(),
             group: own.iter().map(|a| a.2).collect(),
             current_y: at_current[m].0.as_ref().ok().copied(),
             current_group: at_current[m].2,
         });
+        judges.push(own.into_iter().map(|a| a.1).collect());
     }
-    Some(Curve {
-        current,
-        x,
-        series,
-        group,
+    series.reverse();
+    judges.reverse();
+    Some(Solved {
+        preset: preset.clone(),
+        axis: spec.axis,
+        judges,
+        curve: Curve {
+            current,
+            x,
+            series,
+            group,
+            judged: false,
+        },
     })
 }
 

@@ -131,20 +131,21 @@ fn the_operating_point_comes_first_and_overlays_only_when_asked() {
         stages.push((
             out.point.is_ok(),
             out.strip_check.is_some(),
-            out.sweep.is_some(),
+            out.sweep.map(|s| s.judged),
             out.overlays.len(),
             complete,
         ));
         true
     });
     // the status first (point, no sweep yet), then its check against the strip model, then the
-    // strip's own sweep; no overlays asked
+    // strip's own sweep's curve, then the curve with its verdicts; no overlays asked
     assert_eq!(
         stages,
         [
-            (true, false, false, 0, false),
-            (true, true, false, 0, false),
-            (true, true, true, 0, true)
+            (true, false, None, 0, false),
+            (true, true, None, 0, false),
+            (true, true, Some(false), 0, false),
+            (true, true, Some(true), 0, true)
         ]
     );
     assert_eq!(engine.counts.load_sweep, 1);

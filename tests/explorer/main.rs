@@ -3,6 +3,7 @@
 
 mod engine;
 mod explore_cancel;
+mod explore_curve;
 mod explore_map;
 mod map_yield;
 mod tui_monkey;

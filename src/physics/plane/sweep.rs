@@ -22,8 +22,37 @@ pub struct Sweep {
     /// Q2 [N/m].
     pub normal_force: Vec<Option<f64>>,
     /// Whether the model holds at the point (`strip_check::verdict`, as at the operating point;
-    /// measured along the sweep by `sweep_verdicts::holds_along`).
+    /// measured along the sweep by `sweep_verdicts::holds_along`); None where the model has no
+    /// solution, and everywhere while `judged` is false.
     pub valid: Vec<Option<bool>>,
+    /// Whether `valid` holds the verdicts: false for the curve delivered before them
+    /// (`Solved::unjudged`).
+    #[serde(skip)]
+    pub judged: bool,
+}
+
+/// A sweep's solutions, before their verdicts: the curve can be drawn from them at once and the
+/// verdicts, which measure the model against the strip model where the study's estimate doubts
+/// it (strip solves of a few milliseconds each), follow (`Solved::judged`).
+#[derive(Clone, Debug)]
+pub struct Solved {
+    /// P [N/m].
+    load: Vec<f64>,
+    /// The model's solution at each load (None where it has none or fails the checks).
+    solutions: Vec<Option<PlaneSolution>>,
+}
+
+impl Solved {
+    /// The sweep without verdicts (`judged` false, every `valid` None).
+    pub fn unjudged(&self) -> Sweep {
+        gather(self.load.clone(), &self.solutions, None)
+    }
+
+    /// The sweep with the verdict at every point.
+    pub fn judged(self) -> Sweep {
+        let valid = sweep_verdicts::holds_along(&self.solutions);
+        gather(self.load, &self.solutions, Some(valid))
+    }
 }
 
 /// The friction loss and the wear loss over a range of loads, as shares of the external work T
@@ -43,8 +72,13 @@ pub struct EnergySweep {
 /// Solves the model at every load of the sweep (loads P [N/m]) (the inputs' own load is ignored).
 /// A range outside `limits::LINE_LOAD` gives an empty sweep.
 pub fn sweep(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Sweep {
+    solve(inputs, model, loads).judged()
+}
+
+/// The model solved at every load of the sweep, its verdicts not yet measured (`Solved`).
+pub fn solve(inputs: &PlaneInputs, model: Model, loads: &SweepRange) -> Solved {
     let (load, solutions) = solutions(inputs, model, loads);
-    gather(load, &solutions)
+    Solved { load, solutions }
 }
 
 /// The energy losses' shares of T at every load of the sweep, from the same solutions as `sweep`.
@@ -106,7 +140,12 @@ fn solutions(
     (load, solutions)
 }
 
-fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
+/// The sweep of the solutions, with the verdicts given (None: not judged yet).
+fn gather(
+    load: Vec<f64>,
+    solutions: &[Option<PlaneSolution>],
+    valid: Option<Vec<Option<bool>>>,
+) -> Sweep {
     let pick = |f: fn(&PlaneSolution) -> f64| -> Vec<Option<f64>> {
         solutions.iter().map(|s| s.as_ref().map(f)).collect()
     };
@@ -115,7 +154,8 @@ fn gather(load: Vec<f64>, solutions: &[Option<PlaneSolution>]) -> Sweep {
         a: pick(|s| s.a),
         b: pick(|s| s.b),
         normal_force: pick(|s| s.normal_force),
-        valid: sweep_verdicts::holds_along(solutions),
+        judged: valid.is_some(),
+        valid: valid.unwrap_or_else(|| vec![None; solutions.len()]),
         load,
     }
 }

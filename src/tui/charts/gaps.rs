@@ -95,3 +95,14 @@ pub(super) fn failing_runs(
     }
     runs
 }
+
+/// What a curve's legend adds while its verdicts are still being computed (the curve is drawn
+/// before them): nothing once `judged`; for a plane model the validity being measured against the
+/// strip model, for the spatial problem where its contact turns partial being located.
+pub(super) fn pending(judged: bool, plane: bool) -> &'static str {
+    match (judged, plane) {
+        (true, _) => "",
+        (false, true) => " (validity: measuring)",
+        (false, false) => " (contact: locating changes)",
+    }
+}

@@ -122,7 +122,8 @@ fn wear_law(exponent: f64) -> (&'static str, String) {
 }
 
 /// mu* of each model against the load, dim where the model fails its validity check (as the
-/// status judges the operating point), each curve's loads without an answer said in its legend.
+/// status judges the operating point; the legend says when the verdicts are still being
+/// measured), each curve's loads without an answer said in its legend.
 pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFigure> {
     let own = sweep(out)?;
     let model = preset.plane.model;
@@ -132,7 +133,10 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
         .filter(|(m, _)| !(m.needs_finite_thickness() && preset.material.is_half_space()))
         .collect();
     let series = (sweeps.iter())
-        .map(|(m, s)| of_load(format!("mu* {}", m.name()), &s.load, &s.mu_star))
+        .map(|(m, s)| {
+            let pending = super::gaps::pending(s.judged, true);
+            of_load(format!("mu* {}{pending}", m.name()), &s.load, &s.mu_star)
+        })
         .collect();
     let (x, y) = against_load(preset, "mu*", "");
     let mut plot = Plot::new(x, y, series);

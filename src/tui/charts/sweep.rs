@@ -135,10 +135,11 @@ pub fn figure(
                 label: "now".into(),
             }));
         }
+        let pending = super::gaps::pending(curve.judged, model.is_some());
         series.push(Series {
             name: match model {
-                Some(m) => format!("{symbol} {m}"),
-                None => symbol.clone(),
+                Some(m) => format!("{symbol} {m}{pending}"),
+                None => format!("{symbol}{pending}"),
             },
             points: through_now(curve, point, now.zip(s.current_y)),
         });

@@ -3,7 +3,7 @@
 
 use std::sync::atomic::AtomicBool;
 
-use crate::engine::sweep_worker::{SweepAnswer, SweepResult, explore};
+use crate::engine::sweep_worker::{SweepAnswer, explore};
 use ratatui::crossterm::event::KeyCode;
 
 use super::*;
@@ -34,8 +34,8 @@ pub(super) fn explored_seen(
             complete,
         };
         let mut passes = Vec::new();
-        let done = explore(&request, &AtomicBool::new(false), &mut |m| {
-            passes.push(answer(SweepResult::Map(m.clone().into()), false))
+        let done = explore(&request, &AtomicBool::new(false), &mut |pass| {
+            passes.push(answer(pass, false))
         })
         .expect("not cancelled");
         for a in passes {

@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use crate::engine::Engine;
-use crate::engine::sweep_worker::{SweepAnswer, SweepRequest, SweepResult, explore};
+use crate::engine::sweep_worker::{SweepAnswer, SweepRequest, explore};
 use crate::preset::BUNDLED;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -279,9 +279,7 @@ impl Monkey {
                 }
                 stop.store(true, Ordering::Relaxed);
             });
-            let done = explore(&request, &stop, &mut |m| {
-                passes.push(SweepResult::Map(m.clone().into()))
-            });
+            let done = explore(&request, &stop, &mut |pass| passes.push(pass));
             finished.store(true, Ordering::Relaxed);
             done
         });

@@ -119,7 +119,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         _ if done => String::new(),
         Some((a, true)) => match &a.explored {
             SweepResult::Map(m) => format!("  refining (1 point in {})…", m.stride),
-            SweepResult::Curve(_) => "  computing…".into(),
+            SweepResult::Curve(_) => "  judging the verdicts…".into(),
         },
         Some((_, false)) => "  [previous inputs] computing…".into(),
         None => "  computing…".into(),
