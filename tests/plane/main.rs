@@ -11,6 +11,7 @@ mod plane_energy;
 mod plane_fuzz;
 mod plane_general;
 mod plane_general_strip;
+mod plane_general_sweep;
 mod plane_narrow;
 mod plane_narrow_general;
 mod plane_refinement;

@@ -12,13 +12,17 @@ use std::sync::Arc;
 use crate::physics::SolveError;
 use crate::physics::plane::narrow::winkler_beta;
 use crate::physics::plane::{Found, Model, PlaneInputs, PlaneSolution, PressureLaw, Shape};
-use crate::physics::roots::{BRENT_ITERATIONS, bracket_or_why, brent, brent_to};
+use crate::physics::roots::{BRENT_ITERATIONS, bracket_or_why, brent, brent_to, secant_log};
 
 /// Runge-Kutta steps across the contact (the step is also kept below the inverse stiffness
 /// beta/F'(q2)): an error of order (1/STEPS)^4 ~ 2e-12 of the contact's scales.
 const STEPS: f64 = 800.0;
 /// The most steps one shot takes before it gives up.
 const MAX_STEPS: usize = 200_000;
+/// Relative accuracy of the leading end's distance d from the tip (or the face's end).
+const ROOT_TOLERANCE: f64 = 1e-14;
+/// Leading ends the secant steps try before the bracket takes over.
+const SECANT_EVALS: usize = 16;
 
 /// q2 at the nodes of the shot, ascending in x: (x [m], q2 [Pa], q2' [Pa/m]); q2 between two
 /// nodes is their cubic Hermite interpolant (fourth order, as the steps).
@@ -177,6 +181,54 @@ impl Shooter<'_> {
     }
 }
 
+/// The root of the increasing `f` = P(d) - P by a geometric bracket from `start` and Brent's
+/// method; the first error a shot reported into `failure`, if any.
+fn bracketed(
+    start: f64,
+    p: f64,
+    f: impl Fn(f64) -> f64,
+    failure: &std::cell::RefCell<Option<SolveError>>,
+) -> Result<f64, SolveError> {
+    let bracket = bracket_or_why(start, (0.5, 60), (2.0, 200), &f);
+    if let Some(e) = failure.borrow_mut().take() {
+        return Err(e);
+    }
+    let (lo, hi) = bracket.map_err(|why| {
+        SolveError::NoSolution(format!(
+            "the narrow-strip model finds no contact for P = {p:.4e} N/m: {why}"
+        ))
+    })?;
+    let d = brent_to(lo, hi, ROOT_TOLERANCE, &f).ok_or_else(|| {
+        SolveError::NoSolution(format!(
+            "the contact did not converge at P = {p:.4e} N/m (Brent's method, \
+             {BRENT_ITERATIONS} iterations)"
+        ))
+    })?;
+    match failure.borrow_mut().take() {
+        Some(e) => Err(e),
+        None => Ok(d),
+    }
+}
+
+/// Why the root search's contact carries `carried` [N/m] and not the load `p` [N/m], in words for
+/// the shape: a measured profile ends before the contact does; any other shape has no end, and
+/// the search stopped where P(b) jumps.
+fn load_mismatch(shape: &Shape, carried: f64, p: f64) -> SolveError {
+    SolveError::NoSolution(if shape.range().is_some() {
+        format!(
+            "the narrow model carries {carried:.4e} N/m at most within the measured profile, not \
+             P = {p:.4e} N/m: the contact runs off the measured profile; give a profile that \
+             covers it"
+        )
+    } else {
+        format!(
+            "the narrow model's root search ended on a contact that carries {carried:.4e} N/m, \
+             not P = {p:.4e} N/m: the load jumps there as the leading end moves (no contact \
+             carries P on this shape by the shooting)"
+        )
+    })
+}
+
 /// Solves the Winkler problem for any shape and law at the inputs' load.
 pub fn solve(inputs: &PlaneInputs) -> Result<PlaneSolution, SolveError> {
     solve_refined(inputs, 1)
@@ -221,24 +273,16 @@ pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolutio
             f64::NAN
         }
     };
-    let bracket = bracket_or_why(width0 / 2.0, (0.5, 60), (2.0, 200), f);
-    if let Some(e) = failure.borrow_mut().take() {
-        return Err(e);
-    }
-    let (lo, hi) = bracket.map_err(|why| {
-        SolveError::NoSolution(format!(
-            "the narrow-strip model finds no contact for P = {p:.4e} N/m: {why}"
-        ))
-    })?;
-    let d = brent_to(lo, hi, 1e-14, f).ok_or_else(|| {
-        SolveError::NoSolution(format!(
-            "the contact did not converge at P = {p:.4e} N/m (Brent's method, \
-             {BRENT_ITERATIONS} iterations)"
-        ))
-    })?;
-    if let Some(e) = failure.borrow_mut().take() {
-        return Err(e);
-    }
+    // secant steps on ln P against ln d (P grows like d^3 on a parabola), else a bracket and
+    // Brent's method
+    let carried = |d: f64| Some(f(d) + p).filter(|v| v.is_finite());
+    let d = match secant_log(carried, p, width0 / 2.0, 3.0, ROOT_TOLERANCE, SECANT_EVALS) {
+        Some((d, _)) => d,
+        None => {
+            failure.borrow_mut().take();
+            bracketed(width0 / 2.0, p, &f, &failure)?
+        }
+    };
     let b = start + d;
     let shot = shooter.settled(b, scale)?.ok_or_else(|| {
         SolveError::NoSolution(format!(
@@ -247,11 +291,7 @@ pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolutio
     })?;
     let [_, q2, psi, q1, phi, _] = shot.totals;
     if (q2 - phi - p).abs() > 1e-6 * p {
-        return Err(SolveError::NoSolution(format!(
-            "the narrow model carries {:.4e} N/m at most within the measured profile, not P = \
-             {p:.4e} N/m: the contact runs off the measured profile; give a profile that covers it",
-            q2 - phi
-        )));
+        return Err(load_mismatch(&inputs.shape, q2 - phi, p));
     }
     Ok(PlaneSolution::assemble(
         Model::Narrow,
@@ -269,4 +309,37 @@ pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolutio
         },
         PressureLaw::Shooting(Arc::new(Nodes { nodes: shot.nodes })),
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_load_mismatch_names_the_measured_profile_only_for_a_table() {
+        let table = Shape::Table(Arc::new(crate::physics::plane::shape::Table {
+            file: "profile.csv".into(),
+            spline: crate::physics::plane::spline::Spline::new(
+                vec![-1e-3, 0.0, 1e-3],
+                vec![1e-5, 0.0, 1e-5],
+            )
+            .unwrap(),
+        }));
+        let power = Shape::Power {
+            radius: 0.05,
+            exponent: 3.0,
+        };
+        let said = |shape: &Shape| load_mismatch(shape, 5e3, 1e4).to_string();
+        assert!(
+            said(&table).contains("runs off the measured profile"),
+            "{}",
+            said(&table)
+        );
+        let other = said(&power);
+        assert!(!other.contains("profile"), "{other}");
+        assert!(
+            other.contains("5.0000e3 N/m") && other.contains("P = 1.0000e4"),
+            "{other}"
+        );
+    }
 }

@@ -122,19 +122,25 @@ fn solutions(
     }
     let load = loads.values();
     let wide = (valid && closed && model == Model::Wide).then(|| WideConstants::new(inputs));
+    // the general wide solver starts each load from the last one solved (continuation)
+    let mut last: Option<PlaneSolution> = None;
     let solutions: Vec<_> = load
         .iter()
         .map(|&p| {
             let at = inputs.with_load(p);
-            match (model, at.shape.sharp_half_width()) {
+            let sol = match (model, at.shape.sharp_half_width()) {
                 _ if !valid => None,
                 (_, Some(c)) => sharp::solve(&at, model, c).ok(),
                 (Model::Wide, _) if closed => wide::solve_with(wide.as_ref()?, &at).ok(),
-                (Model::Wide, _) => general::answer::solve(&at, model).ok(),
+                (Model::Wide, _) => general::answer::solve_from(&at, last.as_ref()).ok(),
                 (Model::Narrow, _) => solve_narrow(&at).ok(),
                 (Model::Strip, _) => general::answer::solve(&at, model).ok(),
             }
-            .filter(|sol| checks::check(sol).is_ok())
+            .filter(|sol| checks::check(sol).is_ok());
+            if sol.is_some() {
+                last.clone_from(&sol);
+            }
+            sol
         })
         .collect();
     (load, solutions)

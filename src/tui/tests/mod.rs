@@ -46,6 +46,7 @@ mod validity;
 mod verdict_kept;
 mod verdict_sweep;
 mod warned;
+mod wear_law_status;
 mod widgets;
 mod yielding;
 

@@ -7,7 +7,9 @@
 use std::sync::Arc;
 
 use crate::physics::SolveError;
-use crate::physics::plane::general::{NODES, Problem, solve_refined as solve_general};
+use crate::physics::plane::general::{
+    NODES, Problem, Solution, solve_from as solve_general_from, solve_refined as solve_general,
+};
 use crate::physics::plane::strip::{Kernels, kernels_for};
 use crate::physics::plane::{Model, PlaneInputs, PlaneSolution, PressureLaw};
 
@@ -34,6 +36,43 @@ pub fn solve_refined(
         strip: kernels.as_deref().map(|k| k as &dyn Kernels),
     };
     let sol = solve_general(&problem, NODES, factor)?;
+    answer(inputs, model, &problem, sol)
+}
+
+/// The wide model's solution as `solve` gives it, started from `from`, the solution of the same
+/// inputs at another load (a load sweep's previous point; `general::solve_from`); `solve` where
+/// `from` is not the general solver's on the same nodes or the start does not converge.
+pub fn solve_from(
+    inputs: &PlaneInputs,
+    from: Option<&PlaneSolution>,
+) -> Result<PlaneSolution, SolveError> {
+    let problem = Problem {
+        material: inputs.material,
+        friction: inputs.friction_law(),
+        wear: inputs.wear,
+        shape: &inputs.shape,
+        load: inputs.load,
+        strip: None,
+    };
+    let started = from.and_then(|f| match &f.law {
+        PressureLaw::General { pressure, .. } if f.model == Model::Wide => {
+            solve_general_from(&problem, pressure, f.inputs.load).ok()
+        }
+        _ => None,
+    });
+    match started {
+        Some(sol) => answer(inputs, Model::Wide, &problem, sol),
+        None => solve(inputs, Model::Wide),
+    }
+}
+
+/// The general solution `sol` of `problem` (the inputs') as the model's `PlaneSolution`.
+fn answer(
+    inputs: &PlaneInputs,
+    model: Model,
+    problem: &Problem,
+    sol: Solution,
+) -> Result<PlaneSolution, SolveError> {
     inputs.shape.covers(sol.a, sol.b)?;
     let p = &sol.pressure;
     let kinks: Arc<[f64]> = problem

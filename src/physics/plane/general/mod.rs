@@ -21,6 +21,7 @@ use crate::physics::elastic::chi_c12;
 use crate::physics::plane::WearLaw;
 use crate::physics::plane::general::pressure::Pressure;
 use crate::physics::plane::general::system::Discretisation;
+use crate::physics::plane::general::width::Width;
 use crate::physics::plane::laws::FrictionLaw;
 use crate::physics::plane::shape::Punch;
 use crate::physics::plane::strip::{self, Kernels};
@@ -187,48 +188,71 @@ pub fn solve_refined(
     let theta = problem.theta();
     let (near, nodes) = match problem.strip {
         None => {
-            let coarse = Discretisation::new(theta, COARSE_NODES);
-            (width::solve(problem, &coarse, None)?.0, nodes)
+            let coarse = Discretisation::cached(theta, COARSE_NODES);
+            (width::solve(problem, &coarse, None)?, nodes)
         }
         Some(_) => {
             let near = strip_width(problem, theta)?;
             let h = problem.material.thickness;
-            let wanted = strip::nodes_for(near / h).div_ceil(16) * 16;
+            let wanted = strip::nodes_for(near.l / h).div_ceil(16) * 16;
             if wanted > strip::MAX_NODES {
                 return Err(SolveError::NoSolution(format!(
                     "the contact is {:.0} strip thicknesses wide: beyond the {} nodes the strip \
                      model resolves",
-                    near / h,
+                    near.l / h,
                     strip::MAX_NODES
                 )));
             }
             (near, wanted.max(nodes))
         }
     };
-    let d = Discretisation::new(theta, nodes * factor.max(1));
-    let (l, unknowns) = width::solve(problem, &d, Some(near))?;
-    Ok(assemble(problem, unknowns.pressure(&d, problem, l)))
+    let d = Discretisation::cached(theta, nodes * factor.max(1));
+    let found = width::solve(problem, &d, Some(&near))?;
+    Ok(assemble(
+        problem,
+        found.unknowns.pressure(&d, problem, found.l),
+    ))
 }
 
-/// The strip's coarse width [m]: the node count doubled from one that resolves the first guess
+/// `solve` on the half-plane or the wide strip from `from`, the solution of the same problem on
+/// `NODES` nodes at another load `from_load` [N/m] (a load sweep's previous point): the secant
+/// steps on the width start from its width and each width's Newton from its pressure, without
+/// the coarse search. The discrete problem is `solve`'s, and so is the answer, within the
+/// width's tolerance.
+pub fn solve_from(
+    problem: &Problem,
+    from: &Pressure,
+    from_load: f64,
+) -> Result<Solution, SolveError> {
+    let d = Discretisation::cached(problem.theta(), NODES);
+    let near = Width::of(problem, from, from_load);
+    let found = width::solve(problem, &d, Some(&near))?;
+    Ok(assemble(
+        problem,
+        found.unknowns.pressure(&d, problem, found.l),
+    ))
+}
+
+/// The strip's coarse width: the node count doubled from one that resolves the first guess
 /// (16 + 2 L/h, the strip solver's coarse count, at the half-plane-like guess of `width`, which a
 /// strip's width does not exceed) until the width changes by less than 1 % and the nodes resolve
 /// it; a count that does not converge is passed over. At most `strip::MAX_NODES / 2` nodes.
 /// (With too few nodes for L/h the discrete P(L) has roots of its own, at L/h near 6 N.)
-fn strip_width(problem: &Problem, theta: f64) -> Result<f64, SolveError> {
+fn strip_width(problem: &Problem, theta: f64) -> Result<Width, SolveError> {
     let h = problem.material.thickness;
     let guess = width::first_guess(problem)?;
     let first =
         ((16.0 + 2.0 * guess / h).min(strip::MAX_NODES as f64 / 2.0) as usize).div_ceil(16) * 16;
-    let (mut n, mut last, mut why) = (first.max(COARSE_NODES), None::<f64>, None);
+    let (mut n, mut last, mut why) = (first.max(COARSE_NODES), None::<Width>, None);
     while n <= strip::MAX_NODES / 2 {
-        match width::solve(problem, &Discretisation::new(theta, n), last) {
-            Ok((l, _)) => {
-                let settled = last.is_some_and(|p| (l - p).abs() < 1e-2 * l);
+        match width::solve(problem, &Discretisation::cached(theta, n), last.as_ref()) {
+            Ok(found) => {
+                let l = found.l;
+                let settled = last.as_ref().is_some_and(|p| (l - p.l).abs() < 1e-2 * l);
                 if settled && n as f64 >= 16.0 + 2.0 * l / h {
-                    return Ok(l);
+                    return Ok(found);
                 }
-                last = Some(l);
+                last = Some(found);
             }
             Err(e) => {
                 last = None;

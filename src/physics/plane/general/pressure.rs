@@ -43,6 +43,11 @@ impl Pressure {
         }
     }
 
+    /// The rules of its nodes.
+    pub fn rules(&self) -> &Arc<Rules> {
+        &self.rules
+    }
+
     /// The Jacobi nodes t_i in (-1, 1).
     pub fn nodes(&self) -> &[f64] {
         self.rules.nodes()
@@ -55,21 +60,7 @@ impl Pressure {
 
     /// phi at t [Pa], by barycentric interpolation through the nodes.
     pub fn phi_at(&self, t: f64) -> f64 {
-        let (mut num, mut den) = (0.0, 0.0);
-        for ((x, b), bp) in self
-            .nodes()
-            .iter()
-            .zip(self.rules.bary())
-            .zip(&self.bary_phi)
-        {
-            let d = t - x;
-            if d == 0.0 {
-                return bp / b;
-            }
-            num += bp / d;
-            den += b / d;
-        }
-        num / den
+        self.rules.interpolate(&self.bary_phi, &self.phi, t)
     }
 
     /// The weight w(t) = (1-t)^(1/2+theta) (1+t)^(1/2-theta).

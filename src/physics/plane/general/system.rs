@@ -13,7 +13,7 @@
 //! of the nonlinear terms (Pi and F are piecewise smooth), each row divided by its largest entry
 //! before LU, steps halved while the residual grows.
 
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use nalgebra::{DMatrix, DVector};
 
@@ -31,6 +31,9 @@ const NEWTON_TOLERANCE: f64 = 1e-14;
 /// A step this small (relative) that lowers no residual is taken as converged: the residual is
 /// at its round-off floor.
 const ROUND_OFF_STEP: f64 = 1e-10;
+/// Discretisations kept by `Discretisation::cached`: a load sweep asks for the same few (theta,
+/// N) at every point.
+const CACHED: usize = 4;
 
 /// The matrices of one (theta, N): the Cauchy part 1/(t_i - xi_k) and the interpolation of phi
 /// from the nodes to the collocation points times w(xi_k).
@@ -62,6 +65,23 @@ impl Discretisation {
             to_points,
             projection: OnceLock::new(),
         }
+    }
+
+    /// The discretisation with n nodes at theta, built once and kept (the last few used).
+    pub fn cached(theta: f64, n: usize) -> Arc<Discretisation> {
+        static CACHE: OnceLock<Mutex<Vec<Arc<Discretisation>>>> = OnceLock::new();
+        let cache = CACHE.get_or_init(|| Mutex::new(Vec::new()));
+        let mut list = cache.lock().unwrap_or_else(|p| p.into_inner());
+        let hit = list
+            .iter()
+            .position(|d| d.rules.theta().to_bits() == theta.to_bits() && d.len() == n);
+        let d = match hit {
+            Some(i) => list.remove(i),
+            None => Arc::new(Discretisation::new(theta, n)),
+        };
+        list.insert(0, Arc::clone(&d));
+        list.truncate(CACHED);
+        d
     }
 
     /// g' and dg'/ds at the collocation points for the shift s at width l: the values there, or

@@ -68,41 +68,9 @@ impl Collocation {
         self.rules.nodes()
     }
 
-    /// phi at t by barycentric interpolation through the nodes (four independent sums, so that
-    /// the loop vectorizes: the profile and the energy check call it some 10^5 times).
+    /// phi at t by barycentric interpolation through the nodes (`Rules::interpolate`).
     pub fn phi_at(&self, t: f64) -> f64 {
-        let (mut num, mut den) = ([0.0; 4], [0.0; 4]);
-        let nodes = self.nodes().chunks_exact(4);
-        let bary = self.rules.bary().chunks_exact(4);
-        let bary_phi = self.bary_phi.chunks_exact(4);
-        let tails = (nodes.remainder(), bary.remainder(), bary_phi.remainder());
-        for ((x, b), bp) in nodes.zip(bary).zip(bary_phi) {
-            for k in 0..4 {
-                let r = 1.0 / (t - x[k]);
-                num[k] += bp[k] * r;
-                den[k] += b[k] * r;
-            }
-        }
-        for ((x, b), bp) in tails.0.iter().zip(tails.1).zip(tails.2) {
-            let r = 1.0 / (t - x);
-            num[0] += bp * r;
-            den[0] += b * r;
-        }
-        let (num, den) = (
-            (num[0] + num[1]) + (num[2] + num[3]),
-            (den[0] + den[1]) + (den[2] + den[3]),
-        );
-        if num.is_finite() && den.is_finite() {
-            return num / den;
-        }
-        // t is a node (or next to one: 1/(t - x) overflowed)
-        let nearest = self
-            .nodes()
-            .iter()
-            .enumerate()
-            .min_by(|a, b| (t - a.1).abs().total_cmp(&(t - b.1).abs()))
-            .map_or(0, |(j, _)| j);
-        self.phi[nearest]
+        self.rules.interpolate(&self.bary_phi, &self.phi, t)
     }
 
     /// q2 at distance u from the trailing edge [Pa].
