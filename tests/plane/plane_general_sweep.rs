@@ -41,10 +41,22 @@ fn a_wide_sweep_started_from_each_previous_load_is_each_loads_own_solution() {
         spacing: Spacing::Log,
     };
     let cases = [
-        ("power n = 3, capped, wear n = 2, half-plane", inputs(f64::INFINITY, power(0.05, 3.0), 2.0, 2e6)),
-        ("power n = 3, capped, wear n = 2, 1 mm", inputs(1e-3, power(0.05, 3.0), 2.0, 2e6)),
-        ("rounded flat, linear laws, half-plane", inputs(f64::INFINITY, rounded_flat(1e-4, 0.05), 1.0, f64::INFINITY)),
-        ("power n = 1.5, wear n = 3, half-plane", inputs(f64::INFINITY, power(0.05, 1.5), 3.0, f64::INFINITY)),
+        (
+            "power n = 3, capped, wear n = 2, half-plane",
+            inputs(f64::INFINITY, power(0.05, 3.0), 2.0, 2e6),
+        ),
+        (
+            "power n = 3, capped, wear n = 2, 1 mm",
+            inputs(1e-3, power(0.05, 3.0), 2.0, 2e6),
+        ),
+        (
+            "rounded flat, linear laws, half-plane",
+            inputs(f64::INFINITY, rounded_flat(1e-4, 0.05), 1.0, f64::INFINITY),
+        ),
+        (
+            "power n = 1.5, wear n = 3, half-plane",
+            inputs(f64::INFINITY, power(0.05, 1.5), 3.0, f64::INFINITY),
+        ),
     ];
     for (name, at) in cases {
         let swept = sweep(&at, Model::Wide, &loads);
@@ -59,7 +71,10 @@ fn a_wide_sweep_started_from_each_previous_load_is_each_loads_own_solution() {
             for (what, got, want) in pairs {
                 let got = got.unwrap_or_else(|| panic!("{name}: no {what} at P = {p:e}"));
                 let gap = (got - want).abs() / want.abs();
-                assert!(gap < 1e-10, "{name}, P = {p:e}: {what} {got} vs {want} ({gap:e})");
+                assert!(
+                    gap < 1e-10,
+                    "{name}, P = {p:e}: {what} {got} vs {want} ({gap:e})"
+                );
             }
         }
     }

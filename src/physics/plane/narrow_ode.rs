@@ -280,7 +280,7 @@ pub fn solve_refined(inputs: &PlaneInputs, factor: usize) -> Result<PlaneSolutio
         Some((d, _)) => d,
         None => {
             failure.borrow_mut().take();
-            bracketed(width0 / 2.0, p, &f, &failure)?
+            bracketed(width0 / 2.0, p, f, &failure)?
         }
     };
     let b = start + d;

@@ -16,7 +16,6 @@ fn under_a_nonlinear_wear_law_the_status_gives_no_closed_form_bound_or_time() {
     settle(&mut app, cmds);
     for (w, h) in [(80, 24), (120, 40)] {
         let s = screen(&app, w, h, PLAIN);
-        println!("{s}");
         assert!(!s.contains("lower bound"), "{s}");
         assert!(!s.contains("formal bound"), "{s}");
     }
