@@ -1,5 +1,6 @@
 //! Exports keep what the student did: the CSV of a chart holds every curve drawn, the pinned
-//! ones included, and the SVG names every curve its y range cuts (the terminal's "off scale").
+//! ones included, and the SVG names every curve its y range cuts (the terminal's "off scale")
+//! and each pinned curve in its legend.
 
 use ratatui::crossterm::event::KeyCode;
 
@@ -113,9 +114,13 @@ fn the_svg_names_every_curve_its_y_range_cuts_its_pins_too() {
         "{t:?}"
     );
     assert_eq!(t[at("focus") + 1], "overlay");
-    assert_eq!(t[at("inside") + 1], "pin: mu = 0.2");
-    assert!(
-        t[at("pin: mu = 0.2") + 1].starts_with("overlay: off scale, 7"),
+    // one entry per pinned curve, as the terminal's legend has them: the first with the pin's
+    // name, each cut one with its range under it
+    let pin = at("inside") + 1;
+    assert_eq!(
+        t[pin..pin + 2],
+        ["pin: mu = 0.2, focus", "overlay"],
         "{t:?}"
     );
+    assert!(t[pin + 2].starts_with("off scale, 7"), "{t:?}");
 }

@@ -43,13 +43,15 @@ fn many_harmonics_show_how_many_more_and_follow_the_selection() {
     settle(&mut app, cmds);
     let s = screen(&app, 80, 24, PLAIN);
     // 80x24: the certified minimum without its bound, -41.8 kPa (below 0 under a complete
-    // contact it proves nothing), and room for three harmonics' rows under the header
+    // contact it proves nothing), and room for three lines under the header: two rows and the
+    // count of the others with the key that shows them, on its own line (the header has no
+    // room for it)
     assert!(!s.contains("lower bound"), "{s}");
-    assert!(s.contains("phi  +6 more"), "{s}");
+    assert!(s.contains("│+7 more: i "), "{s}");
     assert!(s.contains("│  1 1.571 "), "{s}");
     select(&mut app, "A", Some(8));
     let s = screen(&app, 80, 24, PLAIN);
-    assert!(s.contains("phi  +6 more"), "{s}");
+    assert!(s.contains("│+7 more: i "), "{s}");
     assert!(s.contains("│  8 ") && s.contains("│  9 "), "{s}");
     insta::assert_snapshot!("spatial_nine_harmonics_80x24", s);
 }

@@ -1,5 +1,6 @@
 //! A crowded status counts what it leaves out with the key that shows it ("+2 more: i"), and the
-//! `i` window gives the status in full: the cursor's readout and every value of the point.
+//! `i` window gives the status in full: the cursor's readout, every value of the point and every
+//! harmonic's row.
 
 use ratatui::crossterm::event::KeyCode;
 
@@ -42,4 +43,40 @@ fn what_a_crowded_status_counts_the_i_window_shows() {
     press(&mut app, KeyCode::Char('i'));
     let s = screen(&app, 80, 24, PLAIN);
     assert!(s.contains("the status in full:"), "{s}");
+}
+
+#[test]
+fn the_harmonics_a_crowded_status_counts_the_i_window_lists() {
+    // dispersion.toml with five harmonics added (nine): at 80x24 the status has room for a few
+    // rows, the others counted with the key, in the dimensional table and in groups; `i` lists
+    // all nine under the table's header
+    let mut app = app("dispersion.toml");
+    for _ in 0..5 {
+        press(&mut app, KeyCode::Char('+'));
+    }
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    for dimensionless in [false, true] {
+        if dimensionless {
+            press(&mut app, KeyCode::Char('D'));
+        }
+        let s = screen(&app, 80, 24, PLAIN);
+        assert!(s.contains(" more: i "), "{s}");
+        let full: Vec<String> = about_lines(&app, PLAIN, 76)
+            .iter()
+            .map(|l| l.to_string())
+            .collect();
+        let at = (full.iter())
+            .position(|l| l == "the harmonics in full:")
+            .unwrap_or_else(|| panic!("{full:#?}"));
+        assert!(full[at + 1].trim_start().starts_with("n "), "{full:#?}");
+        for n in 1..=9 {
+            let row = &full[at + 1 + n];
+            assert!(row.starts_with(&format!("{n:>3} ")), "{n}: {full:#?}");
+        }
+        press(&mut app, KeyCode::Char('i'));
+        let s = screen(&app, 80, 24, PLAIN);
+        assert!(s.contains("the harmonics in full:"), "{s}");
+        press(&mut app, KeyCode::Esc);
+    }
 }

@@ -10,7 +10,7 @@ use ratatui::text::Line;
 
 use crate::tui::app::App;
 use crate::tui::charts::contact;
-use crate::tui::view::status_values::{Checks, mu_star, number, per_output, prose, visible};
+use crate::tui::view::status_values::{Checks, mu_star, number, per_output, prose, table_within};
 use crate::tui::view::surface_status;
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::with_validity;
@@ -105,10 +105,24 @@ fn spatial(
         ),
     };
     lines.extend(prose(&Phrase::words(verdict), width, look));
-    let rows: Vec<Vec<Group>> = s.harmonics.iter().map(|h| groups::harmonic(s, h)).collect();
-    let Some(first) = rows.first() else {
+    let Some((header, blocks)) = harmonic_table(out) else {
         return lines;
     };
+    let room = height.saturating_sub(lines.len() + 1);
+    if room == 0 {
+        // no row fits: a header over nothing is left out (the dimensional status does the same)
+        return lines;
+    }
+    lines.extend(table_within(&header, &blocks, selected, room, width, style));
+    lines
+}
+
+/// The harmonics' table in groups: its header (n and each group's symbol) and one row per
+/// harmonic; None without harmonics.
+pub fn harmonic_table(out: &SpatialOutput) -> Option<(String, Vec<Vec<String>>)> {
+    let s = &out.state.solution;
+    let rows: Vec<Vec<Group>> = s.harmonics.iter().map(|h| groups::harmonic(s, h)).collect();
+    let first = rows.first()?;
     // each column as wide as its symbol or its widest value, two spaces apart
     let cells: Vec<Vec<String>> = rows
         .iter()
@@ -126,7 +140,7 @@ fn spatial(
         }
         line.trim_end().to_string()
     };
-    let mut header = line("n", first.iter().map(|g| g.symbol).collect());
+    let header = line("n", first.iter().map(|g| g.symbol).collect());
     let blocks: Vec<Vec<String>> = (cells.iter().enumerate())
         .map(|(n, c)| {
             vec![line(
@@ -135,19 +149,5 @@ fn spatial(
             )]
         })
         .collect();
-    let room = height.saturating_sub(lines.len() + 1);
-    if room == 0 {
-        // no row fits: a header over nothing is left out (the dimensional status does the same)
-        return lines;
-    }
-    let (from, count) = visible(&blocks, selected, room);
-    let hidden = blocks.len() - count;
-    if hidden > 0 {
-        header = format!("{header}  +{hidden} more");
-    }
-    lines.push(Line::styled(header, style.heading()));
-    for block in &blocks[from..from + count] {
-        lines.extend(block.iter().cloned().map(Line::from));
-    }
-    lines
+    Some((header, blocks))
 }

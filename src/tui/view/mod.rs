@@ -9,6 +9,7 @@ pub mod contact_status;
 pub mod fit;
 pub mod form;
 pub mod groups_status;
+pub mod harmonic_table;
 pub mod heatmap;
 pub mod hidden;
 pub mod layout;

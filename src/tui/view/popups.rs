@@ -148,8 +148,8 @@ pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, are
     text_window("help", layout, scroll, frame, area);
 }
 
-/// The preset's name, its file, the status in full (what a crowded status counts as "+2 more:
-/// i"), and its whole description wrapped at spaces to `width`, a blank line before "Look at:"
+/// The preset's name, its file, the status in full and the harmonics' table whole (what a
+/// crowded status counts as "+2 more: i"), and its whole description wrapped at spaces to `width`, a blank line before "Look at:"
 /// and "Try:".
 pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
     let doc = &app.doc;
@@ -181,6 +181,12 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
         lines.push(Line::from(""));
         lines.push(Line::styled("the status in full:", style.heading()));
         lines.extend(pack(&full, width, "  ").into_iter().map(Line::from));
+    }
+    let harmonics = crate::tui::view::harmonic_table::in_full(app);
+    if !harmonics.is_empty() {
+        lines.push(Line::from(""));
+        lines.push(Line::styled("the harmonics in full:", style.heading()));
+        lines.extend(harmonics.into_iter().map(Line::from));
     }
     lines.extend(paragraphs(&doc.preset.description, width));
     lines

@@ -1,6 +1,6 @@
 //! The status panel: the operating point of the shown result, read from that result and its
 //! inputs (never from the form). Values are packed into lines whole, never broken across lines;
-//! harmonics that do not fit are counted ("+N more") and scroll with the selected row.
+//! harmonics that do not fit are counted with the key that shows them ("+N more: i") and scroll with the selected row.
 
 use crate::engine::{Answer, Output, SpatialOutput};
 use crate::phrase::Phrase;
@@ -18,11 +18,11 @@ use crate::tui::charts::range::frames;
 use crate::tui::charts::readout::readout;
 use crate::tui::charts::{Figure, Plot, overlay};
 use crate::tui::on_screen::OnScreen;
-use crate::tui::view::status_values::{Checks, mu_star, number, per_output, visible};
+use crate::tui::view::status_values::{Checks, mu_star, number, per_output, table_within};
 use crate::tui::view::theme::RenderOptions;
 use crate::tui::view::validity_status::{self, with_validity};
 use crate::tui::view::wrapping::{pack, pack_within};
-use crate::tui::view::{contact_status, groups_status, surface_status};
+use crate::tui::view::{contact_status, groups_status, harmonic_table, surface_status};
 use crate::tui::view::{note, wrap};
 
 /// Draws the status of the shown result into `area`.
@@ -238,13 +238,6 @@ fn spatial(
 ) -> Vec<Line<'static>> {
     let st = &out.state;
     let s = &st.solution;
-    // one row per harmonic under a header: n, kh (k for a half-space), 1/beta, c, phi
-    let h = s.inputs.material.thickness;
-    let k_label = if h.is_finite() { "kh" } else { "k [rad/m]" };
-    let header = format!(
-        "{:>3} {k_label:<10}{:<10}{:<12}{}",
-        "n", "1/beta", "c", "phi"
-    );
     // while partial, the closed-form rates are what each harmonic does once contact is complete
     // (under a nonlinear wear law, what it would do under the linear one):
     // said by the line of the time of complete contact (", then:"), else on a line of its own
@@ -268,47 +261,17 @@ fn spatial(
         (lines, _, said) = head(false);
     }
     let own_line = partial && !said;
-    let blocks: Vec<Vec<String>> = s
-        .harmonics
-        .iter()
-        .enumerate()
-        .map(|(n, hs)| {
-            let e = &hs.evolution;
-            let k = hs.initial.wavenumber();
-            let kh = format_si(if h.is_finite() { k * h } else { k }, "");
-            let decay = if e.decay_rate > 0.0 {
-                format_si(1.0 / e.decay_rate, "s")
-            } else {
-                "inf".into()
-            };
-            let c = format_si(e.drift_velocity, "m/s");
-            vec![format!(
-                "{:>3} {kh:<10}{decay:<10}{c:<12}{}",
-                n + 1,
-                number("harmonics.N.phase_lead", e.phase_lead)
-            )]
-        })
-        .collect();
+    let (header, blocks) = harmonic_table::dimensional(out);
     // the header says how many rows do not fit
     let room = height.saturating_sub(lines.len() + 1 + usize::from(own_line));
     if room == 0 {
         // no row fits: a header over nothing (with "+N more") is left out, as in the groups
         return lines;
     }
-    let (first, count) = visible(&blocks, selected, room);
-    let hidden = blocks.len() - count;
-    let more = if hidden > 0 {
-        format!("  +{hidden} more")
-    } else {
-        String::new()
-    };
     if own_line {
         lines.push(Line::styled(after, style.heading()));
     }
-    lines.push(Line::styled(format!("{header}{more}"), style.heading()));
-    for block in &blocks[first..first + count] {
-        lines.extend(block.iter().cloned().map(Line::from));
-    }
+    lines.extend(table_within(&header, &blocks, selected, room, width, style));
     lines
 }
 

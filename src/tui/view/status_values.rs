@@ -10,7 +10,7 @@ use crate::units::format_si;
 use ratatui::text::Line;
 
 use crate::tui::view::theme::RenderOptions;
-use crate::tui::view::wrapping::lines_of;
+use crate::tui::view::wrapping::{lines_of, more};
 
 /// The checks of a plane point that the status shows: against the strip model and for yield.
 pub type Checks<'a> = (Option<&'a StripCheck>, Option<&'a YieldCheck>);
@@ -59,6 +59,42 @@ pub fn prose(text: &Phrase, width: usize, style: ratatui::style::Style) -> Vec<L
         .into_iter()
         .map(|l| Line::styled(l, style))
         .collect()
+}
+
+/// A table's header and as many of its row blocks as fit in `room` lines (the selected one kept
+/// in view), the count of the others after the header with the key that shows them ("+2 more:
+/// i"), or, where the header has no room for it within `width`, on a line of its own after the
+/// rows.
+pub fn table_within(
+    header: &str,
+    blocks: &[Vec<String>],
+    selected: Option<usize>,
+    room: usize,
+    width: usize,
+    style: RenderOptions,
+) -> Vec<Line<'static>> {
+    let (mut first, mut count) = visible(blocks, selected, room);
+    let mut hidden = blocks.len() - count;
+    let beside = format!("{header}  {}", more(hidden));
+    let mut out = Vec::new();
+    let own_line = hidden > 0 && beside.chars().count() > width;
+    if own_line {
+        (first, count) = visible(blocks, selected, room.saturating_sub(1));
+        hidden = blocks.len() - count;
+    }
+    let head = if hidden > 0 && !own_line {
+        beside
+    } else {
+        header.to_string()
+    };
+    out.push(Line::styled(head, style.heading()));
+    for block in &blocks[first..first + count] {
+        out.extend(block.iter().cloned().map(Line::from));
+    }
+    if own_line {
+        out.push(Line::styled(more(hidden), style.heading()));
+    }
+    out
 }
 
 /// Which harmonic blocks fit in `room` lines: (first, count), keeping the selected one in view.

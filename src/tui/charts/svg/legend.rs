@@ -9,6 +9,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::{Area, Chart2d, DATA, DIM, GREY, colour, err, font};
 use crate::tui::charts::Series;
 use crate::tui::charts::range::{Frame, bounds, plotted};
+use crate::tui::charts::readout::short_name;
 use crate::units::format_si;
 
 /// Pixels between two legend lines.
@@ -115,11 +116,13 @@ pub fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> 
             .map_err(err)
         })?;
     }
+    // a pin of several curves: an entry for each in its own colour and the pin's dashes, the
+    // first with the pin's name ("pin: h = 50 um, mu* wide", "mu* narrow"), as the terminal's
+    // legend has them; a pinned curve the frame cuts says so under its name
     for (n, (name, pin)) in pin_names.iter().zip(&f.pins).enumerate() {
         let dash = 2 + 3 * n as u32;
-        let mut lines = vec![name.clone()];
-        // a pinned curve the frame cuts: named under its pin
-        for s in &pin.series {
+        let many = pin.series.len() > 1;
+        for (i, s) in pin.series.iter().enumerate() {
             let of = curve_lines(
                 s,
                 &Frame {
@@ -127,23 +130,29 @@ pub fn legend(root: &Area, chart: &Chart2d, f: &Frame, pin_names: &[String]) -> 
                     ..f.clone()
                 },
             );
+            let title = match (many, i) {
+                (false, _) => name.clone(),
+                (true, 0) => format!("{name}, {}", short_name(&s.name)),
+                (true, _) => short_name(&s.name).to_string(),
+            };
+            let mut lines = vec![title];
             match of.as_slice() {
-                [name, cut] => lines.push(format!("{name}: {cut}")),
+                [_, cut] => lines.push(cut.clone()),
                 [only] if *only != s.name => lines.push(only.clone()),
                 _ => {}
             }
+            y = entry(root, (x, y), &lines, |x, y| {
+                // the pinned curve's colour and its pin's dashes: dash pixels on, 3 off
+                let style = colour(i).mix(0.5).stroke_width(1);
+                (0..22)
+                    .step_by(dash as usize + 3)
+                    .try_for_each(|d| {
+                        let end = (d + dash as i32).min(22);
+                        root.draw(&PathElement::new(vec![(x + d, y), (x + end, y)], style))
+                    })
+                    .map_err(err)
+            })?;
         }
-        y = entry(root, (x, y), &lines, |x, y| {
-            // the pin's dashes: dash pixels on, 3 off
-            let style = colour(0).mix(0.5).stroke_width(1);
-            (0..22)
-                .step_by(dash as usize + 3)
-                .try_for_each(|d| {
-                    let end = (d + dash as i32).min(22);
-                    root.draw(&PathElement::new(vec![(x + d, y), (x + end, y)], style))
-                })
-                .map_err(err)
-        })?;
     }
     Ok(())
 }
