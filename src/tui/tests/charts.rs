@@ -208,7 +208,12 @@ fn the_svg_holds_the_pins_and_the_toggled_axis() {
         Some("wearlab-contact-edges-against-load.svg")
     );
     let t = texts(text);
-    assert!(t.contains(&"pin: R = 50.0 mm".to_string()), "{t:?}");
+    // the pin's two curves each in the legend, the first with the pin's name
+    assert!(
+        t.contains(&"pin: R = 50.0 mm, a (trailing)".to_string()),
+        "{t:?}"
+    );
+    assert!(t.contains(&"b (leading)".to_string()), "{t:?}");
     assert!(t.contains(&"edge [m] (log)".to_string()), "{t:?}");
 }
 
