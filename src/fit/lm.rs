@@ -61,6 +61,34 @@ pub fn jacobian(f: &Residuals, x: &DVector<f64>, r: &DVector<f64>) -> Result<DMa
 /// S is negligible; Err says why not (no residuals at `x0`, no step that lowers S, or
 /// `max_iterations` spent while S still falls).
 pub fn minimize(f: &Residuals, x0: DVector<f64>, max_iterations: usize) -> Result<Minimum, String> {
+    let (m, jacobian_at_x) = descend(f, x0, max_iterations)?;
+    let jacobian = match jacobian_at_x {
+        Some(jacobian) => jacobian,
+        None => jacobian(f, &m.x, &m.r)?,
+    };
+    Ok(Minimum { jacobian, ..m })
+}
+
+/// As [`minimize`], the point and its sum of squares only, for a refit whose Jacobian at the
+/// minimum nobody reads (a profile's, the fit with some parameters held): where the last step
+/// ends the iterations, the Jacobian after it (2 evaluations of `f` per parameter) is not
+/// computed. The point is the one `minimize` finds.
+pub fn minimize_point(
+    f: &Residuals,
+    x0: DVector<f64>,
+    max_iterations: usize,
+) -> Result<(DVector<f64>, f64), String> {
+    let (m, _) = descend(f, x0, max_iterations)?;
+    Ok((m.x, m.sum_of_squares))
+}
+
+/// The iterations of [`minimize`]: the minimum with the last Jacobian computed (of the point
+/// before the last step when the second value is None, else the Jacobian at the minimum).
+fn descend(
+    f: &Residuals,
+    x0: DVector<f64>,
+    max_iterations: usize,
+) -> Result<(Minimum, Option<DMatrix<f64>>), String> {
     let mut x = x0;
     let mut r = f(&x)?;
     let mut s = r.norm_squared();
@@ -71,7 +99,7 @@ pub fn minimize(f: &Residuals, x0: DVector<f64>, max_iterations: usize) -> Resul
         let a = jac.transpose() * &jac;
         let g = jac.transpose() * &r;
         let scale = a.diagonal().max().max(f64::MIN_POSITIVE);
-        let done = |x: DVector<f64>, r: DVector<f64>, s: f64, jacobian| Minimum {
+        let done = |x: DVector<f64>, r: DVector<f64>, s: f64, jacobian: DMatrix<f64>| Minimum {
             x,
             r,
             jacobian,
@@ -79,7 +107,7 @@ pub fn minimize(f: &Residuals, x0: DVector<f64>, max_iterations: usize) -> Resul
             iterations: iteration,
         };
         if g.amax() <= 1e-14 * scale.sqrt() * s.sqrt().max(f64::MIN_POSITIVE) || s == 0.0 {
-            return Ok(done(x, r, s, jac));
+            return Ok((done(x, r, s, jac.clone()), Some(jac)));
         }
         // Marquardt's scaling by diag(J^T J), floored so that a parameter the residuals do not
         // feel still gets a damped (zero) step
@@ -119,7 +147,7 @@ pub fn minimize(f: &Residuals, x0: DVector<f64>, max_iterations: usize) -> Resul
         lambda = Some(l);
         let Some((trial, rt, st, step)) = accepted else {
             // no step lowers S: x is a minimum to the precision of the residuals
-            return Ok(done(x, r, s, jac));
+            return Ok((done(x, r, s, jac.clone()), Some(jac)));
         };
         let small_step = step.amax() <= 1e-10 * (1.0 + x.amax());
         let small_fall = s - st <= 1e-12 * s;
@@ -127,8 +155,7 @@ pub fn minimize(f: &Residuals, x0: DVector<f64>, max_iterations: usize) -> Resul
         r = rt;
         s = st;
         if small_step || small_fall {
-            let jac = jacobian(f, &x, &r)?;
-            return Ok(done(x, r, s, jac));
+            return Ok((done(x, r, s, jac), None));
         }
     }
     Err(format!(

@@ -63,8 +63,8 @@ fn profiled(
         return Ok((r.norm_squared(), others.clone()));
     }
     let f = |o: &DVector<f64>| model.residuals(&with(o, j, value));
-    let m = lm::minimize(&f, others.clone(), REFIT_ITERATIONS)?;
-    Ok((m.sum_of_squares, m.x))
+    let (x, s) = lm::minimize_point(&f, others.clone(), REFIT_ITERATIONS)?;
+    Ok((s, x))
 }
 
 /// The profile range of parameter `j` about the minimum `best`: steps of `step` times `OFFSETS`

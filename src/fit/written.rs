@@ -70,13 +70,13 @@ pub fn values(
         };
         let f = |d: &DVector<f64>| model.residuals(&whole(d));
         let from = DVector::from_iterator(determined.len(), determined.iter().map(|j| best.x[*j]));
-        let refit = lm::minimize(&f, from, lm::MAX_ITERATIONS).map_err(|why| {
+        let (refit, _) = lm::minimize_point(&f, from, lm::MAX_ITERATIONS).map_err(|why| {
             FitError::NoFit(format!(
                 "the fit with the undetermined parameters held cannot be done: {why}"
             ))
         })?;
         for (k, j) in determined.iter().enumerate() {
-            let (fr, c) = (free[*j], refit.x[k]);
+            let (fr, c) = (free[*j], refit[k]);
             let e = &mut estimates[*j];
             e.value = fr.value(c);
             if let Some(se) = standard[*j] {
