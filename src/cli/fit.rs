@@ -159,13 +159,8 @@ fn json(data: &DataSet, f: &Fit, write: Option<&Path>) -> Value {
         .iter()
         .map(|e| {
             let (value, [low, high]) = e.texts();
-            match e.kept_words() {
-                None => format!("{} = {value} (95 %: {low} .. {high})", e.key),
-                Some(kept) => format!(
-                    "{} = {value} ({kept}), not determined: {low} .. {high} fit within the noise",
-                    e.key
-                ),
-            }
+            e.undetermined_words(&e.key.to_string())
+                .unwrap_or_else(|| format!("{} = {value} (95 %: {low} .. {high})", e.key))
         })
         .collect();
     json!({

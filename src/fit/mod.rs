@@ -82,19 +82,31 @@ impl Estimate {
         (text(self.value), self.interval.map(text))
     }
 
-    /// Where an undetermined parameter's written value comes from, in words ("the preset's
-    /// value, kept"); None when determined.
-    pub fn kept_words(&self) -> Option<String> {
+    /// An undetermined parameter in words, named `name` (its symbol or its key): where its
+    /// written value comes from and the range that fits, e.g. "k not determined by these data:
+    /// kept at the preset's 1e-12 1/Pa (any k up to 6.158e-11 1/Pa fits)"; None when determined.
+    pub fn undetermined_words(&self, name: &str) -> Option<String> {
         if self.determined {
-            None
-        } else if self.value == self.start {
-            Some("the preset's value, kept".into())
-        } else {
-            Some(format!(
-                "the value nearest the preset's {} that fits within the noise",
-                format_si_exact(self.start, self.key.param().unit)
-            ))
+            return None;
         }
+        let (value, [low, high]) = self.texts();
+        // a logarithmic parameter's range from 0: it fits down to the end of its scan
+        let fits = if self.interval[0] == 0.0 && self.profile[0] > 0.0 {
+            format!("any {name} up to {high} fits")
+        } else {
+            format!("any {name} from {low} to {high} fits")
+        };
+        let kept = if self.value == self.start {
+            format!("kept at the preset's {value}")
+        } else {
+            format!(
+                "{value}, the value nearest the preset's {} that fits",
+                format_si_exact(self.start, self.key.param().unit)
+            )
+        };
+        Some(format!(
+            "{name} not determined by these data: {kept} ({fits})"
+        ))
     }
 }
 

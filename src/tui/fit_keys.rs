@@ -227,16 +227,13 @@ pub fn fitted(app: &mut App, answer: FitAnswer) -> Vec<Command> {
 }
 
 /// An estimate's line: "mu = 0.29975, 95 % interval 0.2989 .. 0.3006", each number to the
-/// digits the interval supports; an undetermined one says where its value comes from.
+/// digits the interval supports; an undetermined one says where its value comes from and what
+/// fits ("k not determined by these data: kept at the preset's 1e-12 1/Pa (any k up to ...)").
 fn estimate_line(e: &crate::fit::Estimate) -> String {
     let (value, [low, high]) = e.texts();
     let symbol = e.key.symbol();
-    match e.kept_words() {
-        None => format!("{symbol} = {value}, 95 % interval {low} .. {high}"),
-        Some(kept) => {
-            format!("{symbol} = {value}, {kept}: not determined, any value of the range below fits")
-        }
-    }
+    e.undetermined_words(&symbol)
+        .unwrap_or_else(|| format!("{symbol} = {value}, 95 % interval {low} .. {high}"))
 }
 
 /// The report of `fit` to the data `set`, in words.

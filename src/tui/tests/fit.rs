@@ -229,3 +229,20 @@ fn a_key_the_lesson_locks_is_not_freed_and_no_data_no_form() {
         "mu is locked by the lesson: it stays 0.4; a fit cannot free it"
     );
 }
+
+/// A mu typed with many digits (a fit's value pasted in) is written in the status as every
+/// number there is, to four significant digits: "(mu 0.2998)", not its sixteen digits.
+#[test]
+fn the_status_writes_a_long_typed_mu_to_four_digits() {
+    let preset = bundled("polymer-coating.toml")
+        .with_settings(&["friction.coefficient=0.2997513918560902"])
+        .unwrap();
+    let mut app = App::new(preset, None, Places::default());
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    for (w, h) in [(80, 24), (120, 40)] {
+        let s = screen(&app, w, h, PLAIN);
+        assert!(s.contains(" (mu 0.2998)"), "{s}");
+        assert!(!s.contains("0.29975139"), "{s}");
+    }
+}

@@ -119,7 +119,7 @@ pub fn report(
     let lines: Vec<Line> = lines
         .into_iter()
         .map(|l| {
-            if l.contains(", not determined") && !l.starts_with("  ") {
+            if l.contains(" not determined by these data: ") && !l.starts_with("  ") {
                 Line::styled(l, style.error())
             } else {
                 Line::from(l)

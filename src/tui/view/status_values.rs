@@ -37,9 +37,10 @@ pub fn per_output(
 }
 
 /// "mu* = 0.299822 (mu 0.3)": six decimals, so that mu* - mu reads off to 1e-6 (it is often
-/// a few 1e-5).
+/// a few 1e-5); mu as every number of the status (`format_si`), however many digits it was
+/// typed with.
 pub fn mu_star(value: f64, mu: f64) -> String {
-    format!("mu* = {value:.6} (mu {mu})")
+    format!("mu* = {value:.6} (mu {})", format_si(mu, ""))
 }
 
 /// How a dimensionless quantity, named as in `sweeps::groups`, is written wherever a screen
