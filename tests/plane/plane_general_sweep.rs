@@ -4,29 +4,19 @@
 //! within the width's tolerance (1e-13 relative), here to 1e-10 in a, b, mu* and Q2.
 
 use wearlab::physics::plane::sweep::sweep;
-use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw, solve};
-use wearlab::physics::{Friction, Material, Spacing, SweepRange};
+use wearlab::physics::plane::{Model, PlaneInputs, Shape, solve};
+use wearlab::physics::{Spacing, SweepRange};
 
-use crate::plane_general::{power, rounded_flat};
+use crate::plane_general::{laws, material, power, rounded_flat};
 
 fn inputs(thickness: f64, shape: Shape, exponent: f64, shear_strength: f64) -> PlaneInputs {
-    let m = wearlab::physics::elastic::plane_modulus(1e10, 0.3);
+    let k = 0.5 / wearlab::physics::elastic::plane_modulus(1e10, 0.3);
+    let (friction, wear) = laws(0.3, 1e5, shear_strength, k, exponent);
     PlaneInputs {
-        material: Material {
-            youngs_modulus: 1e10,
-            poisson_ratio: 0.3,
-            thickness,
-        },
-        friction: Friction {
-            coefficient: 0.3,
-            adhesion: 1e5,
-        },
+        material: material(thickness),
+        friction: friction.coulomb,
         shear_strength,
-        wear: WearLaw {
-            coefficient: 0.5 / m,
-            exponent,
-            reference_pressure: 1e8,
-        },
+        wear,
         shape,
         load: 1e4,
     }

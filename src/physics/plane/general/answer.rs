@@ -27,14 +27,7 @@ pub fn solve_refined(
     factor: usize,
 ) -> Result<PlaneSolution, SolveError> {
     let kernels = (model == Model::Strip).then(|| kernels_for(inputs.material.poisson_ratio));
-    let problem = Problem {
-        material: inputs.material,
-        friction: inputs.friction_law(),
-        wear: inputs.wear,
-        shape: &inputs.shape,
-        load: inputs.load,
-        strip: kernels.as_deref().map(|k| k as &dyn Kernels),
-    };
+    let problem = problem(inputs, kernels.as_deref().map(|k| k as &dyn Kernels));
     let sol = solve_general(&problem, NODES, factor)?;
     answer(inputs, model, &problem, sol)
 }
@@ -46,14 +39,7 @@ pub fn solve_from(
     inputs: &PlaneInputs,
     from: Option<&PlaneSolution>,
 ) -> Result<PlaneSolution, SolveError> {
-    let problem = Problem {
-        material: inputs.material,
-        friction: inputs.friction_law(),
-        wear: inputs.wear,
-        shape: &inputs.shape,
-        load: inputs.load,
-        strip: None,
-    };
+    let problem = problem(inputs, None);
     let started = from.and_then(|f| match &f.law {
         PressureLaw::General { pressure, .. } if f.model == Model::Wide => {
             solve_general_from(&problem, pressure, f.inputs.load).ok()
@@ -63,6 +49,19 @@ pub fn solve_from(
     match started {
         Some(sol) => answer(inputs, Model::Wide, &problem, sol),
         None => solve(inputs, Model::Wide),
+    }
+}
+
+/// The inputs as the general solver's problem, with the exact strip's kernels (the strip of any
+/// thickness) or None (the wide strip and the half-plane).
+fn problem<'a>(inputs: &'a PlaneInputs, strip: Option<&'a dyn Kernels>) -> Problem<'a> {
+    Problem {
+        material: inputs.material,
+        friction: inputs.friction_law(),
+        wear: inputs.wear,
+        shape: &inputs.shape,
+        load: inputs.load,
+        strip,
     }
 }
 
