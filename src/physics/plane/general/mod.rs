@@ -105,24 +105,34 @@ impl Problem<'_> {
 
     /// Q1 = integral of Pi(q2) [N/m] = mu Q2 + tau0 L minus what the cap takes off.
     pub fn friction_force(&self, p: &Pressure) -> f64 {
+        self.friction_force_split(p, &self.splits(p))
+    }
+
+    /// `friction_force` with the splits of `p` already found (`splits`).
+    pub fn friction_force_split(&self, p: &Pressure, splits: &[f64]) -> f64 {
         let f = &self.friction;
         let coulomb = f.coefficient() * p.normal_force() + f.adhesion() * p.l;
         if !self.capped() {
             return coulomb;
         }
-        let rule = Pressure::rule(&self.splits(p));
+        let rule = Pressure::rule(splits);
         coulomb - p.integrate(&rule, |_, q| f.excess(q))
     }
 
-    /// dQ1/dy_i with y_i = W_i phi_i/m (`system`).
-    pub fn friction_force_gradient(&self, p: &Pressure, d: &Discretisation) -> DVector<f64> {
+    /// dQ1/dy_i with y_i = W_i phi_i/m (`system`), `splits` the splits of `p`.
+    pub fn friction_force_gradient(
+        &self,
+        p: &Pressure,
+        splits: &[f64],
+        d: &Discretisation,
+    ) -> DVector<f64> {
         let (m, half, mu) = (self.m(), 0.5 * p.l, self.friction.coefficient());
         let mut g = DVector::from_element(d.len(), mu * half * m);
         if !self.capped() {
             return g;
         }
         let rules = d.rules();
-        let rule = Pressure::rule(&self.splits(p));
+        let rule = Pressure::rule(splits);
         for (&t, &w) in rule.nodes.iter().zip(&rule.weights) {
             if self.friction.excess(p.at(t)) <= 0.0 {
                 continue;
@@ -275,9 +285,17 @@ fn assemble(problem: &Problem, p: Pressure) -> Solution {
     let rule = Pressure::rule(&problem.splits(&p));
     let shape = problem.shape;
     let f = &problem.friction;
-    let psi = p.integrate(&rule, |x, q| q * shape.slope(x));
-    let phi = p.integrate(&rule, |x, q| f.shear(q) * shape.slope(x));
-    let friction_force = problem.friction_force(&p);
+    let [psi, phi, excess] = p.integrate_each(&rule, |x, q| {
+        let slope = shape.slope(x);
+        [q * slope, f.shear(q) * slope, f.excess(q)]
+    });
+    let coulomb = f.coefficient() * p.normal_force() + f.adhesion() * p.l;
+    // as `Problem::friction_force`, on the same rule
+    let friction_force = if problem.capped() {
+        coulomb - excess
+    } else {
+        coulomb
+    };
     let tangential_force = friction_force + psi;
     Solution {
         a,

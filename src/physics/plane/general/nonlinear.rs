@@ -46,16 +46,17 @@ pub fn at_points(
     (values, jac)
 }
 
-/// Nl at the collocation points projected (module note) for the pressure `p`, whose nodes have
-/// the barycentric weights `bary` and the weights `weights` W_i; with its Jacobian in y.
+/// Nl at the collocation points projected (module note) for the pressure `p` with its splits
+/// `splits` (`Problem::splits`), whose nodes have the barycentric weights `bary` and the weights
+/// `weights` W_i; with its Jacobian in y.
 pub fn projected(
     problem: &Problem,
     projection: &SlopeProjection,
-    p: &Pressure,
+    (p, splits): (&Pressure, &[f64]),
     (bary, weights): (&[f64], &[f64]),
 ) -> (DVector<f64>, DMatrix<f64>) {
     let (n, m) = (weights.len(), problem.m());
-    let (ts, b) = projection.matrix(&problem.splits(p));
+    let (ts, b) = projection.matrix(splits);
     // q2 at the rule's nodes t_j, w(t_j) times phi interpolated, and dq2(t_j)/dy_i
     let mut values = DVector::zeros(ts.len());
     let mut jac = DMatrix::zeros(ts.len(), n);

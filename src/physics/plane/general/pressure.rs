@@ -3,14 +3,13 @@
 //! polynomial through its values at the Gauss–Jacobi nodes; and the integrals over the contact
 //! that the solver and its outputs need, by tanh–sinh rules split where the integrand has a kink.
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
+
+use nalgebra::DVector;
 
 use crate::physics::plane::strip::collocation::Rules;
 use crate::physics::quadrature::{GaussRule, tanh_sinh};
 use crate::physics::roots::brent;
-
-/// Samples along [-1, 1] at which the cap's crossings are looked for.
-const CROSSING_SAMPLES: usize = 256;
 
 /// q2 on the contact: the width, the shift, the edge exponents and phi at the nodes.
 #[derive(Clone, Debug, PartialEq)]
@@ -93,7 +92,8 @@ impl Pressure {
 
     /// The points of (-1, 1), increasing, where an integrand of x has a kink: the punch's kinks
     /// `kinks` [m] inside the contact and the points where `crosses` (a function of q2) changes
-    /// sign, found on a grid and refined by Brent.
+    /// sign, found on the rules' grid (`Rules::crossing_grid`, q2 there by one product with phi)
+    /// and refined by Brent.
     pub fn splits(&self, kinks: &[f64], crosses: Option<&dyn Fn(f64) -> f64>) -> Vec<f64> {
         let mut out: Vec<f64> = kinks
             .iter()
@@ -102,13 +102,11 @@ impl Pressure {
             .collect();
         if let Some(f) = crosses {
             let g = |t: f64| f(self.at(t));
-            let grid: Vec<f64> = (0..=CROSSING_SAMPLES)
-                .map(|i| -1.0 + 2.0 * i as f64 / CROSSING_SAMPLES as f64)
-                .collect();
-            for pair in grid.windows(2) {
-                let (lo, hi) = (pair[0], pair[1]);
-                if (g(lo) > 0.0) != (g(hi) > 0.0) {
-                    out.extend(brent(lo, hi, g));
+            let (grid, on_grid) = self.rules.crossing_grid();
+            let sampled = on_grid * DVector::from_column_slice(&self.phi);
+            for (t, q) in grid.windows(2).zip(sampled.as_slice().windows(2)) {
+                if (f(q[0]) > 0.0) != (f(q[1]) > 0.0) {
+                    out.extend(brent(t[0], t[1], g));
                 }
             }
         }
@@ -121,7 +119,8 @@ impl Pressure {
     /// the nodes away from the ends (spaced some pi h/2 in t) follow a polynomial of 128 nodes
     /// (with 1/16, psi of 128 nodes was 5e-6 of T off on a power punch with n = 1.5).
     pub fn rule(splits: &[f64]) -> GaussRule {
-        let base = tanh_sinh(1.0 / 64.0);
+        static BASE: OnceLock<GaussRule> = OnceLock::new();
+        let base = BASE.get_or_init(|| tanh_sinh(1.0 / 64.0));
         let mut ends = vec![-1.0];
         ends.extend(splits.iter().copied().filter(|t| t.abs() < 1.0));
         ends.push(1.0);
@@ -139,12 +138,25 @@ impl Pressure {
 
     /// Integral over the contact of f(x, q2(x)) dx with the split rule `rule` (from `Pressure::rule`).
     pub fn integrate(&self, rule: &GaussRule, f: impl Fn(f64, f64) -> f64) -> f64 {
+        let [integral] = self.integrate_each(rule, |x, q| [f(x, q)]);
+        integral
+    }
+
+    /// The integrals of each of the K functions f returns, as `integrate` gives each, with q2
+    /// interpolated once per node.
+    pub fn integrate_each<const K: usize>(
+        &self,
+        rule: &GaussRule,
+        f: impl Fn(f64, f64) -> [f64; K],
+    ) -> [f64; K] {
         let half = 0.5 * self.l;
-        rule.nodes
-            .iter()
-            .zip(&rule.weights)
-            .map(|(&t, w)| w * f(self.x(t), self.at(t)))
-            .sum::<f64>()
-            * half
+        let mut sums = [0.0; K];
+        for (&t, w) in rule.nodes.iter().zip(&rule.weights) {
+            let values = f(self.x(t), self.at(t));
+            for (sum, v) in sums.iter_mut().zip(values) {
+                *sum += w * v;
+            }
+        }
+        sums.map(|sum| sum * half)
     }
 }

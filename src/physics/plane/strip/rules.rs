@@ -1,16 +1,21 @@
 //! The Gauss–Jacobi rules of the strip's collocation (`collocation`, docs/physics/plane.md section
 //! 6): nodes and weights for q2 = w phi, w = (1-t)^(1/2+theta) (1+t)^(1/2-theta), the collocation
 //! points (zeros of P_{N+1}^(-1/2-theta, -1/2+theta)), the barycentric weights of the nodes and,
-//! when a two-grid solve first asks, the Jacobi polynomial tables (`two_grid`); kept for the last
-//! few (theta, N) used.
+//! when a two-grid solve first asks, the Jacobi polynomial tables (`two_grid`) and, when the
+//! general solver first asks, the grid on which it looks for the shear cap's crossings; kept for
+//! the last few (theta, N) used.
 
 use std::sync::{Arc, Mutex, OnceLock};
+
+use nalgebra::DMatrix;
 
 use crate::physics::plane::strip::jacobi_transforms::Spectral;
 use crate::physics::quadrature::{GaussRule, gauss_jacobi, jacobi_zeros};
 
 /// Rules kept by `Rules::cached`.
 const CACHED_RULES: usize = 128;
+/// Intervals of the uniform grid on [-1, 1] of `Rules::crossing_grid`.
+const CROSSING_SAMPLES: usize = 256;
 
 /// The Gauss–Jacobi nodes and weights and the collocation points for n unknowns at one theta.
 #[derive(Debug, PartialEq)]
@@ -21,6 +26,8 @@ pub struct Rules {
     points: Vec<f64>,
     /// The Jacobi polynomial tables of the two-grid solve, built when first asked for.
     spectral: OnceLock<Spectral>,
+    /// The crossing grid's points and its matrix, built when first asked for.
+    crossing_grid: OnceLock<(Vec<f64>, DMatrix<f64>)>,
 }
 
 impl Rules {
@@ -32,6 +39,7 @@ impl Rules {
             points: jacobi_zeros(n + 1, -0.5 - theta, -0.5 + theta),
             rule,
             spectral: OnceLock::new(),
+            crossing_grid: OnceLock::new(),
         }
     }
 
@@ -124,6 +132,39 @@ impl Rules {
             .min_by(|a, b| (t - a.1).abs().total_cmp(&(t - b.1).abs()))
             .map_or(0, |(j, _)| j);
         phi[nearest]
+    }
+
+    /// The uniform grid t_j = -1 + 2j/256 on which the general solver looks for the points where
+    /// the shear cap starts to hold, and the matrix of w(t_j) l_i(t_j) (l_i the Lagrange
+    /// polynomials of the nodes, w = (1-t)^(1/2+theta) (1+t)^(1/2-theta)): q2 at the grid is this
+    /// matrix times phi, as barycentric interpolation gives it at each point.
+    pub fn crossing_grid(&self) -> (&[f64], &DMatrix<f64>) {
+        let (grid, matrix) = self.crossing_grid.get_or_init(|| {
+            let theta = self.theta;
+            let grid: Vec<f64> = (0..=CROSSING_SAMPLES)
+                .map(|j| -1.0 + 2.0 * j as f64 / CROSSING_SAMPLES as f64)
+                .collect();
+            let mut matrix = DMatrix::zeros(grid.len(), self.len());
+            for (j, &t) in grid.iter().enumerate() {
+                let weight = ((0.5 + theta) * (-t).ln_1p() + (0.5 - theta) * t.ln_1p()).exp();
+                match self.nodes().iter().position(|x| *x == t) {
+                    Some(i) => matrix[(j, i)] = weight,
+                    None => {
+                        let sum: f64 = self
+                            .nodes()
+                            .iter()
+                            .zip(&self.bary)
+                            .map(|(x, b)| b / (t - x))
+                            .sum();
+                        for (i, (x, b)) in self.nodes().iter().zip(&self.bary).enumerate() {
+                            matrix[(j, i)] = weight * b / (t - x) / sum;
+                        }
+                    }
+                }
+            }
+            (grid, matrix)
+        });
+        (grid, matrix)
     }
 
     /// The Jacobi polynomial tables of these rules (`two_grid`).
