@@ -3,18 +3,20 @@
 //! 1 mm strip, and one with the linear laws on a flat punch with rounded edges; both punches on
 //! the narrow model (a 0.1 mm layer, the power punch with the cap) and on the exact strip (0.1 mm,
 //! no cap: the strip refuses one; (a+b)/h = 15.4 and 4.6, printed). Targets: < 5 ms wide and
-//! narrow, < 20 ms the strip at (a+b)/h <= 20. Then the library's 60-point load sweep
-//! (`plane::sweep`, as the explorer's mu*(P) chart and `wearlab solve`'s sweep: every point with
-//! its validity verdict) from P = 1e3 to 1e5 N/m for both punches on the wide (half-plane) and
-//! narrow models: < 100 ms.
+//! narrow, < 20 ms the strip at (a+b)/h <= 20. Then the library's 60-point load sweep from
+//! P = 1e3 to 1e5 N/m for both punches on the wide (half-plane) and narrow models, in two stages
+//! as the explorer's mu*(P) chart and `wearlab solve`'s sweep take them: the curve
+//! (`general_sweep/*`: `sweep::solve`, the model at every load; target < 100 ms) and its validity
+//! verdicts (`general_sweep_verdicts/*`: `Solved::judged` on the curve solved beforehand, the
+//! strip solves where the study doubts the model).
 //! Case: E = 1e10 Pa, nu = 0.3, R = 0.05 m, c = 0.1 mm, r = 0.05 m, mu = 0.3, tau0 = 1e5 Pa,
 //! k m = 0.5, p0 = 1e8 Pa, P = 1e4 N/m. Measured in CPU time (see benches/strip.rs).
 
 use std::hint::black_box;
 use std::time::Duration;
 
-use criterion::{Criterion, criterion_group, criterion_main};
-use wearlab::physics::plane::sweep::sweep;
+use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
+use wearlab::physics::plane::sweep::solve as solve_sweep;
 use wearlab::physics::plane::{Model, PlaneInputs, Shape, WearLaw, solve};
 use wearlab::physics::{Friction, Material, Spacing, SweepRange};
 
@@ -138,7 +140,8 @@ fn load_sweeps(c: &mut Criterion<CpuTime>) {
         ),
     ];
     for (name, at, model) in cases {
-        let once = sweep(&at, model, &loads);
+        let curve = solve_sweep(&at, model, &loads);
+        let once = curve.clone().judged();
         println!(
             "general_sweep/{name}: {} of {} points solved, {} held",
             once.mu_star.iter().flatten().count(),
@@ -146,7 +149,14 @@ fn load_sweeps(c: &mut Criterion<CpuTime>) {
             once.valid.iter().flatten().filter(|v| **v).count()
         );
         c.bench_function(&format!("general_sweep/{name}"), |b| {
-            b.iter(|| sweep(black_box(&at), model, &loads))
+            b.iter(|| solve_sweep(black_box(&at), model, &loads).unjudged())
+        });
+        c.bench_function(&format!("general_sweep_verdicts/{name}"), |b| {
+            b.iter_batched(
+                || curve.clone(),
+                |solved| solved.judged(),
+                BatchSize::SmallInput,
+            )
         });
     }
 }
