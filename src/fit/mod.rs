@@ -8,6 +8,7 @@
 
 pub mod advice;
 pub mod lm;
+pub mod memo;
 pub mod model;
 pub mod profile;
 pub mod student;

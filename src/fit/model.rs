@@ -3,10 +3,13 @@
 //! through `sweeps::point`, the pipeline of `wearlab solve`, and read for each measured quantity.
 //! Rows at times of the spatial problem are read from one running-in (`spatial::at_times`, the
 //! same pipeline's results at each time) instead of one from t = 0 per row; under the linear wear
-//! law one running-in serves every k the fit tries (`at_times::Kept`), its time scaled.
+//! law one running-in serves every k the fit tries (`at_times::Kept`), its time scaled. Other
+//! rows are solved in parallel, and a point the fit asks for again is not solved again (`memo`).
 
 use nalgebra::DVector;
+use rayon::prelude::*;
 
+use super::memo::Memo;
 use crate::data::DataSet;
 use crate::physics::SolveError;
 use crate::physics::spatial::at_times::Kept;
@@ -83,6 +86,8 @@ pub struct Model<'a> {
     pub stop: Stop<'a>,
     /// The running-ins of the linear law met so far, reused for every k (`at_times::Kept`).
     kept: Kept,
+    /// The predictions at the points evaluated so far (`memo`).
+    memo: Memo,
 }
 
 impl<'a> Model<'a> {
@@ -102,6 +107,7 @@ impl<'a> Model<'a> {
             weights,
             stop,
             kept: Kept::default(),
+            memo: Memo::default(),
         }
     }
 
@@ -140,14 +146,14 @@ impl<'a> Model<'a> {
 
     /// The model's value of each measured value, row by row; Err names the row's line and why the
     /// model has no answer there. Rows at times of the spatial problem share one running-in
-    /// (`at_times`), read at every row's time.
+    /// (`at_times`), read at every row's time; other rows are solved in parallel. A point
+    /// evaluated before is not solved again (`memo`).
     pub fn predictions(&self, theta: &DVector<f64>) -> Result<Vec<f64>, String> {
-        self.predictions_of(self.preset(theta)?)
+        (self.memo).get_or(theta, || self.predictions_of(self.preset(theta)?))
     }
 
     /// As [`Model::predictions`] for the preset `at` (the base with the free parameters set).
     pub fn predictions_of(&self, mut at: Preset) -> Result<Vec<f64>, String> {
-        // one preset for every row: each row assigns the x it was measured at over the last
         let mut out = Vec::with_capacity(self.weights.len());
         if at.problem == Problem::Spatial && Key::of("spatial.time") == Some(self.data.x.key) {
             for (i, point) in self.along_the_running_in(&mut at)?.into_iter().enumerate() {
@@ -156,7 +162,25 @@ impl<'a> Model<'a> {
             }
             return Ok(out);
         }
-        for i in 0..self.data.len() {
+        // the rows in as many runs of consecutive rows as there are threads (rayon), each run with
+        // its own preset; the values joined in row order, the first row without an answer named
+        let rows: Vec<usize> = (0..self.data.len()).collect();
+        let run = rows.len().div_ceil(rayon::current_num_threads()).max(1);
+        let runs: Vec<Result<Vec<f64>, String>> = rows
+            .par_chunks(run)
+            .map(|run| self.rows(at.clone(), run))
+            .collect();
+        for values in runs {
+            out.extend(values?);
+        }
+        Ok(out)
+    }
+
+    /// The predictions of `rows` (a run of consecutive rows) with one preset: each row assigns
+    /// the x it was measured at over the last.
+    fn rows(&self, mut at: Preset, rows: &[usize]) -> Result<Vec<f64>, String> {
+        let mut out = Vec::with_capacity(rows.len() * self.data.measured.len());
+        for &i in rows {
             self.set_x(&mut at, i)?;
             if self.stop.now() {
                 return Err(STOPPED.into());
