@@ -122,8 +122,9 @@ fn solutions(
     }
     let load = loads.values();
     let wide = (valid && closed && model == Model::Wide).then(|| WideConstants::new(inputs));
-    // the general wide solver starts each load from the last one solved (continuation)
-    let mut last: Option<PlaneSolution> = None;
+    // the general wide solver starts each load from the last one solved (continuation), its
+    // width's first step with the slope d ln P/d ln L between the last two
+    let (mut last, mut before): (Option<PlaneSolution>, Option<PlaneSolution>) = (None, None);
     let solutions: Vec<_> = load
         .iter()
         .map(|&p| {
@@ -132,13 +133,15 @@ fn solutions(
                 _ if !valid => None,
                 (_, Some(c)) => sharp::solve(&at, model, c).ok(),
                 (Model::Wide, _) if closed => wide::solve_with(wide.as_ref()?, &at).ok(),
-                (Model::Wide, _) => general::answer::solve_from(&at, last.as_ref()).ok(),
+                (Model::Wide, _) => {
+                    general::answer::solve_from(&at, last.as_ref(), before.as_ref()).ok()
+                }
                 (Model::Narrow, _) => solve_narrow(&at).ok(),
                 (Model::Strip, _) => general::answer::solve(&at, model).ok(),
             }
             .filter(|sol| checks::check(sol).is_ok());
             if sol.is_some() {
-                last.clone_from(&sol);
+                before = std::mem::replace(&mut last, sol.clone());
             }
             sol
         })

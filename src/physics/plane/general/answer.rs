@@ -33,16 +33,22 @@ pub fn solve_refined(
 }
 
 /// The wide model's solution as `solve` gives it, started from `from`, the solution of the same
-/// inputs at another load (a load sweep's previous point; `general::solve_from`); `solve` where
-/// `from` is not the general solver's on the same nodes or the start does not converge.
+/// inputs at another load (a load sweep's previous point; `general::solve_from`), with the slope
+/// d ln P/d ln L between `before` (the point before it) and `from` where both are given; `solve`
+/// where `from` is not the general solver's on the same nodes or the start does not converge.
 pub fn solve_from(
     inputs: &PlaneInputs,
     from: Option<&PlaneSolution>,
+    before: Option<&PlaneSolution>,
 ) -> Result<PlaneSolution, SolveError> {
     let problem = problem(inputs, None);
+    let log_slope = from.zip(before).and_then(|(f, b)| {
+        let k = (f.inputs.load / b.inputs.load).ln() / (f.contact_width() / b.contact_width()).ln();
+        (k.is_finite() && (0.2..=20.0).contains(&k)).then_some(k)
+    });
     let started = from.and_then(|f| match &f.law {
         PressureLaw::General { pressure, .. } if f.model == Model::Wide => {
-            solve_general_from(&problem, pressure, f.inputs.load).ok()
+            solve_general_from(&problem, (pressure, f.inputs.load), log_slope).ok()
         }
         _ => None,
     });

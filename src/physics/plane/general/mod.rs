@@ -226,16 +226,20 @@ pub fn solve_refined(
 
 /// `solve` on the half-plane or the wide strip from `from`, the solution of the same problem on
 /// `NODES` nodes at another load `from_load` [N/m] (a load sweep's previous point): the secant
-/// steps on the width start from its width and each width's Newton from its pressure, without
-/// the coarse search. The discrete problem is `solve`'s, and so is the answer, within the
-/// width's tolerance.
+/// steps on the width start from its width, the first with the slope d ln P/d ln L `log_slope`
+/// where known (a sweep's last two points) and else the first guess's, and each width's Newton
+/// from its pressure, without the coarse search. The discrete problem is `solve`'s, and so is
+/// the answer, within the width's tolerance.
 pub fn solve_from(
     problem: &Problem,
-    from: &Pressure,
-    from_load: f64,
+    (from, from_load): (&Pressure, f64),
+    log_slope: Option<f64>,
 ) -> Result<Solution, SolveError> {
     let d = Discretisation::cached(problem.theta(), NODES);
-    let near = Width::of(problem, from, from_load);
+    let mut near = Width::of(problem, from, from_load);
+    if let Some(k) = log_slope {
+        near.log_slope = k;
+    }
     let found = width::solve(problem, &d, Some(&near))?;
     Ok(assemble(
         problem,
