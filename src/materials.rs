@@ -33,7 +33,7 @@ pub struct MaterialEntry {
 const GPA: f64 = 1e9;
 const MPA: f64 = 1e6;
 /// 1 mm^3/(N m) in 1/Pa.
-const MM3_PER_NM: f64 = 1e-9;
+pub const MM3_PER_NM: f64 = 1e-9;
 
 const fn entry(
     [name, what, sources]: [&'static str; 3],

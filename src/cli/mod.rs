@@ -85,6 +85,9 @@ pub fn settled(
         ExitCode::from(EXIT_INVALID)
     };
     let next = preset.with_settings(settings).map_err(invalid)?;
+    for w in preset::settings_warnings(&next, settings) {
+        say(&format!("warning: {w}"));
+    }
     match preset.locked_change(&next) {
         Some(key) if !unlock => Err(invalid(format!(
             "--set {key}: {key} is locked by the lesson of {}, whose questions are asked at {} = \

@@ -133,7 +133,11 @@ pub const FRICTION: Limit = range("0 <= mu <= 10", 0.0, 10.0);
 /// Adhesive shear stress tau0 [Pa] (the ideal shear strength of the strongest solids is ~1e10).
 pub const ADHESION: Limit = range("0 <= tau0 <= 1e10 (Pa)", 0.0, 1e10);
 /// Wear coefficient k [1/Pa] (severe wear of the softest solids is ~1e-7).
-pub const WEAR: Limit = range("0 <= k <= 0.1 (1/Pa)", 0.0, 0.1);
+pub const WEAR: Limit = range(
+    "0 <= k <= 0.1 (1/Pa; or typed in mm3/Nm, 1 mm3/Nm = 1e-9 1/Pa)",
+    0.0,
+    0.1,
+);
 /// Punch radius R [m]: a nanometre tip to a nearly flat punch.
 pub const RADIUS: Limit = range("1e-9 <= R <= 1e6 (m)", 1e-9, 1e6);
 /// Exponent n of the power punch g = (R/n)(|x|/R)^n (n = 2 is the parabola; above 10 the punch is

@@ -55,7 +55,7 @@ pub use file::{save, save_with, to_toml};
 pub use key::Key;
 pub use lesson::{DEFAULT_TOLERANCE, Lesson, Question, Tolerance, grade};
 pub use params::{Access, PARAMS, Param};
-pub use plausible::warnings;
+pub use plausible::{settings_warnings, warnings};
 pub use save_edited::{Origin, save_edited, saved_text, with_data_files_of};
 pub use save_path::{SaveTarget, resolve_save_path};
 pub use surface_rows::from_file as surface_from_file;

@@ -85,6 +85,24 @@ pub(super) fn suspicious(key: &str, value: f64) -> Option<&'static str> {
         .map(|r| r.why)
 }
 
+/// The warnings of `settings` (`KEY=VALUE`, as `Preset::with_settings` applies them to `preset`)
+/// whose values look like a unit mistake, as a preset file's would be warned of: "--set
+/// wear.coefficient=1e-7: k = 1e-7: ... was a specific wear rate ...".
+pub fn settings_warnings<S: AsRef<str>>(preset: &Preset, settings: &[S]) -> Vec<String> {
+    (settings.iter().map(AsRef::as_ref))
+        .filter_map(|setting| {
+            let (text, _) = setting.split_once('=')?;
+            let key = preset.key(text).ok()?;
+            let value = preset.get(key).ok()?;
+            let why = suspicious(text.trim(), value)?;
+            Some(format!(
+                "--set {setting}: {} = {value:e}: {why}",
+                key.symbol()
+            ))
+        })
+        .collect()
+}
+
 /// A phase within this of a multiple of pi leaves sin(phase) under 1e-9: the harmonic is zero
 /// to round-off.
 const PHASE_TOLERANCE: f64 = 1e-9;

@@ -32,7 +32,7 @@ use crate::physics::plane::Model;
 use crate::physics::plane::dominance::Dominance;
 use crate::physics::plane::verdict_table::VerdictTable;
 use crate::physics::stop::Stop;
-use crate::preset::{Preset, Problem};
+use crate::preset::{Key, Preset, Problem};
 use crate::sweeps::axis::Axis;
 use crate::sweeps::curve::{holds, probe, solve_at_until};
 use crate::sweeps::locate::{Node, Probe, Segment, between, bisect, contour, locate_change};
@@ -80,6 +80,9 @@ pub struct Sample {
 pub enum LineKind {
     /// theta = 0.
     ThetaZero,
+    /// mu* = mu: where the preset's model's mu* - mu changes sign (which effect dominates; on a
+    /// strip of finite thickness apart from theta = 0).
+    MuStarEqualsMu,
     /// Where the model's validity check changes.
     Validity(Model),
     /// Where complete contact is lost (spatial).
@@ -306,15 +309,25 @@ const YIELD_BISECTIONS: usize = 12;
 type Verdict = fn(&Sample) -> Option<bool>;
 
 fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<Line>> {
-    let kinds: Vec<(LineKind, Verdict)> = match preset.problem {
+    // on a half-plane mu* = mu where theta = 0: one line says both
+    let thickness = Key::parse("material.thickness").ok();
+    let half_plane = preset.material.thickness.is_infinite()
+        && [spec.x.key, spec.y.key]
+            .iter()
+            .all(|k| Some(*k) != thickness);
+    let mut kinds: Vec<(LineKind, Verdict)> = match preset.problem {
         Problem::Plane => vec![
             (LineKind::ThetaZero, |s| s.theta.map(|t| t > 0.0)),
+            (LineKind::MuStarEqualsMu, |s| {
+                s.dominance.map(|d| d.mu_star_minus_mu > 0.0)
+            }),
             (LineKind::Validity(Model::Wide), |s| s.wide_holds),
             (LineKind::Validity(Model::Narrow), |s| s.narrow_holds),
             (LineKind::Yield, |s| s.yields),
         ],
         Problem::Spatial => vec![(LineKind::CompleteContact, |s| s.complete)],
     };
+    kinds.retain(|(kind, _)| !(half_plane && *kind == LineKind::MuStarEqualsMu));
     let (xs, ys) = (
         indices(map.x.len(), map.stride),
         indices(map.y.len(), map.stride),
@@ -334,9 +347,15 @@ fn lines(preset: &Preset, spec: &MapSpec, map: &Map, stop: Stop) -> Option<Vec<L
                 return None;
             }
             let u = match kind {
+                // linear between the samples: on the grid's scale, without solving again
                 LineKind::CompleteContact => {
                     let (pa, pb) = (at(a)?.min_pressure?, at(b)?.min_pressure?);
                     (pa / (pa - pb)).clamp(0.0, 1.0)
+                }
+                LineKind::MuStarEqualsMu => {
+                    let excess = |n: Node| Some(at(n)?.dominance?.mu_star_minus_mu);
+                    let (da, db) = (excess(a)?, excess(b)?);
+                    (da / (da - db)).clamp(0.0, 1.0)
                 }
                 // a coarse pass is replaced soon: the middle of the edge is enough
                 _ if map.stride > 1 => 0.5,
@@ -385,6 +404,6 @@ fn verdict_at(
                 .map(|t| (t > 0.0, Some(t)))
         }
         LineKind::Validity(model) => solve(model).map(|p| probe(&p)),
-        LineKind::CompleteContact | LineKind::Yield => None,
+        LineKind::MuStarEqualsMu | LineKind::CompleteContact | LineKind::Yield => None,
     }
 }

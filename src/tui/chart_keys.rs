@@ -122,7 +122,20 @@ pub fn go_to(app: &mut App, text: String) -> Vec<Command> {
             app.ui.mode = Mode::Normal;
             app.say(format!("cursor at {label} = {}", format_si(x, unit)));
         }
-        _ => app.complain(format!("{label} = {} is off the chart", format_si(x, unit))),
+        _ => {
+            let [from, to] = [lo, hi].map(|p| format_si(scale.value_at(p), unit));
+            // the load charts span the form's sweep range, which a wider one needs
+            let wider = match app.doc.preset.problem {
+                crate::preset::Problem::Plane if label == "P" && app.explore.view.is_none() => {
+                    ", the form's P min and P max"
+                }
+                _ => "",
+            };
+            app.complain(format!(
+                "{label} = {} is off the chart: {from} .. {to}{wider}",
+                format_si(x, unit)
+            ))
+        }
     }
     Vec::new()
 }

@@ -21,6 +21,8 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     app.ui.message = None;
     if let Some(left) = left_the_table(&previous, &app.doc.preset, &change) {
         app.say(left);
+    } else if let Some(chosen) = chosen_from_the_table(&app.doc.preset, &change) {
+        app.say(chosen);
     } else if app.ui.expanded {
         // the form is hidden: say what changed
         app.say(format!("{}: {} -> {}", change.name, change.from, change.to));
@@ -32,6 +34,32 @@ pub fn apply(app: &mut App, next: Preset, change: Change) -> Vec<Command> {
     app.doc.dirty = app.doc.edited();
     app.fit();
     vec![app.request()]
+}
+
+/// Where the material row took a table entry: what it set, and the entry's typical friction and
+/// wear against steel, which it leaves to the friction and wear rows (they belong to the pair,
+/// not to the material).
+fn chosen_from_the_table(after: &Preset, change: &Change) -> Option<String> {
+    let row = Key::of("material.name")?;
+    if change.name != row.symbol() {
+        return None;
+    }
+    let entry = crate::materials::named(&form::show(after, &row))?;
+    let strengths = [
+        (entry.strength.yield_strength, ", Y"),
+        (entry.strength.hardness, ", H"),
+    ];
+    let set: String = (strengths.iter())
+        .filter(|(value, _)| value.is_some())
+        .map(|(_, name)| *name)
+        .collect();
+    Some(format!(
+        "{}: E, nu{set} set; typical against steel, dry: mu {}, k {} mm3/Nm (not set: type them \
+         on the mu and k rows)",
+        entry.name,
+        crate::units::format_si(entry.friction, ""),
+        crate::units::format_si(entry.wear_rate / crate::materials::MM3_PER_NM, ""),
+    ))
 }
 
 /// Where a value typed over a table material's (E, nu, Y or H: each is the table's) makes the

@@ -172,7 +172,9 @@ pub fn export(path: PathBuf, text: String, overwrite: bool) -> Msg {
     }
     let written = preset::write_atomically(&path, Links::Follow, |f| f.write_all(text.as_bytes()));
     let result = written.map(|_| ()).map_err(|e| e.to_string());
-    Msg::Exported(path, result)
+    // the message names the folder too: a relative name is relative to where wearlab started
+    let shown = std::path::absolute(&path).unwrap_or(path);
+    Msg::Exported(shown, result)
 }
 
 /// The program's answers to the preset's lesson questions, each at the question's inputs, as

@@ -262,7 +262,7 @@ pub const BINDINGS: [Binding; 26] = [
     ),
     binding(
         &[(ch('M'), Action::Map)],
-        "M", "regime map: a quantity over two inputs, coarse first then refined, with the lines theta = 0 and validity of the wide and narrow models (spatial: complete contact); x, [ ] { } move a cursor that reads it",
+        "M", "regime map: a quantity over two inputs, coarse first then refined, with the lines theta = 0, mu* = mu (finite thickness) and validity of the wide and narrow models (spatial: complete contact); x, [ ] { } move a cursor that reads it",
         ("M", "map", "", 6), ALL,
     ),
     binding(
@@ -302,7 +302,7 @@ pub const BINDINGS: [Binding; 26] = [
     ),
     binding(
         &[(ch('i'), Action::About)],
-        "i", "about this preset: its name and whole description, and the status in full: every value of the point and of the cursor's readout, which a crowded status counts as '+2 more: i' (Up/Down, PgUp/PgDn scroll; Esc closes)",
+        "i", "about this preset: its name and whole description, the status in full (every value of the point and of the cursor's readout, every validity line) and a crowded chart's legend in full, which the status and the chart count as '+2 more: i' (Up/Down, PgUp/PgDn scroll; Esc closes)",
         ("i", "about", "", 5), ALL,
     ),
     binding(

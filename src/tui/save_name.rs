@@ -29,14 +29,15 @@ pub fn accept(app: &mut App, buffer: String) -> Vec<Command> {
 
 /// Marks an edited preset before it is saved, so that a copy never passes for the original:
 /// its description starts with what changed since it was opened (`Edited from "<name>": mu 0.1
-/// -> 0.3.`) and its name ends in "(edited)".
+/// -> 0.3.`) and that the text after it was written for the values as opened, and its name ends
+/// in "(edited)".
 fn with_provenance(doc: &mut Document) {
     let changed = form::differences(&doc.opened, &doc.preset);
     if changed.is_empty() {
         return;
     }
     let line = format!(
-        "Edited from \"{}\": {}.",
+        "Edited from \"{}\": {}.\n{STALE}",
         doc.opened.name,
         changed.join(", ")
     );
@@ -48,6 +49,10 @@ fn with_provenance(doc: &mut Document) {
         p.name = format!("{}{EDITED}", p.name);
     }
 }
+
+/// What an edited copy's description says of the text it keeps from the original.
+pub const STALE: &str =
+    "The notes below were written for the values as opened and may not hold for these.";
 
 /// The end of an edited copy's name.
 const EDITED: &str = " (edited)";

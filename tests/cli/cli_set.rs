@@ -130,3 +130,31 @@ fn a_wear_coefficient_in_mm3_per_newton_metre_is_the_same_as_in_one_over_pascal(
     assert_eq!(si.0, 0, "{}", si.2);
     assert_eq!(quoted, si);
 }
+
+#[test]
+fn set_warns_of_a_value_that_looks_like_a_unit_mistake_as_a_file_does() {
+    // k = 1e-7 1/Pa: 0.1 m of wear per metre at 1 MPa (Archard: h = k p s), the plausibility
+    // rule's "more than 1 mm"; in a file the same value gives the same warning
+    let text = std::fs::read_to_string("presets/polymer-coating.toml").unwrap();
+    let edited = text.replace("coefficient = 2.0e-11", "coefficient = 1.0e-7");
+    assert_ne!(edited, text);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("edited.toml");
+    std::fs::write(&path, edited).unwrap();
+    let (_, _, by_file) = run(&["solve", path.to_str().unwrap()]);
+    let (code, _, by_set) = run(&[
+        "solve",
+        "presets/polymer-coating.toml",
+        "--set",
+        "wear.coefficient=1e-7",
+    ]);
+    let why = "was a specific wear rate in mm3/Nm written as 1/Pa?";
+    assert!(by_file.contains(why), "{by_file}");
+    assert!(
+        by_set.contains("warning: --set wear.coefficient=1e-7: k = 1e-7: more"),
+        "{by_set}"
+    );
+    assert!(by_set.contains(why), "{by_set}");
+    // a warning, not a refusal: the answer comes or the physics refuses it, never exit 2
+    assert_ne!(code, 2, "{by_set}");
+}

@@ -16,7 +16,7 @@ fn deviation(contact_width: f64, mu_star_minus_mu: f64) -> Deviation {
 fn estimated(d: Deviation) -> StripCheck {
     StripCheck::Estimated {
         why: "the exact strip model is not run beyond (a+b)/h = 90".into(),
-        estimate: d,
+        estimate: Some(d),
     }
 }
 
@@ -54,5 +54,20 @@ fn an_agreement_is_said_as_one_and_a_failure_as_off() {
         estimated(inside).describe(Model::Narrow).to_string(),
         "narrow: estimated to match the exact strip solution within 0.1 % in contact width, \
          0.4 % in mu* - mu (the exact strip model is not run beyond (a+b)/h = 90)"
+    );
+    // where the study estimates nothing (a punch it does not cover), no number is said
+    let none = StripCheck::Estimated {
+        why: "the exact strip model has no answer here".into(),
+        estimate: None,
+    };
+    assert_eq!(
+        none.describe_short().unwrap().to_string(),
+        "not measured against the exact strip"
+    );
+    let long = none.describe(Model::Narrow).to_string();
+    assert!(
+        long.starts_with("narrow: not measured against the exact strip solution, nor estimated")
+            && !long.contains('%'),
+        "{long}"
     );
 }

@@ -144,6 +144,17 @@ fn polymer_coating_wears_a_little_less_than_friction_pushes() {
     let sweep = &p.plane.sweep;
     let ends = [sweep.min, sweep.max].map(|load| at(&p, load, p.plane.model).mu_star);
     assert!(ends[1] < ends[0], "{ends:?}");
+    // "mu* rises above mu at k = 3.85e-11 1/Pa (wear now dominates, a < b), a little before
+    // theta changes sign at k = 4.05e-11": each sign changes within 0.5 % of the quoted k
+    let with_k = |k: f64| {
+        let mut q = p.clone();
+        q.wear = k;
+        at(&q, q.plane.load, q.plane.model)
+    };
+    let [below, above] = [0.995, 1.005].map(|f| with_k(3.85e-11 * f));
+    assert!(below.mu_star < 0.3 && above.mu_star > 0.3 && above.a < above.b);
+    let [below, above] = [0.995, 1.005].map(|f| with_k(4.05e-11 * f));
+    assert!(below.theta.unwrap() > 0.0 && above.theta.unwrap() < 0.0);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! point of a load sweep.
 
 use crate::physics::plane::criteria::MU_STAR_TOLERANCE;
-use crate::physics::plane::{PlaneSolution, PressureLaw};
+use crate::physics::plane::{Model, PlaneSolution, PressureLaw};
 use crate::physics::{SolveError, check_finite};
 
 /// Relative size of a negative collocation pressure that is still round-off.
@@ -86,8 +86,10 @@ pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
     if sol.a < 0.0 || sol.b < 0.0 {
         return fail(format!(
             "the contact zone [-a, b] = [{:.4e}, {:.4e}] m does not contain the punch tip x = 0: \
-             the contact sits on the punch's flank, outside the model, which holds the tip",
-            -sol.a, sol.b
+             the contact sits on the punch's flank, outside the model, which holds the tip{}",
+            -sol.a,
+            sol.b,
+            off_tip_hint(sol)
         ));
     }
     let share = (p - sol.normal_force).abs() / p;
@@ -103,6 +105,32 @@ pub fn check(sol: &PlaneSolution) -> Result<(), SolveError> {
         ));
     }
     Ok(())
+}
+
+/// What may have driven a contact off the punch tip, where the inputs say: a contact wider than
+/// the coating is thick (|a+b| > h) under the wide model, whose thickness correction is
+/// first-order in (a+b)/h; else an adhesion, a first-order term of the load balance.
+fn off_tip_hint(sol: &PlaneSolution) -> String {
+    let inputs = &sol.inputs;
+    let (tau0, p, h) = (
+        inputs.friction.adhesion,
+        inputs.load,
+        inputs.material.thickness,
+    );
+    if sol.model == Model::Wide && sol.contact_width().abs() > h {
+        format!(
+            "; |a + b|/h = {:.3} > 1: the coating is too thin for the wide model, try the strip \
+             model (plane.model=strip)",
+            sol.contact_width().abs() / h
+        )
+    } else if tau0 > 0.0 {
+        format!(
+            "; the adhesion tau0 = {tau0:.4e} Pa enters the load balance P = Q2 - mu psi - \
+             tau0 Delta_g (P = {p:.4e} N/m) as a first-order term: try a smaller tau0"
+        )
+    } else {
+        String::new()
+    }
 }
 
 /// Why the pressure law is negative somewhere, if it is. The wide law c u^(1/2-theta)

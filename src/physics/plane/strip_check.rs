@@ -32,8 +32,9 @@ pub enum StripCheck {
     Estimated {
         /// Why the strip model was not run (too wide to be cheap, or it has no answer).
         why: String,
-        /// The estimated deviation.
-        estimate: Deviation,
+        /// The estimated deviation; None where the study estimates nothing (a punch or laws it
+        /// does not cover, inputs outside it).
+        estimate: Option<Deviation>,
     },
 }
 
@@ -58,9 +59,13 @@ fn measured_with(
 ) -> StripCheck {
     let h = sol.inputs.material.thickness;
     let lambda = sol.contact_width() / h;
-    let estimated = |why: String| StripCheck::Estimated {
-        why,
-        estimate: estimate(sol).estimated_error,
+    let estimated = |why: String| {
+        let study = estimate(sol);
+        let unstudied = study.reasons.iter().any(|r| r.aspect == Aspect::Unstudied);
+        StripCheck::Estimated {
+            why,
+            estimate: (!unstudied).then_some(study.estimated_error),
+        }
     };
     if sol.model == Model::Strip {
         return StripCheck::Exact;
@@ -137,7 +142,18 @@ impl StripCheck {
             StripCheck::Measured(d) => lead
                 .then_words("off the exact strip solution by")
                 .then_phrase(percentages(d)),
-            StripCheck::Estimated { why, estimate } if estimate.within_tolerance() => lead
+            StripCheck::Estimated {
+                why,
+                estimate: None,
+            } => lead
+                .then_words(
+                    "not measured against the exact strip solution, nor estimated for these inputs",
+                )
+                .then_words(&format!("({why})")),
+            StripCheck::Estimated {
+                why,
+                estimate: Some(estimate),
+            } if estimate.within_tolerance() => lead
                 .then_words("estimated to match the exact strip solution within")
                 .then_phrase(percentages(estimate))
                 .then_words(&format!("({why})")),
@@ -145,7 +161,10 @@ impl StripCheck {
                 .then_words("contact and mu* exact at sharp corners, pressure within")
                 .then(within(*pressure))
                 .then_words("of the exact strip solution (middle half of the face)"),
-            StripCheck::Estimated { why, estimate } => lead
+            StripCheck::Estimated {
+                why,
+                estimate: Some(estimate),
+            } => lead
                 .then_words("estimated off by")
                 .then_phrase(percentages(estimate))
                 .then_words(&format!("({why})")),
@@ -177,7 +196,13 @@ impl StripCheck {
         };
         let (lead, d) = match self {
             StripCheck::Measured(d) if d.within_tolerance() => return agreement("within", d),
-            StripCheck::Estimated { estimate, .. } if estimate.within_tolerance() => {
+            StripCheck::Estimated { estimate: None, .. } => {
+                return Some(Phrase::words("not measured against the exact strip"));
+            }
+            StripCheck::Estimated {
+                estimate: Some(estimate),
+                ..
+            } if estimate.within_tolerance() => {
                 return agreement("est. within", estimate);
             }
             StripCheck::Measured(d) if !d.within_tolerance() => ("off exact strip", d),
@@ -188,7 +213,10 @@ impl StripCheck {
                         .then_words("of the exact strip"),
                 );
             }
-            StripCheck::Estimated { estimate, .. } => ("est. off exact strip", estimate),
+            StripCheck::Estimated {
+                estimate: Some(estimate),
+                ..
+            } => ("est. off exact strip", estimate),
             _ => return None,
         };
         Some(

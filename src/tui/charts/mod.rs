@@ -121,6 +121,9 @@ pub struct Plot {
     pub dim: Vec<(usize, Series)>,
     /// The legend's name of the dim parts.
     pub dim_label: String,
+    /// The dim parts are verdicts the validity study does not give (a punch or laws it does not
+    /// cover), not failures: a curve dim throughout is "not judged", not "fails".
+    pub unjudged: bool,
     /// Measured points drawn over the curves (an overlaid data file), setting the ranges with
     /// the focus curves.
     pub data: Vec<Measured>,
@@ -161,6 +164,7 @@ impl Plot {
             shaded: Vec::new(),
             dim: Vec::new(),
             dim_label: String::new(),
+            unjudged: false,
             data: Vec::new(),
             resolution: 0.0,
             fraction: false,

@@ -140,15 +140,23 @@ pub(super) fn mu_star(preset: &Preset, out: &PlaneOutput) -> Result<Figure, NoFi
         .collect();
     let (x, y) = against_load(preset, "mu*", "");
     let mut plot = Plot::new(x, y, series);
+    // the study judges the parabola with the linear laws only: elsewhere its verdicts are none
+    let unjudged = !preset.plane_inputs().is_classical();
+    let verdict = if unjudged { "not judged" } else { "fails" };
     for (i, (m, s)) in sweeps.iter().enumerate() {
         let point = |k: usize| Some((s.load[k], s.mu_star[k]?));
-        let fails = format!("{} fails", m.name());
+        let fails = format!("{} {verdict}", m.name());
         plot.dim
             .extend(gaps::failing_runs(i, &fails, &s.valid, point));
         plot.unanswered
             .extend(gaps::unanswered(i, &s.load, &s.mu_star, &plot.x, "loads"));
     }
-    plot.dim_label = super::sweep::dim_label(preset.problem).into();
+    plot.dim_label = if unjudged {
+        "dim: not judged (the validity study covers the parabola with the linear laws)".into()
+    } else {
+        super::sweep::dim_label(preset.problem).into()
+    };
+    plot.unjudged = unjudged;
     plot.focus = 1;
     plot.markers = point(out).ok().map(|p| Series {
         name: "now".into(),

@@ -105,6 +105,7 @@ pub fn figure(
     let mut series = Vec::new();
     let mut dim = Vec::new();
     let mut x_marks = Vec::new();
+    let mut unanswered = Vec::new();
     for (i, s) in curve.series.iter().enumerate() {
         let model = s.model.map(|m| m.name());
         // the x of a point or of a mark: the input's value, or in groups the model's own group
@@ -143,6 +144,12 @@ pub fn figure(
             },
             points: through_now(curve, point, now.zip(s.current_y)),
         });
+        // the points without an answer, named on the swept input's axis (they have no group)
+        let values: Vec<Option<f64>> = s.y.iter().map(|y| y.as_ref().ok().copied()).collect();
+        let input = x_axis(spec.axis.key, spec.axis.range.spacing);
+        unanswered.extend(super::gaps::unanswered(
+            i, &curve.x, &values, &input, "points",
+        ));
         // each run of points where the verdict fails, as its own dim piece
         let fails = model.map_or_else(String::new, |m| format!("{m} fails"));
         dim.extend(super::gaps::failing_runs(i, &fails, &s.holds, point));
@@ -185,6 +192,7 @@ pub fn figure(
     x_marks.sort_by(|a, b| a.at.total_cmp(&b.at));
     plot.x_marks = x_marks;
     plot.dim = dim;
+    plot.unanswered = unanswered;
     plot.dim_label = dim_label(problem).into();
     plot.fraction = quantity.name == "contact.fraction";
     // against mu itself the reference is the diagonal mu* = mu, a curve over the swept range

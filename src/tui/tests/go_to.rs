@@ -38,7 +38,12 @@ fn g_sends_the_cursor_to_a_typed_x_and_a_reading_between_points_says_so() {
     press(&mut app, KeyCode::Enter);
     assert!(matches!(app.ui.mode, Mode::GoTo(_)));
     let s = screen(&app, 120, 40, PLAIN);
-    assert!(s.contains("P = 1.00 MN/m is off the chart"), "{s}");
+    assert!(s.contains("P = 1.00 MN/m is off the chart:"), "{s}");
+    // the chart's range and what sets it (the message wraps at 120 columns)
+    assert_eq!(
+        super::update::message(&app),
+        "P = 1.00 MN/m is off the chart: 100 N/m .. 100 kN/m, the form's P min and P max"
+    );
     press(&mut app, KeyCode::Esc);
     assert!(matches!(app.ui.mode, Mode::Normal));
 }

@@ -83,8 +83,11 @@ fn a_students_copy_keeps_the_instructors_text() {
         .replacen("\"Week 3\"", "\"Week 3 (edited)\"", 1)
         .replacen(
             "description = \"A coating on steel: look at mu*.\"",
-            "description = \"\"\"\nEdited from \"Week 3\": mu 0.1 -> 0.3.\nA coating on steel: look at \
-             mu*.\"\"\"",
+            &format!(
+                "description = \"\"\"\nEdited from \"Week 3\": mu 0.1 -> 0.3.\n{}\nA coating on \
+                 steel: look at mu*.\"\"\"",
+                crate::tui::save_name::STALE
+            ),
             1,
         )
         .replacen("coefficient = 0.1 ", "coefficient = 0.3 ", 1);

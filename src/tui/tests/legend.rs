@@ -119,3 +119,63 @@ fn no_legend_or_label_covers_a_curve_on_any_bundled_chart() {
         }
     }
 }
+
+#[test]
+fn a_legend_that_does_not_fit_is_folded_into_a_count_never_cut() {
+    use crate::tui::view::legend::{fold, lines_needed};
+    // six entries of 22 columns ("** 0nnnnnnnnnnnnnnnnnn"): beside a 43-column title one, then
+    // two to a 48-column line
+    let all = entries(6, 18);
+    assert_eq!(lines_needed(&all, 43, 48), 4);
+    let texts = |e: Vec<Entry>| e.into_iter().map(|e| e.text).collect::<Vec<_>>();
+    assert_eq!(texts(fold(&all, 43, 48, 4)), texts(all.clone()));
+    // in two lines: two entries whole and the count of the four left out, with the key
+    let two = fold(&all, 43, 48, 2);
+    assert!(lines_needed(&two, 43, 48) <= 2);
+    assert_eq!(
+        texts(two),
+        [
+            all[0].text.clone(),
+            all[1].text.clone(),
+            "+4 more: i".into()
+        ]
+    );
+    // an entry wider than a line is counted rather than cut
+    assert_eq!(texts(fold(&entries(1, 60), 43, 48, 2)), ["+1 more: i"]);
+}
+
+#[test]
+fn a_crowded_chart_counts_its_legend_and_i_lists_it_whole() {
+    use ratatui::crossterm::event::KeyCode;
+    // hard-coating-strip's mu* chart (three models, a failing one, a gap) pinned, then drawn at
+    // twice mu: at 80x24 the pin's three curves do not fit beside the others'
+    let mut app = app("hard-coating-strip.toml");
+    app.ui.chart = Chart::Plane(crate::tui::charts::PlaneChart::MuStar);
+    let cmds = app.start();
+    settle(&mut app, cmds);
+    press(&mut app, KeyCode::Char('c'));
+    select(&mut app, "mu", None);
+    let cmds = press(&mut app, KeyCode::Char('L'));
+    settle(&mut app, cmds);
+    app.ui.screen = Rect::new(0, 0, 80, 24);
+    let s = screen(&app, 80, 24, PLAIN);
+    let chart: Vec<&str> = (s.lines())
+        .take_while(|l| !l.contains("operating point"))
+        .collect();
+    assert!(chart.iter().any(|l| l.contains(" more: i")), "{s}");
+    // every entry whole: none ends cut at the chart's border
+    let full = crate::tui::view::legend_full::in_full(&app, PLAIN);
+    for name in ["mu* strip", "mu* wide", "mu* narrow", "pin: mu = 0.3"] {
+        assert!(full.iter().any(|e| e.contains(name)), "{name}: {full:?}");
+    }
+    let about: Vec<String> = crate::tui::view::popups::about_lines(&app, PLAIN, 78)
+        .iter()
+        .map(|l| l.to_string())
+        .collect();
+    let heading = about
+        .iter()
+        .position(|l| l == "the chart's legend in full:");
+    let listed = &about[heading.expect("the heading") + 1..];
+    assert!(full.iter().all(|e| listed.contains(e)), "{about:?}");
+    insta::assert_snapshot!("folded_legend_80x24", s);
+}

@@ -10,6 +10,7 @@ use crate::materials::{CUSTOM, MATERIALS};
 use crate::preset::Key;
 use crate::tui::charts::export::caption;
 use crate::tui::form;
+use crate::units::format_si;
 
 fn shown(app: &App, symbol: &str) -> String {
     let row = app.rows().into_iter().find(|r| r.param().symbol == symbol);
@@ -44,6 +45,22 @@ fn choosing_a_material_sets_its_values_and_typing_one_makes_it_custom() {
         ) - k * 7.5e9)
             .abs()
             < 1e-9 * k * 7.5e9
+    );
+    // the message names what was set and the table's friction and wear, which it leaves alone
+    let said = app.ui.message.as_ref().map(|m| m.text.clone());
+    let wear = format_si(steel.wear_rate / crate::materials::MM3_PER_NM, "");
+    assert_eq!(
+        said,
+        Some(format!(
+            "{}: E, nu, H set; typical against steel, dry: mu {}, k {wear} mm3/Nm (not set: \
+             type them on the mu and k rows)",
+            steel.name,
+            format_si(steel.friction, "")
+        ))
+    );
+    assert_eq!(
+        (app.doc.preset.wear, app.doc.preset.friction.coefficient),
+        (k, 0.3)
     );
     let text = caption(&app.doc.preset, 200).join(" ");
     assert!(

@@ -64,3 +64,34 @@ fn where_a_model_fails_its_curve_is_dim() {
     assert!(s.contains(",, mu* wide: fails over the whole range"), "{s}");
     assert!(s.contains(",, no answer at P >= 1.70 kN/m"), "{s}");
 }
+
+#[test]
+fn the_sweep_chart_names_the_points_without_an_answer_as_the_mu_star_chart_does() {
+    // hard-coating-strip's sweep (`v`, Enter): mu* against P, 50 loads from 100 N/m to 10 kN/m
+    // on a log axis, P_k = 100 * 100^(k/49). `wearlab solve presets/hard-coating-strip.toml
+    // --set plane.model=wide --set plane.load=...` answers at P_29 = 1526.4 N/m (exit 0) and
+    // not at P_30 = 1676.8 N/m (exit 3: the contact does not contain the punch tip), so the
+    // wide curve has no answer at the last 20 of the 50 loads
+    let mut app = solved("hard-coating-strip.toml");
+    press(&mut app, KeyCode::Char('v'));
+    let cmds = press(&mut app, KeyCode::Enter);
+    super::explore::explored(&mut app, &cmds);
+    let words = "no answer at P >= 1.68 kN/m (20 of 50 points)";
+    for (w, h) in [(80, 24), (120, 40)] {
+        let s = screen(&app, w, h, PLAIN);
+        assert!(s.contains(&format!(",, {words}")), "{w}x{h}\n{s}");
+    }
+    // the dimensionless view names them on the swept input too: they have no group
+    press(&mut app, KeyCode::Char('D'));
+    let s = screen(&app, 120, 40, PLAIN);
+    assert!(s.contains(words), "{s}");
+    // and so does its SVG (`E`), under the wide curve's name
+    let cmds = press(&mut app, KeyCode::Char('E'));
+    let (_, text) = exported(&cmds);
+    let t = super::charts::texts(text);
+    let at = t
+        .iter()
+        .position(|x| x == "mu* wide")
+        .unwrap_or_else(|| panic!("{t:?}"));
+    assert!(t[at + 1..].iter().take(2).any(|x| x == words), "{t:?}");
+}

@@ -103,13 +103,19 @@ fn every_warning_is_short_and_those_that_do_not_fit_are_counted() {
         assert!(warnings.iter().all(|w| s.contains(w)), "{s}");
     }
     assert!(small.contains("off exact strip: width 78 %"), "{small}");
-    // in one row (the cursor's readout and pins take the others), the first reason: the verdict
+    // in one row (the cursor's readout and pins take the others), the first reason: the verdict,
     let point = operating_point(&app.doc.preset.plane_inputs(), Model::Wide, 11).unwrap();
     let one: Vec<String> = validity_status::lines(&point, None, PLAIN, 80, 1)
         .iter()
         .map(|l| l.to_string())
         .collect();
-    assert_eq!(one, ["! outside the tolerances: use the strip model"]);
+    // and after it, outside the row (the status's border), the count of what is left out
+    assert_eq!(one.len(), 2, "{one:?}");
+    assert_eq!(one[0], "! outside the tolerances: use the strip model");
+    assert!(
+        one[1].starts_with('+') && one[1].ends_with(" more: i"),
+        "{one:?}"
+    );
 }
 
 #[test]

@@ -44,7 +44,7 @@ impl Entry {
 pub enum Place {
     /// In the header row, right of the y axis title.
     Header,
-    /// In rows of its own above the plot: this many.
+    /// Beside the title in the header row and in rows of its own above the plot: this many.
     Rows(u16),
     /// Inside the plot area at this corner (column, row of the plot area).
     Corner(u16, u16),
@@ -57,19 +57,42 @@ pub fn line_width(entries: &[Entry]) -> usize {
     entries.iter().map(|e| e.width() + 2).sum::<usize>()
 }
 
-/// Rows of `width` columns that the entries take when packed whole, two spaces apart.
-pub fn rows_needed(entries: &[Entry], width: usize) -> u16 {
-    let mut rows = 0u16;
-    let mut used = width;
-    for e in entries {
-        if used + 2 + e.width() > width {
-            rows += 1;
-            used = e.width();
-        } else {
-            used += 2 + e.width();
-        }
+/// The key that lists a folded legend in full (the `i` box).
+pub const IN_FULL_KEY: char = 'i';
+
+/// Lines that the entries take when packed whole, two spaces apart: the first line `first`
+/// columns wide (beside the y title), the others `width`.
+pub fn lines_needed(entries: &[Entry], first: usize, width: usize) -> u16 {
+    packed(entries, first, width).len() as u16
+}
+
+/// The entries that `lines` packed lines (`lines_needed`' widths) show whole: all of them when
+/// they fit; else as many as fit in order with "+N more: i" after them, counting what is left
+/// out (an entry wider than its line is left out rather than cut).
+pub fn fold(entries: &[Entry], first: usize, width: usize, lines: u16) -> Vec<Entry> {
+    let whole = |e: &Entry| e.width() <= width;
+    if lines_needed(entries, first, width) <= lines && entries.iter().all(whole) {
+        return entries.to_vec();
     }
-    rows
+    let shown: Vec<&Entry> = entries.iter().filter(|e| whole(e)).collect();
+    (0..=shown.len())
+        .rev()
+        .map(|keep| {
+            let mut kept: Vec<Entry> = shown[..keep].iter().map(|e| (*e).clone()).collect();
+            kept.push(more(entries.len() - keep));
+            kept
+        })
+        .find(|kept| lines_needed(kept, first, width) <= lines)
+        .unwrap_or_else(|| vec![more(entries.len())])
+}
+
+/// The entry that counts the entries a folded legend leaves out ("+3 more: i").
+fn more(n: usize) -> Entry {
+    Entry {
+        sample: String::new(),
+        style: Style::default(),
+        text: format!("+{n} more: {IN_FULL_KEY}"),
+    }
 }
 
 /// The legend box's size inside the plot: the widest entry (and a column apart), one row each.
@@ -110,7 +133,7 @@ pub fn corner(raster: &Raster, plot: Rect, entries: &[Entry], fallback: bool) ->
 /// `render_lines` writes them, with no data cell under them: the top rows, else the bottom
 /// ones, else the highest free ones; at least one row is left to the data.
 pub fn band(raster: &Raster, plot: Rect, entries: &[Entry]) -> Option<Place> {
-    let lines = packed(entries, plot.width as usize);
+    let lines = packed(entries, plot.width as usize, plot.width as usize);
     let rows = lines.len() as u16;
     if rows == 0 || rows >= plot.height {
         return None;
@@ -126,18 +149,28 @@ pub fn band(raster: &Raster, plot: Rect, entries: &[Entry]) -> Option<Place> {
     })
 }
 
-/// The entries packed whole into lines of `width` columns, two spaces apart.
-fn packed(entries: &[Entry], width: usize) -> Vec<Vec<&Entry>> {
-    let mut lines: Vec<Vec<&Entry>> = Vec::new();
-    let mut used = width;
+/// The entries packed whole into lines, two spaces apart: the first `first` columns wide, the
+/// others `width` (the first line stays empty when its first entry is wider than `first` and
+/// narrower lines follow: the title's row keeps no half entry).
+fn packed(entries: &[Entry], first: usize, width: usize) -> Vec<Vec<&Entry>> {
+    if entries.is_empty() {
+        return Vec::new();
+    }
+    let mut lines: Vec<Vec<&Entry>> = vec![Vec::new()];
+    let mut used = 0;
     for e in entries {
-        if used + 2 + e.width() > width || lines.is_empty() {
+        let line = lines.last().expect("one line at least");
+        let room = if lines.len() == 1 { first } else { width };
+        let gap = if line.is_empty() { 0 } else { 2 };
+        let wider = lines.len() == 1 && first < width;
+        if used + gap + e.width() > room && (!line.is_empty() || wider) {
             lines.push(Vec::new());
-            used = e.width();
+            used = 0;
         } else {
-            used += 2 + e.width();
+            used += gap;
         }
-        lines.last_mut().expect("pushed").push(e);
+        used += e.width();
+        lines.last_mut().expect("one line at least").push(e);
     }
     lines
 }
@@ -149,16 +182,35 @@ fn line_span(line: &[&Entry]) -> usize {
 
 /// Writes the entries as packed lines into `area` (header row or legend rows), right-aligned.
 pub fn render_lines(entries: &[Entry], buf: &mut Buffer, area: Rect) {
-    for (row, line) in packed(entries, area.width as usize)
-        .iter()
-        .enumerate()
-        .take(area.height as usize)
-    {
-        let mut x = area.x + (area.width as usize).saturating_sub(line_span(line)) as u16;
-        for e in line {
-            e.render(buf, x, area.y + row as u16, area.x + area.width - x);
-            x += e.width() as u16 + 2;
-        }
+    let lines = packed(entries, area.width as usize, area.width as usize);
+    for (row, line) in lines.iter().enumerate().take(area.height as usize) {
+        render_line(
+            line,
+            buf,
+            Rect::new(area.x, area.y + row as u16, area.width, 1),
+        );
+    }
+}
+
+/// Writes the entries as packed lines, right-aligned: the first in `first` (the title's row
+/// right of the title), the others in the rows of `below`.
+pub fn render_beside_title(entries: &[Entry], buf: &mut Buffer, first: Rect, below: Rect) {
+    let lines = packed(entries, first.width as usize, below.width as usize);
+    for (row, line) in lines.iter().enumerate().take(below.height as usize + 1) {
+        let area = match row {
+            0 => first,
+            _ => Rect::new(below.x, below.y + row as u16 - 1, below.width, 1),
+        };
+        render_line(line, buf, area);
+    }
+}
+
+/// Writes one packed line right-aligned in the row `area`.
+fn render_line(line: &[&Entry], buf: &mut Buffer, area: Rect) {
+    let mut x = area.x + (area.width as usize).saturating_sub(line_span(line)) as u16;
+    for e in line {
+        e.render(buf, x, area.y, area.x + area.width - x);
+        x += e.width() as u16 + 2;
     }
 }
 

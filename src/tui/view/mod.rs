@@ -14,6 +14,7 @@ pub mod heatmap;
 pub mod hidden;
 pub mod layout;
 pub mod legend;
+pub mod legend_full;
 pub mod lesson;
 mod long_words;
 pub mod map_readout;
@@ -35,6 +36,7 @@ use ratatui::layout::{Alignment, Rect};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Paragraph, Wrap};
 
+use crate::preset::Preset;
 use crate::tui::app::{App, Mode};
 use crate::tui::charts::{Figure, NoFigure, Plot, overlay, range};
 use crate::tui::on_screen::{OnScreen, on_screen};
@@ -154,22 +156,26 @@ fn draw_chart(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Fra
             heatmap::draw(&map, fixed, cell, style, frame.buffer_mut(), inner)
         }
         Ok(Figure::Plots(plots)) => {
-            let pins = app.ui.pins_of(chart);
-            let pinned: Vec<&[Plot]> = pins.iter().map(|p| p.plots.as_slice()).collect();
+            let (pinned, extras) = pins_and_extras(app, &answer.request.preset);
             let frames = range::frames(&plots, &pinned, app.ui.log_y.contains(&chart));
-            let extras = Extras {
-                cursor: app.ui.cursor,
-                pins: pins
-                    .iter()
-                    .map(|p| p.name(&answer.request.preset))
-                    .collect(),
-            };
             chart::draw(&frames, style, &extras, frame.buffer_mut(), inner);
         }
     }
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
     }
+}
+
+/// The pinned plots of the chart on screen and what is drawn beside its plots: the cursor and
+/// the pins' names (in `preset`'s words).
+pub fn pins_and_extras<'a>(app: &'a App, preset: &Preset) -> (Vec<&'a [Plot]>, Extras) {
+    let pins = app.ui.pins_of(app.ui.chart);
+    let pinned = pins.iter().map(|p| p.plots.as_slice()).collect();
+    let extras = Extras {
+        cursor: app.ui.cursor,
+        pins: pins.iter().map(|p| p.name(preset)).collect(),
+    };
+    (pinned, extras)
 }
 
 /// The area of the windows over the screen on the last drawn screen (`view::windows_area`; the

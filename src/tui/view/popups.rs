@@ -148,8 +148,8 @@ pub fn help(app: &App, scroll: u16, style: RenderOptions, frame: &mut Frame, are
     text_window("help", layout, scroll, frame, area);
 }
 
-/// The preset's name, its file, the status in full and the harmonics' table whole (what a
-/// crowded status counts as "+2 more: i"), and its whole description wrapped at spaces to `width`, a blank line before "Look at:"
+/// The preset's name, its file, the status in full, the chart's legend and the harmonics' table
+/// whole (what a crowded status or chart counts as "+2 more: i"), and its whole description wrapped at spaces to `width`, a blank line before "Look at:"
 /// and "Try:".
 pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'static>> {
     let doc = &app.doc;
@@ -180,7 +180,15 @@ pub fn about_lines(app: &App, style: RenderOptions, width: usize) -> Vec<Line<'s
     if !full.is_empty() {
         lines.push(Line::from(""));
         lines.push(Line::styled("the status in full:", style.heading()));
-        lines.extend(pack(&full, width, "  ").into_iter().map(Line::from));
+        for part in &full {
+            lines.extend(pack(part, width, "  ").into_iter().map(Line::from));
+        }
+    }
+    let legend = crate::tui::view::legend_full::in_full(app, style);
+    if !legend.is_empty() {
+        lines.push(Line::from(""));
+        lines.push(Line::styled("the chart's legend in full:", style.heading()));
+        lines.extend(legend.into_iter().map(Line::from));
     }
     let harmonics = crate::tui::view::harmonic_table::in_full(app);
     if !harmonics.is_empty() {

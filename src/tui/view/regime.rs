@@ -239,7 +239,9 @@ pub fn draw(
     let mut y = y0 + h + 2;
     // the preset's own point may lie outside the ranges (mu = 0 on a log axis)
     let where_now = if now.is_some() { "" } else { ": off the map" };
-    let mut words = format!("colour: {}   {own} now{where_now}", bt.title);
+    // without colour the map is drawn in shades
+    let drawn_in = if style.color { "colour" } else { "shade" };
+    let mut words = format!("{drawn_in}: {}   {own} now{where_now}", bt.title);
     // the cursor's mark, named where it fits whole
     let cursor = "   X cursor";
     if cell.is_some() && words.chars().count() + cursor.len() <= area.width as usize {

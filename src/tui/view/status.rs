@@ -27,14 +27,14 @@ use crate::tui::view::{note, wrap};
 
 /// Draws the status of the shown result into `area`.
 pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame, area: Rect) {
-    let block = Block::default().borders(Borders::ALL).title(format!(
+    let mut block = Block::default().borders(Borders::ALL).title(format!(
         " {}{} ",
         groups_status::title(app),
         note(shown, style)
     ));
     let inner = block.inner(area);
-    frame.render_widget(block, area);
     let Some((answer, dim)) = shown.answer() else {
+        frame.render_widget(block, area);
         return;
     };
     let width = inner.width as usize;
@@ -71,6 +71,15 @@ pub fn draw(app: &App, shown: &OnScreen, style: RenderOptions, frame: &mut Frame
         .map(|l| Line::styled(l, style.cursor()))
         .collect();
     lines.extend(main(rows.saturating_sub(lines.len())));
+    // the count of what the validity lines leave out comes after the rows: in the border
+    if lines.len() > rows
+        && lines.last().is_some_and(validity_status::is_count)
+        && let Some(count) = lines.pop()
+    {
+        let look = count.style;
+        block = block.title_bottom(Line::styled(format!(" {count} "), look).right_aligned());
+    }
+    frame.render_widget(block, area);
     frame.render_widget(Paragraph::new(lines).wrap(Wrap { trim: false }), inner);
     if dim {
         frame.buffer_mut().set_style(inner, style.stale());
@@ -91,16 +100,18 @@ fn status_readout(app: &App, answer: &Answer) -> Option<Vec<Phrase>> {
 
 /// What the status shows of the shown result before a crowded status counts some of it ("+2
 /// more: i"), for the `i` window: the cursor's readout, then a plane point's values (as the
-/// status writes them, in groups in the dimensionless view); empty where there is neither.
-pub fn in_full(app: &App) -> Vec<Phrase> {
+/// status writes them, in groups in the dimensionless view, after "operating point:"), then each
+/// of its validity phrases, each part on lines of its own; empty where there is neither.
+pub fn in_full(app: &App) -> Vec<Vec<Phrase>> {
     let Some((answer, _)) = crate::tui::on_screen::on_screen(app).answer() else {
         return Vec::new();
     };
-    let mut items = status_readout(app, answer).unwrap_or_default();
+    let mut parts: Vec<Vec<Phrase>> = status_readout(app, answer).into_iter().collect();
     if let Output::Plane(out) = &answer.output
         && let Ok(p) = &out.point
     {
-        items.extend(if app.explore.dimensionless {
+        let mut point: Vec<Phrase> = vec![Phrase::words("operating point:")];
+        point.extend(if app.explore.dimensionless {
             groups_status::plane_items(p)
                 .into_iter()
                 .map(Into::into)
@@ -108,8 +119,15 @@ pub fn in_full(app: &App) -> Vec<Phrase> {
         } else {
             plane_items(p)
         });
+        parts.push(point);
+        let checks = (out.strip_check.as_ref(), out.yield_check.as_ref());
+        parts.extend(
+            validity_status::in_full(p, checks)
+                .into_iter()
+                .map(|v| vec![v]),
+        );
     }
-    items
+    parts
 }
 
 /// The rows of a plane point's status that a readout never takes: (its values but those that

@@ -53,6 +53,36 @@ pub fn sweep_plots(app: &App) -> Option<Vec<Plot>> {
     }
 }
 
+/// What the sweep's curve has drawn beside it: the cursor (no pins).
+pub fn extras(app: &App) -> Extras {
+    Extras {
+        cursor: app.ui.cursor,
+        pins: Vec::new(),
+    }
+}
+
+/// The lines of the preset's lesson under the figure in the chart's `inner` area, and the area
+/// left to the figure: a quarter of a tall chart's height; where the paragraph needs more, one
+/// line saying where it is whole (never a sentence cut in the middle).
+pub fn lesson_lines(app: &App, inner: Rect) -> (Vec<String>, Rect) {
+    let Some(text) = lesson(app) else {
+        return (Vec::new(), inner);
+    };
+    let whole = wrap(&text, inner.width as usize);
+    let most = (inner.height / 4).max(1) as usize;
+    let mut lines = if whole.len() <= most {
+        whole
+    } else {
+        wrap(LESSON_ELSEWHERE, inner.width as usize)
+    };
+    lines.truncate(most);
+    let rest = Rect {
+        height: inner.height - lines.len() as u16,
+        ..inner
+    };
+    (lines, rest)
+}
+
 /// The help's text on the sweep chart (`?` while it is shown).
 pub const SWEEP_HELP: &str = "A quantity against one input over the range chosen with v (the form \
     says what each field allows): the preset's model first, the other plane models overlaid (the \
@@ -68,8 +98,10 @@ pub const SWEEP_HELP: &str = "A quantity against one input over the range chosen
 pub const MAP_HELP: &str = "A quantity over two inputs chosen with M, in colours (viridis, or \
     shades without colour) read on the bar at the right; coarse first, then refined pass by pass. \
     Letters draw the library's lines: 0 where theta = 0, where friction and wear shift the \
-    pressure's edge exponents equally (pi mu chi = k m) and on a half-plane mu* - mu = 0 (on a strip \
-    of finite thickness the sign of mu* - mu, not of theta, says which dominates), W and N where the wide and the narrow model's validity checks change, C where \
+    pressure's edge exponents equally (pi mu chi = k m) and on a half-plane mu* - mu = 0; = where \
+    the preset's model's mu* - mu changes sign (on a strip of finite thickness that sign, not \
+    theta's, says which dominates: wear where mu* > mu), W and N where the wide and the narrow \
+    model's validity checks change, C where \
     complete contact is lost; + is the preset's own point. x shows a \
     cursor, X (at the grid point nearest the preset's), [ ] move it along x, { } along y, and the status reads both \
     inputs, the quantity, theta and the verdicts there. E writes the map as SVG; Tab goes back to the \
@@ -132,29 +164,17 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         .borders(Borders::ALL)
         .title(style.text(&format!(" {what}{note} ")).into_owned())
         .title_bottom(Line::from(format!(" {key}: change  Tab: charts ")).right_aligned());
-    let mut inner = block.inner(area);
+    let outer = block.inner(area);
     frame.render_widget(block, area);
-    if let Some(text) = lesson(app) {
-        let whole = wrap(&text, inner.width as usize);
-        // a quarter of a tall chart's height; where the paragraph needs more, one line saying
-        // where it is whole (never a sentence cut in the middle)
-        let most = (inner.height / 4).max(1) as usize;
-        let lines = if whole.len() <= most {
-            whole
-        } else {
-            wrap(LESSON_ELSEWHERE, inner.width as usize)
-        };
-        let n = lines.len().min(most) as u16;
-        inner.height -= n;
-        for (i, l) in lines.iter().take(n as usize).enumerate() {
-            frame.buffer_mut().set_stringn(
-                inner.x,
-                inner.y + inner.height + i as u16,
-                l,
-                inner.width as usize,
-                style.heading(),
-            );
-        }
+    let (lines, inner) = lesson_lines(app, outer);
+    for (i, l) in lines.iter().enumerate() {
+        frame.buffer_mut().set_stringn(
+            inner.x,
+            inner.y + inner.height + i as u16,
+            l,
+            inner.width as usize,
+            style.heading(),
+        );
     }
     let Some((answer, current)) = shown else {
         return;
@@ -163,11 +183,7 @@ pub fn draw(app: &App, style: RenderOptions, frame: &mut Frame, area: Rect) {
         SweepResult::Curve(_) => {
             let plots = sweep_plots(app).unwrap_or_default();
             let frames = frames(&plots, &[], false);
-            let extras = Extras {
-                cursor: app.ui.cursor,
-                pins: Vec::new(),
-            };
-            chart::draw(&frames, style, &extras, frame.buffer_mut(), inner);
+            chart::draw(&frames, style, &extras(app), frame.buffer_mut(), inner);
         }
         SweepResult::Map(map) => {
             if let Opening::Map(spec) = &answer.request.job {

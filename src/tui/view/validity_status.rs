@@ -19,12 +19,12 @@ use crate::tui::view::wrapping::{lines_of, more, pack, pack_giving_up};
 
 /// The validity lines of a plane operating point, wrapped to `width`, in at most `room` lines:
 /// the verdict when the model holds, which effect dominates (after the verdict, so that a
-/// crowded status keeps the verdict; under a model that does not hold, last and only where it
-/// fits whole), the check against the strip model once it has come (how
-/// far off), then every warning in a few words (why), each after "! "; warnings that do not fit
-/// are counted ("! +2 more (a taller window shows them)"), never cut (in a single row left, the
-/// first warning alone, uncounted); a verdict or check that
-/// does not fit ends in "…" after its last whole clause or word (`wrap_within`).
+/// crowded status keeps the verdict; under a model that does not hold, after the reasons), the
+/// check against the strip model once it has come (how far off), then every warning in a few
+/// words (why), each after "! "; what does not fit is counted on a line after the `room` ones
+/// with the key that shows it ("+2 more: i"; the status writes it in its border), never cut (in
+/// a single row left, the first warning alone); a verdict
+/// or check that does not fit ends in "…" after its last whole clause or word (`wrap_within`).
 pub fn lines(
     p: &OperatingPoint,
     check: Option<&StripCheck>,
@@ -45,21 +45,77 @@ fn judged(
     width: usize,
     room: usize,
 ) -> Vec<Line<'static>> {
+    let (mut lines, hidden) = within(p, (check, yielding), style, width, room);
+    if hidden.is_empty() {
+        return lines;
+    }
+    let look = if hidden.iter().any(|&warning| warning) {
+        style.error()
+    } else {
+        ratatui::style::Style::default()
+    };
+    lines.push(Line::styled(count(hidden.len()), look));
+    lines
+}
+
+/// The count of the validity lines left out, with the key that shows them ("+2 more: i").
+fn count(n: usize) -> String {
+    format!("+{n} more: {}", crate::tui::view::legend::IN_FULL_KEY)
+}
+
+/// Whether `line` is the count of the validity lines left out that `lines` gives after its rows.
+pub fn is_count(line: &Line) -> bool {
+    let text = line.to_string();
+    let n = text.strip_prefix('+').and_then(|t| t.split(' ').next());
+    n.and_then(|n| n.parse().ok())
+        .is_some_and(|n| text == count(n))
+}
+
+/// Every validity phrase of a plane operating point, in the order `lines` shows them: the
+/// verdict, the yield check, which effect dominates, the check against the strip model, the
+/// reasons why the model does not hold (for the `i` window: a crowded status counts some).
+pub fn in_full(
+    p: &OperatingPoint,
+    (check, yielding): (Option<&StripCheck>, Option<&YieldCheck>),
+) -> Vec<Phrase> {
+    let mut out = Vec::new();
+    if p.validity.ok {
+        out.push(holds(p));
+    }
+    out.extend(yielding.map(YieldCheck::phrase));
+    out.push(Dominance::of(&p.solution).describe());
+    out.extend(check.map(|c| c.describe(p.solution.model)));
+    out.extend(p.validity.reasons.iter().map(reason));
+    out
+}
+
+/// "valid: (a+b)/h = 0.5; wide model holds" (or on a half-plane "h = inf").
+fn holds(p: &OperatingPoint) -> Phrase {
+    let where_ = if p.solution.inputs.material.thickness.is_finite() {
+        let ratio = p.validity.contact_width_over_thickness;
+        let ratio = number("validity.contact_width_over_thickness", ratio);
+        Phrase::words("valid:").then(format!("(a+b)/h = {ratio};"))
+    } else {
+        Phrase::words("valid: half-plane,").then("h = inf;")
+    };
+    where_.then_words(&format!("{} model holds", p.solution.model.name()))
+}
+
+/// The validity lines in at most `room` lines, and for each phrase left out whether it is a
+/// warning (a reason why the model does not hold).
+fn within(
+    p: &OperatingPoint,
+    (check, yielding): (Option<&StripCheck>, Option<&YieldCheck>),
+    style: RenderOptions,
+    width: usize,
+    room: usize,
+) -> (Vec<Line<'static>>, Vec<bool>) {
     let model = p.solution.model;
     let v = &p.validity;
+    let mut hidden = Vec::new();
     let mut head = Vec::new();
     if v.ok {
-        let where_ = if p.solution.inputs.material.thickness.is_finite() {
-            let ratio = v.contact_width_over_thickness;
-            let ratio = number("validity.contact_width_over_thickness", ratio);
-            Phrase::words("valid:").then(format!("(a+b)/h = {ratio};"))
-        } else {
-            Phrase::words("valid: half-plane,").then("h = inf;")
-        };
-        head.push((
-            where_.then_words(&format!("{} model holds", model.name())),
-            style.ok(),
-        ));
+        head.push((holds(p), style.ok()));
     }
     head.extend(yielding.map(|y| {
         let look = if y.yields == Some(true) {
@@ -101,34 +157,24 @@ fn judged(
         head.push((text, look));
     }
     // each line of the head in the rows left, ended by "…" where it does not fit whole; where
-    // the model does not hold, the rows of its first reason (and of the count of the others)
-    // are kept, so that the verdict is never pushed out by the check or the yield line
+    // the model does not hold, the rows of its first reason are kept, so that the verdict is
+    // never pushed out by the check or the yield line
     let kept = match warnings.first() {
-        Some(first) if !v.ok => room.min(first.len() + usize::from(warnings.len() > 1)),
+        Some(first) if !v.ok => room.min(first.len()),
         _ => 0,
     };
     let mut lines: Vec<Line> = Vec::new();
     for (text, look) in head {
         let rows = room.saturating_sub(kept).saturating_sub(lines.len());
-        lines.extend(
-            wrap_within(&text, width, rows, style)
-                .into_iter()
-                .map(|l| Line::styled(l, look)),
-        );
+        let wrapped = wrap_within(&text, width, rows, style);
+        if wrapped.is_empty() {
+            hidden.push(false);
+        }
+        lines.extend(wrapped.into_iter().map(|l| Line::styled(l, look)));
     }
     let room = room.saturating_sub(lines.len());
-    if total <= room {
-        lines.extend(warnings.into_iter().flatten());
-        if let Some((text, look)) = last {
-            let fits = prose(&text, width, look);
-            if fits.len() <= room - total {
-                lines.extend(fits);
-            }
-        }
-        return lines;
-    }
-    // whole warnings while one line is left for the count of the others
-    let mut used = 1;
+    // whole warnings in the rows left
+    let mut used = 0;
     let shown = warnings
         .iter()
         .take_while(|w| {
@@ -136,26 +182,31 @@ fn judged(
             used <= room
         })
         .count();
-    // no room for a reason and the count: the first reason alone, so that the verdict stays,
-    // ended by "…" where even it does not fit
-    if shown == 0 {
-        if let Some(first) = v.reasons.first() {
-            lines.extend(
-                wrap_within(&reason(first), width, room, style)
-                    .into_iter()
-                    .map(|l| Line::styled(l, style.error())),
-            );
-            return lines;
+    // no room for the first reason whole: it alone, so that the verdict stays, ended by "…"
+    if shown == 0
+        && let Some(first) = v.reasons.first()
+    {
+        lines.extend(
+            wrap_within(&reason(first), width, room, style)
+                .into_iter()
+                .map(|l| Line::styled(l, style.error())),
+        );
+        hidden.extend(std::iter::repeat_n(true, v.reasons.len() - 1));
+        hidden.extend(last.map(|_| false));
+        return (lines, hidden);
+    }
+    hidden.extend(std::iter::repeat_n(true, warnings.len() - shown));
+    let used: usize = warnings.iter().take(shown).map(Vec::len).sum();
+    lines.extend(warnings.into_iter().take(shown).flatten());
+    if let Some((text, look)) = last {
+        let fits = prose(&text, width, look);
+        if fits.len() <= room - used {
+            lines.extend(fits);
+        } else {
+            hidden.push(false);
         }
     }
-    let more = warnings.len() - shown;
-    lines.extend(warnings.into_iter().take(shown).flatten());
-    lines.extend(prose(
-        &Phrase::words(&format!("! +{more} more (a taller window shows them)")),
-        width,
-        style.error(),
-    ));
-    lines
+    (lines, hidden)
 }
 
 /// A reason the model does not hold, after "! ".

@@ -24,6 +24,7 @@ const HEAT: u32 = 480;
 fn ink(kind: LineKind) -> (RGBColor, bool) {
     match kind {
         LineKind::ThetaZero => (BLACK, false),
+        LineKind::MuStarEqualsMu => (RGBColor(0, 158, 115), true),
         LineKind::Validity(m) if m.name() == "wide" => (RGBColor(213, 94, 0), false),
         LineKind::Validity(_) => (RGBColor(204, 121, 167), true),
         LineKind::CompleteContact => (BLACK, true),

@@ -33,8 +33,18 @@ pub(super) fn entries(
             let inside = drawn
                 .iter()
                 .any(|p| (frame.y[0]..=frame.y[1]).contains(&p.1));
+            let gaps: Vec<&str> = (plot.unanswered.iter())
+                .filter(|u| u.curve == i)
+                .map(|u| u.words.as_str())
+                .collect();
+            // a curve with nothing to draw says why in its own entry ("mu* wide: no answer at
+            // any of the 60 loads"), its gaps then need no entry of their own
+            let said = if drawn.is_empty() { gaps.len() } else { 0 };
             let text = if drawn.is_empty() {
-                format!("{}: no values to draw", s.name)
+                match gaps.is_empty() {
+                    false => format!("{}: {}", s.name, gaps.join("; ")),
+                    true => format!("{}: no values to draw", s.name),
+                }
             } else if !inside {
                 let [lo, hi] = crate::tui::charts::range::bounds(s.points.iter().map(|p| p.1));
                 format!(
@@ -45,6 +55,9 @@ pub(super) fn entries(
                 )
             } else {
                 match hidden[i] {
+                    Some(Hidden::Fails) if plot.unjudged => {
+                        format!("{}: not judged for these inputs", s.name)
+                    }
                     Some(Hidden::Fails) => format!("{}: fails over the whole range", s.name),
                     Some(Hidden::Under(j)) => {
                         format!("{}: under {}", s.name, short_name(&plot.series[j].name))
@@ -59,11 +72,8 @@ pub(super) fn entries(
                 style: ink.style,
                 text,
             };
-            std::iter::once(entry(text)).chain(
-                (plot.unanswered.iter())
-                    .filter(move |u| u.curve == i)
-                    .map(move |u| entry(u.words.clone())),
-            )
+            std::iter::once(entry(text))
+                .chain((gaps.into_iter().skip(said)).map(move |w| entry(w.to_string())))
         })
         .collect();
     let marker = style.marker_ink();

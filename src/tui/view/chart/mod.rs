@@ -84,6 +84,8 @@ pub struct Laid {
     pub entries: Vec<Entry>,
     /// Where the legend goes.
     pub place: Place,
+    /// The legend's entries in full where `entries` folds some away ("+3 more: i").
+    pub full: Option<Vec<Entry>>,
 }
 
 /// The y ticks of the stacked frames in `shares` with `extra[i]` legend rows above plot i, the
@@ -171,15 +173,32 @@ fn lay_out(
                 raster,
                 entries,
                 place: Place::Rows(extra[i]),
+                full: None,
             }
         })
         .collect();
     Some((laid, x_ticks))
 }
 
+/// The rows a plot keeps at least when its legend takes rows of its own.
+const MIN_PLOT_ROWS: u16 = 3;
+
+/// The rows of its own a legend takes above a plot `height` rows high without them, its first
+/// line beside the title (`first` columns, the others `width`): as many as it needs, at most so
+/// many that the plot keeps half its rows (and `MIN_PLOT_ROWS`), those of its folded form where
+/// it needs more.
+fn legend_rows(entries: &[Entry], first: usize, width: usize, height: u16) -> u16 {
+    let lines = legend::lines_needed(entries, first, width);
+    let keep = (height / 2).max(MIN_PLOT_ROWS);
+    let most = lines.min(height.saturating_sub(keep) + 1);
+    let folded = legend::fold(entries, first, width, most);
+    legend::lines_needed(&folded, first, width).saturating_sub(1)
+}
+
 /// The frames of a figure stacked in `area`, each legend placed: in the header, else in an
-/// empty corner, else in empty rows across the plot, else in rows of its own, else in the
-/// corner covering the fewest data cells.
+/// empty corner, else in empty rows across the plot, else beside the title and in rows of its
+/// own above the plot, at most as many as leave the plot half its rows (and `MIN_PLOT_ROWS`),
+/// folded into "+N more: i" where it needs more.
 pub fn layout(
     frames: &[Frame],
     style: RenderOptions,
@@ -188,13 +207,14 @@ pub fn layout(
 ) -> Option<(Vec<Laid>, Ticks)> {
     let none = vec![0; frames.len()];
     let (mut laid, mut x_ticks) = lay_out(frames, style, extras, area, &none)?;
+    let width = area.width as usize;
+    let beside = |l: &Laid| width.saturating_sub(l.y_ticks.title.chars().count() + 2);
     // where each legend goes: the header, an empty corner, empty rows of the plot, rows of its
-    // own, the emptiest corner
-    let mut extra = none.clone();
+    // own
+    let mut rows: Vec<Option<u16>> = vec![None; frames.len()];
     for (i, l) in laid.iter_mut().enumerate() {
         let g = &l.geometry;
-        let title = l.y_ticks.title.chars().count() + 2;
-        if title + legend::line_width(&l.entries) <= area.width as usize {
+        if legend::line_width(&l.entries) <= beside(l) {
             l.place = Place::Header;
             continue;
         }
@@ -209,21 +229,42 @@ pub fn layout(
         } else if let Some(b) = legend::band(&l.raster, g.local_plot(), &l.entries) {
             l.place = b;
         } else {
-            let rows = legend::rows_needed(&l.entries, area.width as usize);
-            if g.plot.height >= rows + 3 {
-                extra[i] = rows;
-            } else if let Some(c) = legend::corner(&l.raster, g.local_plot(), &l.entries, true) {
-                l.place = c;
-            } else {
-                l.place = Place::Header;
-            }
+            rows[i] = Some(legend_rows(&l.entries, beside(l), width, g.plot.height));
         }
     }
-    if extra.iter().any(|&r| r > 0) {
+    if rows.iter().any(Option::is_some) {
         let places: Vec<Place> = laid.iter().map(|l| l.place).collect();
-        (laid, x_ticks) = lay_out(frames, style, extras, area, &extra)?;
-        for ((l, place), rows) in laid.iter_mut().zip(places).zip(&extra) {
-            l.place = if *rows > 0 { Place::Rows(*rows) } else { place };
+        // the plot's height without legend rows, which bounds them
+        let heights: Vec<u16> = laid.iter().map(|l| l.geometry.plot.height).collect();
+        let mut extra: Vec<u16> = rows.iter().map(|r| r.unwrap_or(0)).collect();
+        // a shorter plot may name its curves otherwise (a curve dim throughout says why in its
+        // entry): the rows again for the entries at the new size, never fewer (so that it
+        // settles), a few times at most
+        for pass in 0..=3 {
+            (laid, x_ticks) = lay_out(frames, style, extras, area, &extra)?;
+            let again: Vec<u16> = (laid.iter().zip(&heights).zip(&rows).zip(&extra))
+                .map(|(((l, &height), r), &e)| match r {
+                    Some(_) => legend_rows(&l.entries, beside(l), width, height).max(e),
+                    None => 0,
+                })
+                .collect();
+            if again == extra || pass == 3 {
+                break;
+            }
+            extra = again;
+        }
+        for (((l, place), r), e) in laid.iter_mut().zip(places).zip(&rows).zip(&extra) {
+            let r = r.map(|_| *e);
+            l.place = match r {
+                Some(r) => {
+                    let shown = legend::fold(&l.entries, beside(l), width, r + 1);
+                    if shown != l.entries {
+                        l.full = Some(std::mem::replace(&mut l.entries, shown));
+                    }
+                    Place::Rows(r)
+                }
+                None => place,
+            };
         }
     }
     Some((laid, x_ticks))
@@ -272,24 +313,23 @@ fn draw_one(
         header.width as usize,
         Style::default(),
     );
+    // the header's row right of the y title
+    let title = laid.y_ticks.title.chars().count() as u16 + 2;
+    let rest = Rect {
+        x: header.x + title.min(header.width),
+        width: header.width.saturating_sub(title),
+        height: 1,
+        ..header
+    };
     match laid.place {
-        Place::Header => {
-            let title = laid.y_ticks.title.chars().count() as u16 + 2;
-            let rest = Rect {
-                x: header.x + title.min(header.width),
-                width: header.width.saturating_sub(title),
-                height: 1,
-                ..header
-            };
-            legend::render_lines(&laid.entries, buf, rest);
-        }
+        Place::Header => legend::render_lines(&laid.entries, buf, rest),
         Place::Rows(rows) => {
             let below = Rect {
                 y: header.y + 1,
                 height: rows,
                 ..header
             };
-            legend::render_lines(&laid.entries, buf, below);
+            legend::render_beside_title(&laid.entries, buf, rest, below);
         }
         Place::Corner(x, y) => {
             legend::render_box(&laid.entries, buf, g.plot.x + x, g.plot.y + y);
